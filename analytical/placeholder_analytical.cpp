@@ -1,0 +1,1 @@
+// placeholder until the analytical stage lands; removed with it

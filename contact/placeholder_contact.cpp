@@ -1,0 +1,1 @@
+// placeholder until the contact stage lands; removed with it

@@ -1,0 +1,110 @@
+// What a deck describes, as plain data (one struct per deck section).
+//
+// io/deck.cpp fills these from TOML and validates every value once, naming
+// the deck file, line and key on error; everything after that trusts them.
+// Units are SI throughout (m, kg, s, N, Pa); angles in decks are degrees and
+// are stored here in degrees too (the joint law converts once).
+#pragma once
+
+#include "geometry/polyhedron.hpp"
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace polydem {
+
+// [simulation]
+struct SimulationSpec {
+  double end_time = 1.0;          // s, > 0
+  double time_step = 0.0;         // s; 0 = automatic. A deck may only lower the automatic step.
+  double safety_factor = 0.8;     // fraction of the critical step, in (0, 1]
+  Vec3 gravity{0.0, 0.0, -9.81};  // m/s²
+  double contact_margin = 0.0;    // m; 0 = automatic (2 % of the smallest block's size)
+  int threads = 0;                // 0 = OpenMP default
+  double overlap_tolerance = 1e-6;  // m; blocks overlapping more than this at t = 0 are an error
+  // Stop early when every free block's speed stays below this for
+  // settle_time (0 = never stop early). m/s.
+  double settle_velocity = 0.0;
+  double settle_time = 0.0;
+};
+
+// [joint] : the Coulomb joint law of every contact (compression positive).
+struct JointSpec {
+  double normal_stiffness = 98e9;    // kn, Pa/m (Table 1)
+  double shear_stiffness = 39.2e9;   // ks, Pa/m (0.4 kn unless given)
+  double friction_angle = 30.0;      // degrees (Table 1)
+  double cohesion = 0.0;             // Pa
+  double tensile_strength = 0.0;     // Pa
+  double damping = 2.1e-5;           // stiffness-proportional beta, s (Table 1)
+};
+
+enum class BlockMotion { free, fixed, kinematic };
+
+// [[block]] : one block. Shapes are built by io from the deck keys
+// (shape = "box" | "prism" | "hull") and stored here in world coordinates.
+struct BlockSpec {
+  std::string name;          // unique; used by histories and checks
+  Polyhedron shape;          // world coordinates at t = 0
+  double density = 2600.0;   // kg/m³
+  BlockMotion motion = BlockMotion::free;
+  Vec3 velocity = Vec3::Zero();          // m/s at t = 0
+  Vec3 angular_velocity = Vec3::Zero();  // rad/s at t = 0
+  int course = -1;           // masonry course index (spire), -1 if none
+  int deck_line = 0;         // line of the [[block]] header in the deck, for messages
+};
+
+// [ground_motion] : horizontal ground acceleration a_g(t)·direction.
+// applied_as = body_force: every free block feels -m·a_g (inertial force);
+//              kinematic:  kinematic blocks move with velocity ∫a_g dt.
+enum class GroundMotionKind { none, constant, ramp, sine_pulse, record };
+enum class GroundMotionApplication { body_force, kinematic };
+struct GroundMotionSpec {
+  GroundMotionKind kind = GroundMotionKind::none;
+  GroundMotionApplication applied_as = GroundMotionApplication::body_force;
+  Vec3 direction{1.0, 0.0, 0.0};  // unit, horizontal
+  double start_time = 0.0;        // s: zero before
+  double acceleration = 0.0;      // m/s²: constant value, or pulse amplitude a_p
+  double rate = 0.0;              // m/s³: ramp a = rate·(t - start_time)
+  double period = 1.0;            // s: one-sine pulse a_p·sin(2π(t-t0)/T_p) for 0 ≤ t-t0 ≤ T_p
+  std::string record_path;        // record file (PEER .AT2 or two-column CSV), resolved relative to the deck
+  double scale = 1.0;             // record multiplier
+  int deck_line = 0;
+};
+
+// [output]
+struct HistorySpec {
+  std::string block;     // block name
+  std::string quantity;  // "position" | "velocity" | "rotation" | "angular_velocity" | "contact_force"
+};
+struct OutputSpec {
+  double history_interval = 0.0;  // s; 0 = every step
+  std::vector<HistorySpec> histories;
+  bool energies = true;
+};
+
+// [[check]] : a verification check evaluated after the run.
+// kind: "resting_weight" | "no_drift" | "slide_acceleration" | "stick" |
+//       "rocking_onset" | "housner_restitution" | "rocking_first_impact" |
+//       "energy_conservation" | "energy_no_growth"
+// `expected` NaN means polydem computes the theoretical value itself.
+struct CheckSpec {
+  std::string kind;
+  std::string block;  // block the check is about (if any)
+  double expected = std::numeric_limits<double>::quiet_NaN();
+  double tolerance = 0.01;  // relative unless the kind says otherwise
+  int deck_line = 0;
+};
+
+struct SceneSpec {
+  std::string deck_path;  // as given on the command line
+  std::string deck_text;  // verbatim, stored in results
+  SimulationSpec simulation;
+  JointSpec joint;
+  std::vector<BlockSpec> blocks;
+  GroundMotionSpec ground_motion;
+  OutputSpec output;
+  std::vector<CheckSpec> checks;
+};
+
+}  // namespace polydem

@@ -1,0 +1,1 @@
+// placeholder until the geometry stage lands; removed with it

@@ -1,0 +1,1 @@
+// placeholder until the integrators stage lands; removed with it

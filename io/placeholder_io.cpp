@@ -1,0 +1,1 @@
+// placeholder until the io stage lands; removed with it

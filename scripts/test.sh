@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# The whole default test suite: set up, build, then ctest without the slow label.
+#   scripts/test.sh          default suite (< 10 min on 2 cores)
+#   scripts/test.sh slow     only the cases labelled slow
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh
+scripts/build.sh
+export OMP_NUM_THREADS=2
+if [ "${1:-}" = "slow" ]; then
+  ctest --test-dir build -L slow --output-on-failure -j 1
+else
+  ctest --test-dir build -LE slow --output-on-failure -j 2
+fi
