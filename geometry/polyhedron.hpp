@@ -75,6 +75,10 @@ Polyhedron convex_hull(const std::vector<Vec3>& points);
 Polyhedron halfspace_intersection(const std::vector<Vec3>& normals, const std::vector<double>& offsets,
                                   const Vec3& interior);
 
+// Half the sum of the fan triangles' cross products: the unnormalised
+// outward normal of a face, with length equal to its area. Uses only the
+// vertex loop, not the stored normal.
+Vec3 face_vector_area(const Polyhedron& p, int face);
 double face_area(const Polyhedron& p, int face);
 Vec3 face_centroid(const Polyhedron& p, int face);
 double surface_area(const Polyhedron& p);
@@ -82,5 +86,8 @@ double surface_area(const Polyhedron& p);
 double face_polar_moment(const Polyhedron& p, int face, const Vec3& c);
 // Largest distance from c to a vertex.
 double bounding_radius(const Polyhedron& p, const Vec3& c);
+// Diagonal of the axis-aligned bounding box: the length scale that relative
+// tolerances are measured against.
+double bounding_box_diagonal(const std::vector<Vec3>& points);
 
 }  // namespace polydem

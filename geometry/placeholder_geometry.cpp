@@ -1,1 +1,0 @@
-// placeholder until the geometry stage lands; removed with it
