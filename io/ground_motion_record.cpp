@@ -1,0 +1,363 @@
+#include "io/ground_motion_record.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string_view>
+
+namespace polydem {
+namespace {
+
+std::string format_message(const std::string& file, int line, const std::string& what) {
+  if (line > 0) return file + ":" + std::to_string(line) + ": " + what;
+  return file + ": " + what;
+}
+
+std::string upper(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return out;
+}
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+std::string_view trim(std::string_view s) {
+  const auto sp = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+  while (!s.empty() && sp(s.front())) s.remove_prefix(1);
+  while (!s.empty() && sp(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+// Lines without their terminators ("\n" or "\r\n"); a UTF-8 byte-order mark
+// at the start is dropped. A final newline does not start an extra line.
+std::vector<std::string_view> split_lines(std::string_view text) {
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  std::vector<std::string_view> lines;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = text.substr(start, end - start);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    lines.push_back(line);
+    start = end + 1;
+  }
+  return lines;
+}
+
+std::vector<std::string_view> split_whitespace(std::string_view s) {
+  std::vector<std::string_view> out;
+  std::size_t i = 0;
+  while (i < s.size()) {
+    while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+    const std::size_t b = i;
+    while (i < s.size() && !std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+    if (i > b) out.push_back(s.substr(b, i - b));
+  }
+  return out;
+}
+
+enum class NumberParse { Ok, NotANumber, NotFinite };
+
+// Whole token as a double. Accepts a leading '+' and Fortran 'D' exponents.
+NumberParse parse_number(std::string_view token, double& out) {
+  std::string t(token);
+  if (!t.empty() && t.front() == '+') t.erase(0, 1);
+  for (char& c : t)
+    if (c == 'D' || c == 'd') c = 'E';
+  if (t.empty()) return NumberParse::NotANumber;
+  const char* first = t.data();
+  const char* last = t.data() + t.size();
+  const auto r = std::from_chars(first, last, out, std::chars_format::general);
+  if (r.ptr != last) return NumberParse::NotANumber;
+  if (r.ec == std::errc::result_out_of_range) return NumberParse::NotFinite;
+  if (r.ec != std::errc()) return NumberParse::NotANumber;
+  return std::isfinite(out) ? NumberParse::Ok : NumberParse::NotFinite;
+}
+
+void check_scale(const std::string& name, double scale) {
+  if (!std::isfinite(scale)) throw RecordError(name, 0, "scale factor must be finite");
+}
+
+// ---------------------------------------------------------------- PEER AT2
+
+// The characters a number in the header can be made of.
+std::string_view number_at(std::string_view s, std::size_t pos) {
+  while (pos < s.size() && (s[pos] == ' ' || s[pos] == '\t')) ++pos;
+  std::size_t end = pos;
+  while (end < s.size() && (std::isdigit(static_cast<unsigned char>(s[end])) || std::strchr("+-.eE", s[end]) != nullptr))
+    ++end;
+  return s.substr(pos, end - pos);
+}
+
+// Value after "KEY =" (case-insensitive) in an upper-cased line; empty when
+// the key is not followed by '='.
+std::string_view value_after_key(std::string_view up, std::string_view key) {
+  std::size_t pos = 0;
+  while ((pos = up.find(key, pos)) != std::string_view::npos) {
+    std::size_t p = pos + key.size();
+    while (p < up.size() && (up[p] == ' ' || up[p] == '\t')) ++p;
+    if (p < up.size() && up[p] == '=') return number_at(up, p + 1);
+    pos += key.size();
+  }
+  return {};
+}
+
+struct At2Header {
+  long npts = 0;
+  double dt = 0;
+};
+
+At2Header parse_at2_npts_dt(std::string_view line, const std::string& name) {
+  constexpr int kLine = 4;
+  const std::string up = upper(line);
+  const std::string example =
+      " (expected e.g. 'NPTS=   1560, DT= 0.02000 SEC' or '1560    0.0200    NPTS, DT'), found '" +
+      std::string(trim(line)) + "'";
+  if (up.find("NPTS") == std::string::npos)
+    throw RecordError(name, kLine, "wrong header: line 4 must give NPTS and DT" + example);
+  std::string_view npts_text, dt_text;
+  if (up.find('=') != std::string::npos) {
+    npts_text = value_after_key(up, "NPTS");
+    dt_text = value_after_key(up, "DT");
+  } else {
+    std::string cleaned = up;
+    std::replace(cleaned.begin(), cleaned.end(), ',', ' ');
+    const auto tokens = split_whitespace(cleaned);
+    if (tokens.size() >= 2) {
+      // Positions in `up` match positions in `cleaned`.
+      npts_text = std::string_view(up).substr(static_cast<std::size_t>(tokens[0].data() - cleaned.data()), tokens[0].size());
+      dt_text = std::string_view(up).substr(static_cast<std::size_t>(tokens[1].data() - cleaned.data()), tokens[1].size());
+    }
+  }
+  if (npts_text.empty() || dt_text.empty())
+    throw RecordError(name, kLine, "wrong header: cannot find NPTS and DT" + example);
+
+  At2Header h;
+  double npts = 0;
+  const auto np = parse_number(npts_text, npts);
+  if (np == NumberParse::NotANumber || (np == NumberParse::Ok && npts != std::floor(npts)))
+    throw RecordError(name, kLine, "wrong header: NPTS '" + std::string(npts_text) + "' is not an integer");
+  if (np == NumberParse::NotFinite || npts <= 0)
+    throw RecordError(name, kLine, "NPTS must be positive, found '" + std::string(npts_text) + "'");
+  if (npts > 1e9) throw RecordError(name, kLine, "NPTS " + std::string(npts_text) + " is implausibly large");
+  h.npts = static_cast<long>(npts);
+  const auto dp = parse_number(dt_text, h.dt);
+  if (dp == NumberParse::NotANumber)
+    throw RecordError(name, kLine, "wrong header: DT '" + std::string(dt_text) + "' is not a number");
+  if (dp == NumberParse::NotFinite || h.dt <= 0)
+    throw RecordError(name, kLine, "DT must be positive and finite, found '" + std::string(dt_text) + "'");
+  return h;
+}
+
+// Line 3 says what the series is and its unit ("ACCELERATION TIME SERIES IN
+// UNITS OF G"). Reject velocity/displacement files and units other than g.
+void check_at2_units_line(std::string_view line, const std::string& name) {
+  const std::string up = upper(line);
+  if (up.find("VELOCITY") != std::string::npos || up.find("DISPLACEMENT") != std::string::npos)
+    throw RecordError(name, 3, "wrong header: not an acceleration record ('" + std::string(trim(line)) + "')");
+  const auto pos = up.find("UNITS OF");
+  if (pos == std::string::npos) return;  // older files do not say; PEER acceleration is in g
+  const auto tokens = split_whitespace(std::string_view(up).substr(pos + 8));
+  if (tokens.empty() || tokens[0] != "G")
+    throw RecordError(name, 3,
+                      "wrong header: acceleration must be in units of g ('" + std::string(trim(line)) + "')");
+}
+
+// ---------------------------------------------------------------- CSV
+
+std::vector<std::string_view> split_csv_fields(std::string_view line) {
+  if (line.find(',') == std::string_view::npos) return split_whitespace(line);
+  std::vector<std::string_view> out;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = line.find(',', start);
+    out.push_back(trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+// "time_s", "time (s)", "Time[s]", "t" -> (name, unit) in lower case.
+std::pair<std::string, std::string> header_name_unit(std::string_view field) {
+  const std::string f = lower(trim(field));
+  auto open = f.find_first_of("([");
+  if (open != std::string::npos) {
+    const auto close = f.find_first_of(")]", open);
+    const std::string unit = f.substr(open + 1, close == std::string::npos ? std::string::npos : close - open - 1);
+    return {std::string(trim(f.substr(0, open))), std::string(trim(unit))};
+  }
+  const auto us = f.find('_');
+  if (us != std::string::npos) return {f.substr(0, us), f.substr(us + 1)};
+  return {f, ""};
+}
+
+void check_csv_header(const std::vector<std::string_view>& fields, std::string_view line, const std::string& name,
+                      int line_no) {
+  const std::string expected =
+      "wrong header: expected two columns 'time_s,acceleration_g' (time in s, acceleration in g), found '" +
+      std::string(trim(line)) + "'";
+  if (fields.size() != 2) throw RecordError(name, line_no, expected);
+  const auto [tname, tunit] = header_name_unit(fields[0]);
+  const auto [aname, aunit] = header_name_unit(fields[1]);
+  const bool time_ok = tname == "time" || tname == "t";
+  const bool acc_ok = aname.rfind("acc", 0) == 0 || aname == "a";
+  if (!time_ok || !acc_ok) throw RecordError(name, line_no, expected);
+  if (!(tunit.empty() || tunit == "s" || tunit == "sec"))
+    throw RecordError(name, line_no, "wrong header: time must be in s, header says '" + tunit + "'");
+  if (!(aunit.empty() || aunit == "g"))
+    throw RecordError(name, line_no, "wrong header: acceleration must be in g, header says '" + aunit + "'");
+}
+
+}  // namespace
+
+RecordError::RecordError(const std::string& file_, int line_, const std::string& what)
+    : std::runtime_error(format_message(file_, line_, what)), file(file_), line(line_) {}
+
+GroundMotionRecord parse_at2(const std::string& text, const std::string& name, double scale) {
+  check_scale(name, scale);
+  const auto lines = split_lines(text);
+  const bool blank = std::all_of(lines.begin(), lines.end(), [](std::string_view l) { return trim(l).empty(); });
+  if (blank) throw RecordError(name, 1, "empty file");
+  if (lines.size() < 4)
+    throw RecordError(name, static_cast<int>(lines.size()),
+                      "truncated header: a PEER .AT2 file has 4 header lines, found " + std::to_string(lines.size()));
+  check_at2_units_line(lines[2], name);
+  const At2Header h = parse_at2_npts_dt(lines[3], name);
+
+  GroundMotionRecord rec;
+  rec.dt = h.dt;
+  rec.source = name;
+  const auto n = static_cast<std::size_t>(h.npts);
+  rec.acceleration.reserve(n);
+  const double factor = scale * kStandardGravity;
+  int last_data_line = 4;
+  for (std::size_t i = 4; i < lines.size(); ++i) {
+    const int line_no = static_cast<int>(i) + 1;
+    for (const auto token : split_whitespace(lines[i])) {
+      if (rec.acceleration.size() == n)
+        throw RecordError(name, line_no,
+                          "extra values: line 4 declares NPTS=" + std::to_string(h.npts) + " but more follow ('" +
+                              std::string(token) + "' would be value " + std::to_string(n + 1) + ")");
+      double v = 0;
+      switch (parse_number(token, v)) {
+        case NumberParse::NotANumber:
+          throw RecordError(name, line_no, "non-numeric value '" + std::string(token) + "'");
+        case NumberParse::NotFinite:
+          throw RecordError(name, line_no, "NaN/inf value '" + std::string(token) + "'");
+        case NumberParse::Ok: break;
+      }
+      rec.acceleration.push_back(v * factor);
+      last_data_line = line_no;
+    }
+  }
+  if (rec.acceleration.size() < n)
+    throw RecordError(name, last_data_line,
+                      "truncated data: line 4 declares NPTS=" + std::to_string(h.npts) + " but only " +
+                          std::to_string(rec.acceleration.size()) + " values follow");
+  rec.time.resize(n);
+  for (std::size_t i = 0; i < n; ++i) rec.time[i] = static_cast<double>(i) * h.dt;
+  return rec;
+}
+
+GroundMotionRecord parse_csv_record(const std::string& text, const std::string& name, double scale) {
+  check_scale(name, scale);
+  const auto lines = split_lines(text);
+  GroundMotionRecord rec;
+  rec.source = name;
+  const double factor = scale * kStandardGravity;
+  bool first_content = true;
+  int last_line = 1;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const int line_no = static_cast<int>(i) + 1;
+    const std::string_view line = trim(lines[i]);
+    if (line.empty() || line.front() == '#') continue;
+    last_line = line_no;
+    const auto fields = split_csv_fields(line);
+    double t = 0;
+    if (first_content) {
+      first_content = false;
+      if (!fields.empty() && parse_number(fields[0], t) == NumberParse::NotANumber) {
+        check_csv_header(fields, line, name, line_no);
+        continue;
+      }
+    }
+    if (fields.size() != 2)
+      throw RecordError(name, line_no,
+                        "expected 2 columns (time_s, acceleration_g), found " + std::to_string(fields.size()));
+    double v[2] = {0, 0};
+    static const char* const column[2] = {"column 1 (time)", "column 2 (acceleration)"};
+    for (int c = 0; c < 2; ++c) {
+      switch (parse_number(fields[static_cast<std::size_t>(c)], v[c])) {
+        case NumberParse::NotANumber:
+          throw RecordError(name, line_no,
+                            std::string("non-numeric value '") + std::string(fields[static_cast<std::size_t>(c)]) +
+                                "' in " + column[c]);
+        case NumberParse::NotFinite:
+          throw RecordError(name, line_no,
+                            std::string("NaN/inf value '") + std::string(fields[static_cast<std::size_t>(c)]) +
+                                "' in " + column[c]);
+        case NumberParse::Ok: break;
+      }
+    }
+    if (!rec.time.empty() && !(v[0] > rec.time.back())) {
+      std::ostringstream os;
+      os.precision(17);
+      os << "time " << v[0] << " s does not increase (previous row: " << rec.time.back()
+         << " s); times must be strictly increasing";
+      throw RecordError(name, line_no, os.str());
+    }
+    rec.time.push_back(v[0]);
+    rec.acceleration.push_back(v[1] * factor);
+  }
+  if (rec.time.empty()) throw RecordError(name, last_line, "empty file: no data rows");
+  if (rec.time.size() < 2)
+    throw RecordError(name, last_line, "only one data row: a record needs at least two");
+  rec.dt = rec.time[1] - rec.time[0];
+  for (std::size_t i = 2; i < rec.time.size(); ++i) rec.dt = std::min(rec.dt, rec.time[i] - rec.time[i - 1]);
+  return rec;
+}
+
+GroundMotionRecord read_record(const std::string& path, double scale) {
+  const auto slash = path.find_last_of('/');
+  const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+  const auto dot = base.find_last_of('.');
+  const std::string ext = dot == std::string::npos ? std::string() : lower(base.substr(dot + 1));
+  if (ext != "at2" && ext != "csv")
+    throw RecordError(path, 0, "unknown record format: expected a PEER '.AT2' or a two-column '.csv' file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw RecordError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw RecordError(path, 0, "read error");
+  return ext == "at2" ? parse_at2(ss.str(), path, scale) : parse_csv_record(ss.str(), path, scale);
+}
+
+double sample(const GroundMotionRecord& r, double t) {
+  const std::size_t n = r.time.size();
+  if (n == 0 || !(t >= r.time.front()) || t > r.time.back()) return 0.0;
+  const auto it = std::upper_bound(r.time.begin(), r.time.end(), t);
+  const auto i = static_cast<std::size_t>(it - r.time.begin());
+  if (i >= n) return r.acceleration[n - 1];  // t == last time
+  const double t0 = r.time[i - 1], t1 = r.time[i];
+  const double w = (t - t0) / (t1 - t0);
+  return r.acceleration[i - 1] + w * (r.acceleration[i] - r.acceleration[i - 1]);
+}
+
+double peak_acceleration(const GroundMotionRecord& r) {
+  double peak = 0;
+  for (double a : r.acceleration) peak = std::max(peak, std::abs(a));
+  return peak;
+}
+
+}  // namespace polydem

@@ -1,0 +1,130 @@
+#include "io/json.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <random>
+
+namespace polydem {
+namespace {
+
+TEST(Json, EscapesStrings) {
+  EXPECT_EQ(Json("plain").dump(), "\"plain\"");
+  EXPECT_EQ(Json("say \"hi\"").dump(), R"("say \"hi\"")");
+  EXPECT_EQ(Json("back\\slash").dump(), R"("back\\slash")");
+  EXPECT_EQ(Json("a\nb\tc\rd\be\ff").dump(), R"("a\nb\tc\rd\be\ff")");
+  EXPECT_EQ(Json(std::string("\x01\x1f", 2)).dump(), R"("\u0001\u001f")");
+  EXPECT_EQ(Json(std::string("nul\0x", 5)).dump(), R"("nul\u0000x")");
+  EXPECT_EQ(Json("Wälder °C / ok").dump(), "\"Wälder °C / ok\"");  // UTF-8 passes through
+  // Keys are escaped too.
+  Json o = Json::object();
+  o["k\"ey"] = 1;
+  EXPECT_EQ(o.dump(0), R"({"k\"ey":1})");
+}
+
+TEST(Json, NonFiniteNumbersAreNull) {
+  EXPECT_EQ(Json(std::numeric_limits<double>::quiet_NaN()).dump(), "null");
+  EXPECT_EQ(Json(std::numeric_limits<double>::infinity()).dump(), "null");
+  EXPECT_EQ(Json(-std::numeric_limits<double>::infinity()).dump(), "null");
+  Json a = Json::array();
+  a.push_back(1.5).push_back(std::nan("")).push_back(Json());
+  EXPECT_EQ(a.dump(0), "[1.5,null,null]");
+}
+
+TEST(Json, NumbersRoundTripExactly) {
+  EXPECT_EQ(Json(0.1).dump(), "0.1");
+  EXPECT_EQ(Json(0.319).dump(), "0.319");
+  EXPECT_EQ(Json(1.0).dump(), "1");
+  EXPECT_EQ(Json(-0.0).dump(), "-0");
+  EXPECT_EQ(Json(1234567890123LL).dump(), "1234567890123");
+  EXPECT_EQ(Json(-7).dump(), "-7");
+  EXPECT_EQ(Json(std::size_t{42}).dump(), "42");
+  std::mt19937_64 rng(12345);
+  std::uniform_int_distribution<std::uint64_t> bits;
+  int tested = 0;
+  while (tested < 2000) {
+    const std::uint64_t b = bits(rng);
+    double x;
+    std::memcpy(&x, &b, sizeof x);
+    if (!std::isfinite(x)) continue;
+    ++tested;
+    const std::string s = Json(x).dump();
+    const double back = std::strtod(s.c_str(), nullptr);
+    ASSERT_EQ(std::memcmp(&back, &x, sizeof x), 0) << s;
+    ASSERT_LE(s.size(), 24u) << s;
+  }
+  for (double x : {5e-324, 1.7976931348623157e308, 1.0 / 3.0, 9.80665, 1e21, 123456789.123456789}) {
+    const std::string s = Json(x).dump();
+    EXPECT_EQ(std::strtod(s.c_str(), nullptr), x) << s;
+  }
+}
+
+TEST(Json, ObjectsKeepInsertionOrderAndReplaceInPlace) {
+  Json o = Json::object();
+  o["zeta"] = 1;
+  o["alpha"] = 2;
+  o["mid"] = 3;
+  o["alpha"] = "two";
+  EXPECT_EQ(o.dump(0), R"({"zeta":1,"alpha":"two","mid":3})");
+  ASSERT_NE(o.find("mid"), nullptr);
+  EXPECT_EQ(o.find("mid")->as_integer(), 3);
+  EXPECT_EQ(o.find("missing"), nullptr);
+  EXPECT_EQ(o.size(), 3u);
+  EXPECT_EQ(o.keys(), (std::vector<std::string>{"zeta", "alpha", "mid"}));
+}
+
+TEST(Json, EmptyContainersAndScalars) {
+  EXPECT_EQ(Json().dump(), "null");
+  EXPECT_EQ(Json(true).dump(), "true");
+  EXPECT_EQ(Json(false).dump(), "false");
+  EXPECT_EQ(Json::object().dump(), "{}");
+  EXPECT_EQ(Json::array().dump(), "[]");
+  EXPECT_EQ(Json(std::vector<double>{1, 2.5}).dump(0), "[1,2.5]");
+}
+
+TEST(Json, WrongTypeAccessThrows) {
+  Json s("text");
+  EXPECT_THROW(s["key"], std::logic_error);
+  EXPECT_THROW(s.push_back(1), std::logic_error);
+  EXPECT_THROW(s.as_number(), std::logic_error);
+  EXPECT_THROW(Json(1.5).as_integer(), std::logic_error);
+  EXPECT_DOUBLE_EQ(Json(3).as_number(), 3.0);
+  EXPECT_THROW(Json::array().at(0), std::out_of_range);
+}
+
+TEST(Json, SummaryLayoutPrettyPrinted) {
+  Json summary = Json::object();
+  summary["status"] = "collapsed";
+  Json& checks = summary["checks"] = Json::array();
+  checks.push_back(Json::object()
+                       .set("name", "collapse_acceleration_g")
+                       .set("measured", 0.25)
+                       .set("expected", 0.2)
+                       .set("tolerance", 0.1)
+                       .set("passed", false));
+  summary["steps"] = 1000;
+  summary["energy_error"] = std::nan("");
+  const std::string expected = R"({
+  "status": "collapsed",
+  "checks": [
+    {
+      "name": "collapse_acceleration_g",
+      "measured": 0.25,
+      "expected": 0.2,
+      "tolerance": 0.1,
+      "passed": false
+    }
+  ],
+  "steps": 1000,
+  "energy_error": null
+})";
+  EXPECT_EQ(summary.dump(), expected);
+  EXPECT_EQ(summary.dump(4).find("    \"status\""), 2u);
+  EXPECT_EQ(summary.dump(0).find('\n'), std::string::npos);
+}
+
+}  // namespace
+}  // namespace polydem
