@@ -1,1 +1,0 @@
-// placeholder until the analytical stage lands; removed with it

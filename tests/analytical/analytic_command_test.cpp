@@ -1,0 +1,50 @@
+#include "apps/analytic_command.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace {
+
+int run(const std::vector<std::string>& a, std::string* out = nullptr) {
+  testing::internal::CaptureStdout();
+  testing::internal::CaptureStderr();
+  const int rc = run_analytic_command(a);
+  const std::string o = testing::internal::GetCapturedStdout();
+  testing::internal::GetCapturedStderr();
+  if (out) *out = o;
+  return rc;
+}
+
+}  // namespace
+
+TEST(AnalyticCommand, EveryModelRuns) {
+  std::string out;
+  EXPECT_EQ(run({"analytic", "lambda", "--r_b", "1.06", "--H", "9.4"}, &out), 0);
+  EXPECT_NE(out.find("0.338298"), std::string::npos);
+  EXPECT_EQ(run({"beam", "--json"}, &out), 0);
+  EXPECT_NE(out.find("\"Omega\":5.315"), std::string::npos);
+  EXPECT_EQ(run({"rocking", "--body", "block", "--b", "0.2", "--h", "1", "--load", "pulse", "--a_p", "0.5", "--T_p",
+                 "0.5", "--t_end", "3"}, &out), 0);
+  EXPECT_NE(out.find("impacts"), std::string::npos);
+  EXPECT_EQ(run({"rocking", "--load", "constant", "--a", "0.5", "--json", "--t_end", "5"}, &out), 0);
+  EXPECT_NE(out.find("\"mode\":\"mode II\""), std::string::npos);
+  EXPECT_EQ(run({"collapse-diagram", "--Tp-min", "1", "--Tp-max", "1", "--Tp-count", "1", "--points", "15", "--a_max",
+                 "2", "--json"}, &out), 0);
+  EXPECT_NE(out.find("\"columns\""), std::string::npos);
+  EXPECT_EQ(run({"cracked-cone-p", "--count", "3"}, &out), 0);
+  EXPECT_NE(out.find("max p"), std::string::npos);
+}
+
+TEST(AnalyticCommand, BadInputReturnsTwo) {
+  EXPECT_EQ(run({}), 2);
+  EXPECT_EQ(run({"nonsense"}), 2);
+  EXPECT_EQ(run({"lambda", "--r_b"}), 2);
+  EXPECT_EQ(run({"lambda", "--r_b", "abc"}), 2);
+  EXPECT_EQ(run({"lambda", "--bogus", "1"}), 2);
+  EXPECT_EQ(run({"lambda", "--r_b", "-1"}), 2);
+  EXPECT_EQ(run({"rocking", "--body", "brick"}), 2);
+  EXPECT_EQ(run({"rocking", "--load", "record", "--file", "/nonexistent/file.csv"}), 2);
+  EXPECT_EQ(run({"lambda", "--help"}), 0);
+}

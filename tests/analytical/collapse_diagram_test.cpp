@@ -1,0 +1,67 @@
+#include "analytical/collapse_diagram.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace pa = polydem::analytical;
+
+namespace {
+const pa::RockingBody kShell = pa::conical_shell(1.06, 9.4, 1.0, 9.81);  // the whole spire as a shell
+}
+
+TEST(CollapseDiagram, WholeSpireModeIAtOneSecondPulse) {
+  // Paper Fig. 6: a_p = 1.0 g, T_p = 1.0 s overturns the spire after an impact.
+  pa::CollapseScanOptions o;
+  const auto r = pa::pulse_response(kShell, 1.0, 1.0, o);
+  EXPECT_TRUE(r.overturned);
+  EXPECT_EQ(r.mode, pa::CollapseMode::mode_1);
+  EXPECT_GE(r.impacts, 1);
+}
+
+TEST(CollapseDiagram, ColumnIsReproducibleToTolerance) {
+  // Two different coarse scans must bisect to the same transitions.
+  pa::CollapseScanOptions a, b;
+  a.coarse_points = 30;
+  b.coarse_points = 41;
+  a.a_max_g = b.a_max_g = 3.0;
+  a.tolerance_g = b.tolerance_g = 1e-4;
+  const auto ca = pa::collapse_column(kShell, 1.0, a);
+  const auto cb = pa::collapse_column(kShell, 1.0, b);
+  ASSERT_EQ(ca.transitions.size(), cb.transitions.size());
+  for (std::size_t i = 0; i < ca.transitions.size(); ++i) {
+    EXPECT_NEAR(ca.transitions[i].a_g, cb.transitions[i].a_g, 2e-4);
+    EXPECT_EQ(ca.transitions[i].below, cb.transitions[i].below);
+    EXPECT_EQ(ca.transitions[i].above, cb.transitions[i].above);
+  }
+  EXPECT_NEAR(ca.min_collapse_g, cb.min_collapse_g, 2e-4);
+  // Values recorded when this test was written (nonlinear eq. 7, eq. 10 c).
+  EXPECT_NEAR(ca.min_collapse_g, 0.8335, 2e-3);
+  EXPECT_NEAR(ca.mode2_boundary_g, 1.6635, 2e-3);
+  ASSERT_EQ(ca.mode1_intervals.size(), 1u);
+  EXPECT_NEAR(ca.omega_ratio, 2.0 * 3.14159265358979323846 / kShell.p, 1e-12);
+}
+
+TEST(CollapseDiagram, TransitionsAreTrueOutcomeChanges) {
+  pa::CollapseScanOptions o;
+  o.coarse_points = 25;
+  o.a_max_g = 3.0;
+  const auto col = pa::collapse_column(kShell, 1.5, o);
+  ASSERT_FALSE(col.transitions.empty());
+  for (const auto& t : col.transitions) {
+    EXPECT_EQ(pa::pulse_response(kShell, t.a_g - o.tolerance_g, 1.5, o).mode, t.below);
+    EXPECT_EQ(pa::pulse_response(kShell, t.a_g + o.tolerance_g, 1.5, o).mode, t.above);
+  }
+  // Nothing below the uplift threshold overturns.
+  EXPECT_GE(col.min_collapse_g, std::tan(kShell.alpha));
+}
+
+TEST(CollapseDiagram, TipIsMoreVulnerableThanWholeSpire) {
+  // Paper 3.3: the 3.4 m solid tip (larger p) collapses under weaker pulses.
+  const auto tip = pa::solid_cone(1.06 * 3.4 / 9.4, 3.4, 1.0, 9.81);
+  pa::CollapseScanOptions o;
+  o.coarse_points = 30;
+  o.a_max_g = 3.0;
+  o.tolerance_g = 1e-3;
+  EXPECT_LT(pa::collapse_column(tip, 1.0, o).min_collapse_g, pa::collapse_column(kShell, 1.0, o).min_collapse_g);
+}
