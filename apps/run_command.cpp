@@ -1,0 +1,149 @@
+#include "apps/run_command.hpp"
+
+#include "apps/scene_runner.hpp"
+#include "geometry/polyhedron.hpp"
+#include "io/atomic_file.hpp"
+#include "io/deck.hpp"
+#include "io/ground_motion_record.hpp"
+#include "io/hdf5_results.hpp"
+#include "io/json.hpp"
+
+#include <fmt/core.h>
+#include <omp.h>
+
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <unistd.h>
+
+#ifndef POLYDEM_VERSION
+#define POLYDEM_VERSION "0.1.0"
+#endif
+
+namespace polydem {
+
+namespace {
+
+Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
+  Json s = Json::object();
+  s.set("polydem_version", POLYDEM_VERSION);
+  s.set("deck", spec.deck_path);
+  s.set("status", r.status);
+  s.set("checks_passed", r.all_checks_passed());
+  s.set("end_time_s", r.end_time);
+  s.set("steps", r.steps);
+  s.set("time_step_s", r.time_step);
+  s.set("critical_time_step_s", r.critical.critical);
+  s.set("highest_frequency_rad_s", r.critical.omega_max);
+  s.set("damping_ratio_at_highest_frequency", r.critical.damping_ratio);
+  s.set("contact_margin_m", r.margin);
+  s.set("blocks", r.blocks);
+  s.set("free_blocks", r.free_blocks);
+  s.set("contact_detections", r.detections);
+  s.set("subcontact_updates", r.subcontact_updates);
+  s.set("threads", threads);
+  s.set("wall_seconds", r.wall_seconds);
+  s.set("subcontact_updates_per_second", r.wall_seconds > 0 ? r.subcontact_updates / r.wall_seconds : 0.0);
+  Json e = Json::object();
+  e.set("kinetic_J", r.energy.kinetic);
+  e.set("gravitational_J", r.energy.gravitational);
+  e.set("strain_J", r.energy.strain);
+  e.set("slip_dissipation_J", r.energy.slip);
+  e.set("damping_dissipation_J", r.energy.damping);
+  e.set("load_work_J", r.energy.load_work);
+  e.set("balance_J", r.energy.balance);
+  e.set("reference_J", r.energy_reference);
+  s.set("energy", std::move(e));
+  s.set("energy_balance_error", r.energy_balance_error);
+  Json checks = Json::array();
+  for (const CheckResult& c : r.checks) {
+    Json j = Json::object();
+    j.set("name", c.name);
+    j.set("measured", c.measured);
+    j.set("expected", c.expected);
+    j.set("tolerance", c.tolerance);
+    j.set("unit", c.unit);
+    j.set("passed", c.passed);
+    j.set("note", c.note);
+    checks.push_back(std::move(j));
+  }
+  s.set("checks", std::move(checks));
+  return s;
+}
+
+void write_table(ResultsFile& f, const std::string& group, const HistoryTable& t) {
+  const std::size_t rows = t.row_count(), cols = t.columns.size();
+  for (std::size_t c = 0; c < cols; ++c) {
+    std::vector<double> col(rows);
+    for (std::size_t r = 0; r < rows; ++r) col[r] = t.rows[r * cols + c];
+    f.write_vector(group + "/" + t.columns[c], col, t.units[c]);
+  }
+}
+
+void print_report(const RunReport& r, const std::string& out_dir) {
+  std::cerr << fmt::format("polydem: {} steps of {:.3e} s to t = {:.4g} s in {:.2f} s ({:.3g} subcontact updates/s)\n",
+                           r.steps, r.time_step, r.end_time, r.wall_seconds,
+                           r.wall_seconds > 0 ? r.subcontact_updates / r.wall_seconds : 0.0);
+  std::cerr << fmt::format("polydem: energy balance error {:.3e} (relative)\n", r.energy_balance_error);
+  for (const CheckResult& c : r.checks)
+    std::cerr << fmt::format("  check {:<34} measured {:>13.6g} expected {:>13.6g} tol {:>9.3g} {} [{}]\n", c.name,
+                             c.measured, c.expected, c.tolerance, c.unit, c.passed ? "passed" : "FAILED");
+  std::cerr << "polydem: results in " << out_dir << "/summary.json and " << out_dir << "/results.h5\n";
+}
+
+}  // namespace
+
+int run_command(const RunOptions& o) {
+  SceneSpec spec;
+  try {
+    spec = o.use_default ? parse_deck(default_deck_text(), "<built-in default deck>", o.overrides)
+                         : read_deck(o.deck_path, o.overrides);
+  } catch (const std::exception& e) {
+    std::cerr << "polydem: error: " << e.what() << "\n";
+    return exit_bad_input;
+  }
+  RunControl control;
+  control.threads = o.threads;
+  if (!o.quiet) {
+    const bool tty = isatty(STDERR_FILENO);
+    control.progress_every = 2000;
+    control.progress = [tty, end = spec.simulation.end_time,
+                        start = std::chrono::steady_clock::now(), last_print = -1.0](const Simulation& sim) mutable {
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (!tty && wall - last_print < 5.0) return;
+      last_print = wall;
+      const double frac = sim.time() / end;
+      const double eta = frac > 0 ? wall * (1 - frac) / frac : 0;
+      std::cerr << fmt::format("{}t = {:.4f} / {:.4g} s  {:.0f} steps/s  dt = {:.3e} s  ETA {:.0f} s{}",
+                               tty ? "\r" : "", sim.time(), end, sim.steps() / std::max(wall, 1e-9), sim.dt(), eta,
+                               tty ? "   " : "\n");
+    };
+  }
+  RunReport report;
+  try {
+    report = run_scene(spec, control);
+  } catch (const InstabilityError& e) {
+    std::cerr << "\npolydem: stopped: " << e.what() << "\n";
+    return exit_instability;
+  } catch (const std::exception& e) {
+    std::cerr << "\npolydem: error: " << e.what() << "\n";
+    return exit_bad_input;
+  }
+  if (!o.quiet && isatty(STDERR_FILENO)) std::cerr << "\n";
+
+  std::filesystem::create_directories(o.out_dir);
+  {
+    ResultsFile h5(o.out_dir + "/results.h5");
+    h5.write_string("/deck", spec.deck_text);
+    h5.write_attribute("/deck", "path", spec.deck_path);
+    h5.write_attribute("/deck", "polydem_version", POLYDEM_VERSION);
+    if (report.histories.columns.size() > 1) write_table(h5, "/histories", report.histories);
+    if (!report.energies.columns.empty()) write_table(h5, "/energies", report.energies);
+    h5.commit();
+  }
+  write_file_atomic(o.out_dir + "/summary.json", summary_json(spec, report, omp_get_max_threads()).dump(2) + "\n");
+  if (!o.quiet) print_report(report, o.out_dir);
+  return report.all_checks_passed() ? exit_success : exit_check_failed;
+}
+
+}  // namespace polydem

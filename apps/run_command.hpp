@@ -1,0 +1,31 @@
+// `polydem run`: deck in, summary.json and results.h5 out.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace polydem {
+
+// Exit codes, documented in the README.
+enum ExitCode : int {
+  exit_success = 0,
+  exit_check_failed = 1,  // the run finished but a verification check failed
+  exit_bad_input = 2,     // deck, record or geometry rejected; nothing written
+  exit_instability = 3,   // the run stopped on a non-finite state
+};
+
+struct RunOptions {
+  std::string deck_path;          // empty with use_default
+  bool use_default = false;       // the built-in default deck
+  std::string out_dir = "out";
+  int threads = 0;
+  bool quiet = false;
+  std::vector<std::string> overrides;  // "key=value"
+};
+
+int run_command(const RunOptions& options);
+
+// The built-in default deck (the main job), as TOML text.
+const std::string& default_deck_text();
+
+}  // namespace polydem

@@ -1,0 +1,235 @@
+#include "apps/scene_runner.hpp"
+
+#include "apps/checks.hpp"
+#include "io/ground_motion_record.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace polydem {
+
+bool RunReport::all_checks_passed() const {
+  return std::all_of(checks.begin(), checks.end(), [](const CheckResult& c) { return c.passed; });
+}
+
+int deck_line_of(const std::string& text, const std::string& key) {
+  std::istringstream in(text);
+  std::string line;
+  int n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    const auto first = line.find_first_not_of(" \t");
+    if (first == std::string::npos) continue;
+    if (line.compare(first, key.size(), key) == 0) {
+      const auto rest = line.find_first_not_of(" \t", first + key.size());
+      if (rest != std::string::npos && line[rest] == '=') return n;
+    }
+  }
+  return 0;
+}
+
+namespace {
+
+// One recorded quantity of one block.
+struct Channel {
+  int block;
+  std::string quantity;
+};
+
+Vec3 rotation_vector(const Quat& q) {
+  const Eigen::AngleAxisd aa(q);
+  double angle = aa.angle();
+  if (angle > M_PI) angle -= 2 * M_PI;
+  return angle * aa.axis();
+}
+
+void append_channel(const Simulation& sim, const Channel& c, std::vector<double>& row) {
+  const Blocks& b = sim.blocks();
+  const int i = c.block;
+  Vec3 v = Vec3::Zero();
+  if (c.quantity == "position") v = sim.position_at_force_time(i);
+  else if (c.quantity == "velocity") v = sim.velocity_at_force_time(i);
+  else if (c.quantity == "angular_velocity") v = sim.angular_velocity_at_force_time(i);
+  else if (c.quantity == "rotation")
+    v = rotation_vector(sim.orientation_at_force_time(i) * b.initial_orientation[i].conjugate());
+  else if (c.quantity == "contact_force") v = b.state.contact_force[i];
+  row.insert(row.end(), {v.x(), v.y(), v.z()});
+}
+
+const char* unit_of(const std::string& q) {
+  if (q == "position") return "m";
+  if (q == "velocity") return "m/s";
+  if (q == "angular_velocity") return "rad/s";
+  if (q == "rotation") return "rad";
+  if (q == "contact_force") return "N";
+  return "-";
+}
+
+double automatic_margin(const Blocks& b) {
+  double smallest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < b.count; ++i)
+    if (b.props.motion[i] != BlockMotion::fixed) smallest = std::min(smallest, b.props.size[i]);
+  if (!std::isfinite(smallest))
+    for (int i = 0; i < b.count; ++i) smallest = std::min(smallest, b.props.size[i]);
+  return 0.02 * smallest;
+}
+
+}  // namespace
+
+RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  if (control.threads > 0) omp_set_num_threads(control.threads);
+  RunReport rep;
+  Blocks blocks = build_blocks(spec.blocks);
+  rep.blocks = blocks.count;
+  rep.free_blocks = static_cast<int>(blocks.free_blocks.size());
+  rep.margin = spec.simulation.contact_margin > 0 ? spec.simulation.contact_margin : automatic_margin(blocks);
+
+  // Time step: automatic, or the deck's if it is smaller.
+  rep.critical = critical_time_step(blocks, spec.joint, spec.simulation.safety_factor);
+  double dt = rep.critical.chosen;
+  if (spec.simulation.time_step > 0) {
+    if (rep.critical.chosen > 0 && spec.simulation.time_step > rep.critical.chosen) {
+      std::ostringstream m;
+      m << spec.deck_path << ":" << deck_line_of(spec.deck_text, "time_step")
+        << ": key 'simulation.time_step': " << spec.simulation.time_step
+        << " s exceeds the stable step " << rep.critical.chosen << " s (critical " << rep.critical.critical
+        << " s times safety factor " << spec.simulation.safety_factor << "); a deck may only lower it";
+      throw std::runtime_error(m.str());
+    }
+    dt = spec.simulation.time_step;
+  }
+  if (dt <= 0) dt = spec.simulation.end_time / 1000.0;  // nothing moves: any step will do
+  rep.time_step = dt;
+
+  // Ground motion (a record is read only when the deck asks for one).
+  GroundMotion motion;
+  if (spec.ground_motion.kind == GroundMotionKind::record) {
+    GroundMotionRecord rec = read_record(spec.ground_motion.record_path, 1.0);
+    motion = make_ground_motion(spec.ground_motion, std::move(rec.time), std::move(rec.acceleration));
+  } else {
+    motion = make_ground_motion(spec.ground_motion);
+  }
+
+  Simulation sim(std::move(blocks), spec.simulation, spec.joint, std::move(motion), rep.margin, dt);
+
+  // Blocks must not overlap at the start beyond the tolerance.
+  {
+    const ContactSet& cs = sim.contacts();
+    for (std::size_t s = 0; s < cs.sub.size(); ++s) {
+      if (cs.sub.overlap[s] <= spec.simulation.overlap_tolerance) continue;
+      const int r = cs.sub.ref_block[s], c = cs.sub.inc_block[s];
+      const auto& pr = sim.blocks().props;
+      const int line = std::max(pr.deck_line[r], pr.deck_line[c]);
+      const std::string& late = pr.deck_line[r] >= pr.deck_line[c] ? pr.name[r] : pr.name[c];
+      const std::string& other = late == pr.name[r] ? pr.name[c] : pr.name[r];
+      std::ostringstream m;
+      m << spec.deck_path << ":" << line << ": key 'block' ('" << late << "'): overlaps block '" << other << "' by "
+        << cs.sub.overlap[s] << " m at the start (tolerance simulation.overlap_tolerance = "
+        << spec.simulation.overlap_tolerance << " m)";
+      throw std::runtime_error(m.str());
+    }
+  }
+
+  std::vector<std::unique_ptr<CheckMonitor>> monitors;
+  for (const CheckSpec& c : spec.checks) monitors.push_back(make_check(c, spec, sim));
+
+  // History channels: only what the deck asks for.
+  std::vector<Channel> channels;
+  rep.histories.columns.push_back("time");
+  rep.histories.units.push_back("s");
+  for (const HistorySpec& h : spec.output.histories) {
+    const int i = sim.blocks().find(h.block);
+    if (i < 0) continue;  // the deck reader has checked the names
+    channels.push_back({i, h.quantity});
+    for (const char* axis : {"x", "y", "z"}) {
+      rep.histories.columns.push_back(h.block + "." + h.quantity + "." + axis);
+      rep.histories.units.push_back(unit_of(h.quantity));
+    }
+  }
+  const bool ground_channel = sim.ground_motion().active() && !channels.empty();
+  if (ground_channel) {
+    rep.histories.columns.push_back("ground.acceleration");
+    rep.histories.units.push_back("m/s^2");
+  }
+  if (spec.output.energies) {
+    rep.energies.columns = {"time", "kinetic", "gravitational", "strain", "slip", "damping", "load_work", "balance"};
+    rep.energies.units = {"s", "J", "J", "J", "J", "J", "J", "J"};
+  }
+  const double interval = spec.output.history_interval;
+  const long expected_rows = interval > 0 ? static_cast<long>(spec.simulation.end_time / interval) + 2
+                                          : static_cast<long>(spec.simulation.end_time / dt) + 2;
+  if (!channels.empty()) rep.histories.rows.reserve(expected_rows * rep.histories.columns.size());
+  if (spec.output.energies) rep.energies.rows.reserve(expected_rows * rep.energies.columns.size());
+
+  double next_record = 0.0;
+  double balance0 = 0, reference = 0, worst = 0;
+  bool first_energy = true;
+  auto record = [&]() {
+    const double t = std::max(0.0, sim.time() - sim.dt());  // force time
+    if (!channels.empty()) {
+      rep.histories.rows.push_back(t);
+      for (const Channel& c : channels) append_channel(sim, c, rep.histories.rows);
+      if (ground_channel) rep.histories.rows.push_back(sim.ground_motion().acceleration_at(t));
+    }
+    if (spec.output.energies) {
+      const EnergyLedger e = sim.energies();
+      rep.energies.rows.insert(rep.energies.rows.end(),
+                               {t, e.kinetic, e.gravitational, e.strain, e.slip, e.damping, e.load_work, e.balance});
+      if (first_energy) {
+        balance0 = e.balance;
+        first_energy = false;
+      }
+      reference = std::max(reference, e.kinetic + e.strain + std::abs(e.gravitational) + e.slip + e.damping +
+                                          std::abs(e.load_work));
+      worst = std::max(worst, std::abs(e.balance - balance0));
+    }
+  };
+
+  const double end = spec.simulation.end_time;
+  double quiet_since = -1;
+  rep.status = "completed";
+  while (sim.time() < end - 0.5 * sim.dt()) {
+    sim.step();
+    rep.subcontact_updates += static_cast<long>(sim.contacts().sub.size());
+    for (auto& m : monitors) m->observe(sim);
+    if (sim.time() - sim.dt() >= next_record - 1e-12 * end) {
+      record();
+      next_record += interval > 0 ? interval : 0.0;
+    }
+    if (control.progress && sim.steps() % control.progress_every == 0) control.progress(sim);
+    if (spec.simulation.settle_velocity > 0) {
+      double vmax = 0;
+      for (int i : sim.blocks().free_blocks) vmax = std::max(vmax, sim.blocks().state.velocity[i].norm());
+      if (vmax < spec.simulation.settle_velocity) {
+        if (quiet_since < 0) quiet_since = sim.time();
+        if (sim.time() - quiet_since >= spec.simulation.settle_time) {
+          rep.status = "settled";
+          break;
+        }
+      } else {
+        quiet_since = -1;
+      }
+    }
+  }
+  if (spec.output.energies) record();  // the final state is always in the ledger
+
+  rep.steps = sim.steps();
+  rep.end_time = sim.time();
+  rep.detections = sim.contacts().detections;
+  rep.energy = sim.energies();
+  rep.energy_reference = reference;
+  rep.energy_balance_error = reference > 0 ? worst / reference : 0.0;
+  for (auto& m : monitors) rep.checks.push_back(m->finish(sim));
+  rep.final_position = sim.blocks().state.position;
+  rep.final_velocity = sim.blocks().state.velocity;
+  rep.final_orientation = sim.blocks().state.orientation;
+  rep.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  return rep;
+}
+
+}  // namespace polydem

@@ -1,0 +1,69 @@
+// Runs one scene from its deck: builds the blocks, chooses the time step,
+// steps to the end time, records what the deck asks for, and evaluates the
+// deck's verification checks. No files here: run_command writes them.
+#pragma once
+
+#include "core/scene_spec.hpp"
+#include "integrators/simulation.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace polydem {
+
+struct CheckResult {
+  std::string name;
+  std::string unit;
+  double measured = 0, expected = 0, tolerance = 0;
+  bool passed = false;
+  std::string note;
+};
+
+// A table of histories: one row per record time, columns named with units.
+struct HistoryTable {
+  std::vector<std::string> columns;
+  std::vector<std::string> units;
+  std::vector<double> rows;  // row-major
+  std::size_t row_count() const { return columns.empty() ? 0 : rows.size() / columns.size(); }
+};
+
+struct RunReport {
+  std::string status;  // "completed" or "settled"
+  long steps = 0;
+  double end_time = 0;
+  double time_step = 0;
+  CriticalStep critical;
+  double margin = 0;
+  double wall_seconds = 0;
+  long subcontact_updates = 0;  // Σ over steps of the number of subcontacts
+  int detections = 0;
+  int blocks = 0, free_blocks = 0;
+  EnergyLedger energy;
+  double energy_balance_error = 0;  // max |balance − balance(0)| / reference energy
+  double energy_reference = 0;      // J
+  HistoryTable histories;
+  HistoryTable energies;
+  std::vector<CheckResult> checks;
+  // Final state of every block (for restart-free comparisons and tests).
+  std::vector<Vec3> final_position, final_velocity;
+  std::vector<Quat> final_orientation;
+  bool all_checks_passed() const;
+};
+
+struct RunControl {
+  int threads = 0;  // 0: OpenMP default
+  // Called every `progress_every` steps (for progress output); may be empty.
+  std::function<void(const Simulation&)> progress;
+  long progress_every = 1000;
+};
+
+// Throws DeckError-like std::runtime_error for input found bad only now
+// (overlapping blocks, time step above the critical one), InstabilityError on
+// a non-finite state.
+RunReport run_scene(const SceneSpec& spec, const RunControl& control = {});
+
+// Finds the line of `key` (e.g. "time_step") in the deck text; 0 if absent.
+int deck_line_of(const std::string& deck_text, const std::string& key);
+
+}  // namespace polydem

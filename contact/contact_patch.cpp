@@ -1,0 +1,244 @@
+#include "contact/contact_patch.hpp"
+
+#include <ccd/ccd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace polydem {
+
+namespace {
+
+// A block as libccd sees it: world vertices inflated by a sphere of radius
+// `inflate`, so that MPR reports overlap for blocks closer than the margin.
+struct CcdBody {
+  const std::vector<Vec3>* vertices;
+  Vec3 centre;
+  double inflate;
+};
+
+void ccd_support(const void* obj, const ccd_vec3_t* dir, ccd_vec3_t* out) {
+  const auto* body = static_cast<const CcdBody*>(obj);
+  const Vec3 d(ccdVec3X(dir), ccdVec3Y(dir), ccdVec3Z(dir));
+  double best = -std::numeric_limits<double>::infinity();
+  Vec3 arg = Vec3::Zero();
+  for (const Vec3& v : *body->vertices) {
+    const double s = v.dot(d);
+    if (s > best) {
+      best = s;
+      arg = v;
+    }
+  }
+  const double len = d.norm();
+  if (len > 0) arg += (body->inflate / len) * d;
+  ccdVec3Set(out, arg.x(), arg.y(), arg.z());
+}
+
+void ccd_centre(const void* obj, ccd_vec3_t* out) {
+  const auto* body = static_cast<const CcdBody*>(obj);
+  ccdVec3Set(out, body->centre.x(), body->centre.y(), body->centre.z());
+}
+
+// Largest separation of `other` from block `self`'s face planes.
+// Returns the face and writes its separation.
+int best_face(const PosedBlock& self, const std::vector<Vec3>& other, double& separation) {
+  const Polyhedron& p = *self.shape;
+  int best = -1;
+  separation = -std::numeric_limits<double>::infinity();
+  for (std::size_t f = 0; f < p.faces.size(); ++f) {
+    const double s = face_separation(self, static_cast<int>(f), other);
+    if (s > separation) {
+      separation = s;
+      best = static_cast<int>(f);
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+double face_separation(const PosedBlock& self, int face, const std::vector<Vec3>& other) {
+  const Vec3 n = self.R * self.shape->normals[face];
+  const double offset = self.shape->offsets[face] + n.dot(self.x);
+  double m = std::numeric_limits<double>::infinity();
+  for (const Vec3& v : other) m = std::min(m, n.dot(v) - offset);
+  return m;
+}
+
+bool find_patch(const PosedBlock& a, const PosedBlock& b, double margin, int prev_ref_side, int prev_ref_face,
+                Patch& out, PatchScratch& s) {
+  auto to_world = [](const PosedBlock& blk, std::vector<Vec3>& w) {
+    const auto& v = blk.shape->vertices;
+    w.resize(v.size());
+    for (std::size_t k = 0; k < v.size(); ++k) w[k] = blk.R * v[k] + blk.x;
+  };
+  to_world(a, s.world_a);
+  to_world(b, s.world_b);
+
+  // 1. libccd: are the blocks within the margin of each other?
+  CcdBody ca{&s.world_a, a.x, 0.5 * margin};
+  CcdBody cb{&s.world_b, b.x, 0.5 * margin};
+  ccd_t ccd;
+  CCD_INIT(&ccd);
+  ccd.support1 = ccd_support;
+  ccd.support2 = ccd_support;
+  ccd.center1 = ccd_centre;
+  ccd.center2 = ccd_centre;
+  ccd.max_iterations = 200;
+  ccd.mpr_tolerance = 1e-6 * margin;
+  ccd_real_t depth = 0;
+  ccd_vec3_t dir, pos;
+  if (ccdMPRPenetration(&ca, &cb, &ccd, &depth, &dir, &pos) != 0) return false;
+  const double mpr_overlap = depth - margin;  // of the real (uninflated) blocks
+  Vec3 mpr_dir(ccdVec3X(&dir), ccdVec3Y(&dir), ccdVec3Z(&dir));  // from a towards b
+  const Vec3 mpr_pos(ccdVec3X(&pos), ccdVec3Y(&pos), ccdVec3Z(&pos));
+
+  // 2. Common plane: best face of either block, keeping the previous choice
+  // while it is within a small tolerance of the best.
+  double sep_a = 0, sep_b = 0;
+  const int face_a = best_face(a, s.world_b, sep_a);
+  const int face_b = best_face(b, s.world_a, sep_b);
+  int ref_side = sep_a >= sep_b ? 0 : 1;
+  int ref_face = ref_side == 0 ? face_a : face_b;
+  double best = std::max(sep_a, sep_b);
+  if (prev_ref_face >= 0) {
+    const PosedBlock& pr = prev_ref_side == 0 ? a : b;
+    const double sp = face_separation(pr, prev_ref_face, prev_ref_side == 0 ? s.world_b : s.world_a);
+    if (sp >= best - 0.05 * margin) {
+      ref_side = prev_ref_side;
+      ref_face = prev_ref_face;
+      best = sp;
+    }
+  }
+  if (best > margin) return false;
+
+  const PosedBlock& ref = ref_side == 0 ? a : b;
+  const PosedBlock& inc = ref_side == 0 ? b : a;
+  const std::vector<Vec3>& ref_w = ref_side == 0 ? s.world_a : s.world_b;
+  const std::vector<Vec3>& inc_w = ref_side == 0 ? s.world_b : s.world_a;
+  out.points.clear();
+  out.ref_side = ref_side;
+
+  // 4. Edge-to-edge: no face separates as well as MPR says. One subcontact
+  // at the incident vertex nearest the MPR contact point, nominal area.
+  if (-best > mpr_overlap + 0.25 * margin + 1e-12) {
+    const Vec3 n = (ref_side == 0 ? mpr_dir : Vec3(-mpr_dir)).normalized();
+    double off = -std::numeric_limits<double>::infinity();
+    for (const Vec3& v : ref_w) off = std::max(off, n.dot(v));
+    double lowest = std::numeric_limits<double>::infinity();
+    int arg = 0;
+    for (std::size_t k = 0; k < inc_w.size(); ++k) {
+      const double h = n.dot(inc_w[k]) + 1e-9 * (inc_w[k] - mpr_pos).norm();
+      if (h < lowest) {
+        lowest = h;
+        arg = static_cast<int>(k);
+      }
+    }
+    const double la = std::cbrt(std::abs(mass_properties(*a.shape).volume));
+    const double lb = std::cbrt(std::abs(mass_properties(*b.shape).volume));
+    out.ref_face = -1;
+    out.inc_face = -1;
+    out.normal = n;
+    out.offset = off;
+    out.area = 1e-2 * std::min(la, lb) * std::min(la, lb);
+    out.points.push_back({inc_w[arg], n.dot(inc_w[arg]) - off, out.area, 0x40000000u | static_cast<unsigned>(arg)});
+    return out.points.front().separation <= margin;
+  }
+
+  // 3. Patch: clip the incident face by the reference face's side planes.
+  const Polyhedron& rp = *ref.shape;
+  const Polyhedron& ip = *inc.shape;
+  const Vec3 n = ref.R * rp.normals[ref_face];
+  const double offset = rp.offsets[ref_face] + n.dot(ref.x);
+  int inc_face = 0;
+  double most_opposed = std::numeric_limits<double>::infinity();
+  for (std::size_t f = 0; f < ip.faces.size(); ++f) {
+    const double c = (inc.R * ip.normals[f]).dot(n);
+    if (c < most_opposed - 1e-12) {
+      most_opposed = c;
+      inc_face = static_cast<int>(f);
+    }
+  }
+  s.poly.clear();
+  s.poly_id.clear();
+  const auto& iface = ip.faces[inc_face];
+  for (std::size_t j = 0; j < iface.size(); ++j) {
+    s.poly.push_back(inc_w[iface[j]]);
+    s.poly_id.push_back(static_cast<std::uint32_t>(j));
+  }
+  const auto& rface = rp.faces[ref_face];
+  for (std::size_t k = 0; k < rface.size() && !s.poly.empty(); ++k) {
+    const Vec3& v0 = ref_w[rface[k]];
+    const Vec3& v1 = ref_w[rface[(k + 1) % rface.size()]];
+    Vec3 m = (v1 - v0).cross(n);
+    const double len = m.norm();
+    if (len == 0) continue;
+    m /= len;
+    const double c = m.dot(v0);
+    s.next.clear();
+    s.next_id.clear();
+    const std::size_t np = s.poly.size();
+    for (std::size_t j = 0; j < np; ++j) {
+      const Vec3& P = s.poly[j];
+      const Vec3& Q = s.poly[(j + 1) % np];
+      const double dp = m.dot(P) - c, dq = m.dot(Q) - c;
+      if (dp <= 0) {
+        s.next.push_back(P);
+        s.next_id.push_back(s.poly_id[j]);
+      }
+      if ((dp < 0 && dq > 0) || (dp > 0 && dq < 0)) {
+        const double t = dp / (dp - dq);
+        s.next.push_back(P + t * (Q - P));
+        const std::uint32_t idp = s.poly_id[j] & 0x3FFu, idq = s.poly_id[(j + 1) % np] & 0x3FFu;
+        s.next_id.push_back(0x80000000u | (static_cast<std::uint32_t>(k & 0x3FF) << 20) | (idp << 10) | idq);
+      }
+    }
+    std::swap(s.poly, s.next);
+    std::swap(s.poly_id, s.next_id);
+  }
+  if (s.poly.empty()) return false;
+
+  // Patch area and tributary areas, on the common plane.
+  const std::size_t np = s.poly.size();
+  Vec3 centre = Vec3::Zero();
+  for (const Vec3& p : s.poly) centre += p - (n.dot(p) - offset) * n;
+  centre /= static_cast<double>(np);
+  out.points.resize(np);
+  double total = 0;
+  for (std::size_t j = 0; j < np; ++j) {
+    out.points[j].point = s.poly[j];
+    out.points[j].separation = n.dot(s.poly[j]) - offset;
+    out.points[j].feature = s.poly_id[j];
+    out.points[j].area = 0;
+  }
+  if (np >= 3) {
+    for (std::size_t j = 0; j < np; ++j) {
+      const Vec3 pj = s.poly[j] - out.points[j].separation * n - centre;
+      const Vec3 pk = s.poly[(j + 1) % np] - out.points[(j + 1) % np].separation * n - centre;
+      const double tri = 0.5 * std::abs(pj.cross(pk).dot(n));
+      out.points[j].area += 0.5 * tri;
+      out.points[(j + 1) % np].area += 0.5 * tri;
+      total += tri;
+    }
+  }
+  const double face_area_min = std::min(face_area(rp, ref_face), face_area(ip, inc_face));
+  if (total <= 1e-9 * face_area_min) {
+    // Line or point contact: a nominal area shared by the points.
+    total = 1e-2 * face_area_min;
+    for (auto& p : out.points) p.area = total / static_cast<double>(np);
+  }
+  out.ref_face = ref_face;
+  out.inc_face = inc_face;
+  out.normal = n;
+  out.offset = offset;
+  out.area = total;
+  // Keep only the vertices that are within the margin.
+  std::size_t kept = 0;
+  for (std::size_t j = 0; j < np; ++j)
+    if (out.points[j].separation <= margin) out.points[kept++] = out.points[j];
+  out.points.resize(kept);
+  return kept > 0;
+}
+
+}  // namespace polydem

@@ -1,0 +1,70 @@
+// Narrow phase and contact patch for one pair of convex blocks.
+//
+// 1. libccd (MPR on support functions, each block inflated by half the
+//    contact margin) rejects pairs farther apart than the margin and gives a
+//    penetration depth and direction.
+// 2. Common plane: the face, of either block, with the largest separation
+//    along its own outward normal (the separating-axis test over face
+//    normals). For blocks meeting face to face, or a block rocking on an edge
+//    over a face, that face's plane is the joint plane. The previous choice is
+//    kept while it is within a small tolerance of the best, so that the
+//    subcontacts (and their shear history) do not flip between the two
+//    parallel faces of a closed joint.
+// 3. Patch: the incident face (the other block's face most opposed to the
+//    common-plane normal) is clipped by the side planes of the reference face
+//    (Sutherland–Hodgman). The clipped polygon projected on the common plane is
+//    the joint's patch; its vertices within the margin become subcontacts
+//    with tributary areas from a fan about the polygon's centre, which add up
+//    to the patch area.
+// 4. Fallback: when the face test says the blocks overlap much more than MPR
+//    does (edge-to-edge contact, no face aligned), the MPR direction is the
+//    normal and a single vertex–face subcontact with a nominal area carries it.
+#pragma once
+
+#include "geometry/polyhedron.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace polydem {
+
+struct PosedBlock {
+  const Polyhedron* shape;  // body frame
+  Mat3 R;
+  Vec3 x;
+};
+
+struct PatchPoint {
+  Vec3 point;         // on the incident block, world
+  double separation;  // along the normal, > 0 open, < 0 overlapping (m)
+  double area;        // tributary area, m²
+  std::uint32_t feature;
+};
+
+struct Patch {
+  int ref_side = 0;  // 0: reference face on the first block, 1: on the second
+  int ref_face = -1, inc_face = -1;
+  Vec3 normal = Vec3::Zero();  // world, outward from the reference face
+  double offset = 0;           // plane normal·x = offset, world
+  double area = 0;
+  std::vector<PatchPoint> points;
+};
+
+// Scratch buffers reused across calls (one per thread) so that detection does
+// not allocate once warmed up.
+struct PatchScratch {
+  std::vector<Vec3> world_a, world_b;
+  std::vector<Vec3> poly, next;
+  std::vector<std::uint32_t> poly_id, next_id;
+};
+
+// Separation of the other block's world vertices from `self`'s face plane
+// (> 0 apart, < 0 overlapping).
+double face_separation(const PosedBlock& self, int face, const std::vector<Vec3>& other);
+
+// Returns false if the pair is farther apart than `margin`. prev_ref_side /
+// prev_ref_face: the previous detection's choice for this pair (-1 if none).
+bool find_patch(const PosedBlock& a, const PosedBlock& b, double margin, int prev_ref_side, int prev_ref_face,
+                Patch& out, PatchScratch& scratch);
+
+}  // namespace polydem

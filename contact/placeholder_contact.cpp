@@ -1,1 +1,0 @@
-// placeholder until the contact stage lands; removed with it

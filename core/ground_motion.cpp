@@ -1,0 +1,86 @@
+#include "core/ground_motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace polydem {
+
+namespace {
+
+// Index of the record interval [t_k, t_k+1] that holds t (t inside the record).
+std::size_t interval(const std::vector<double>& time, double t) {
+  auto it = std::upper_bound(time.begin(), time.end(), t);
+  return static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, (it - time.begin()) - 1));
+}
+
+}  // namespace
+
+double GroundMotion::acceleration_at(double t) const {
+  const double s = t - start_time;
+  if (s < 0) return 0.0;
+  switch (kind) {
+    case GroundMotionKind::none: return 0.0;
+    case GroundMotionKind::constant: return acceleration;
+    case GroundMotionKind::ramp: return rate * s;
+    case GroundMotionKind::sine_pulse:
+      return s <= period ? acceleration * std::sin(2.0 * std::numbers::pi * s / period) : 0.0;
+    case GroundMotionKind::record: {
+      if (record_time.empty() || s < record_time.front() || s > record_time.back()) return 0.0;
+      const std::size_t k = interval(record_time, s);
+      if (k + 1 >= record_time.size()) return record_acceleration.back();
+      const double w = (s - record_time[k]) / (record_time[k + 1] - record_time[k]);
+      return (1 - w) * record_acceleration[k] + w * record_acceleration[k + 1];
+    }
+  }
+  return 0.0;
+}
+
+double GroundMotion::velocity_at(double t) const {
+  const double s = t - start_time;
+  if (s < 0) return 0.0;
+  switch (kind) {
+    case GroundMotionKind::none: return 0.0;
+    case GroundMotionKind::constant: return acceleration * s;
+    case GroundMotionKind::ramp: return 0.5 * rate * s * s;
+    case GroundMotionKind::sine_pulse: {
+      const double w = 2.0 * std::numbers::pi / period;
+      const double tt = std::min(s, period);
+      return acceleration / w * (1.0 - std::cos(w * tt));  // zero again after one cycle
+    }
+    case GroundMotionKind::record: {
+      if (record_time.empty() || s < record_time.front()) return 0.0;
+      if (s >= record_time.back()) return record_velocity.back();
+      const std::size_t k = interval(record_time, s);
+      const double a0 = record_acceleration[k];
+      const double h = s - record_time[k];
+      const double slope = (record_acceleration[k + 1] - a0) / (record_time[k + 1] - record_time[k]);
+      return record_velocity[k] + a0 * h + 0.5 * slope * h * h;
+    }
+  }
+  return 0.0;
+}
+
+GroundMotion make_ground_motion(const GroundMotionSpec& spec, std::vector<double> record_time,
+                                std::vector<double> record_acceleration) {
+  GroundMotion g;
+  g.kind = spec.kind;
+  g.applied_as = spec.applied_as;
+  g.direction = spec.direction.normalized();
+  g.start_time = spec.start_time;
+  g.acceleration = spec.acceleration;
+  g.rate = spec.rate;
+  g.period = spec.period;
+  if (spec.kind == GroundMotionKind::record) {
+    g.record_time = std::move(record_time);
+    g.record_acceleration = std::move(record_acceleration);
+    for (double& a : g.record_acceleration) a *= spec.scale;
+    g.record_velocity.assign(g.record_time.size(), 0.0);
+    for (std::size_t k = 1; k < g.record_time.size(); ++k)
+      g.record_velocity[k] = g.record_velocity[k - 1] + 0.5 * (g.record_acceleration[k - 1] + g.record_acceleration[k]) *
+                                                           (g.record_time[k] - g.record_time[k - 1]);
+  }
+  return g;
+}
+
+}  // namespace polydem

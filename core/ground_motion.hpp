@@ -1,0 +1,35 @@
+// Horizontal ground acceleration a_g(t) along a fixed direction, and the
+// base velocity v_g(t) = ∫ a_g dt that kinematic base blocks follow.
+//
+// The two ways of applying it are equivalent for a rigid base: an inertial
+// body force −m·a_g on every free block (the blocks are seen in the moving
+// base's frame), or kinematic base blocks moving with v_g (the blocks are seen
+// in a fixed frame). A record arrives here already sampled (io reads files).
+#pragma once
+
+#include "core/scene_spec.hpp"
+
+#include <vector>
+
+namespace polydem {
+
+struct GroundMotion {
+  GroundMotionKind kind = GroundMotionKind::none;
+  GroundMotionApplication applied_as = GroundMotionApplication::body_force;
+  Vec3 direction{1, 0, 0};
+  double start_time = 0, acceleration = 0, rate = 0, period = 1;
+  // Record samples (m/s²) at record_time (s, increasing), and the velocity
+  // at each sample by the trapezoidal rule so that v_g is the exact integral
+  // of the piecewise-linear acceleration.
+  std::vector<double> record_time, record_acceleration, record_velocity;
+
+  bool active() const { return kind != GroundMotionKind::none; }
+  double acceleration_at(double t) const;  // m/s²
+  double velocity_at(double t) const;      // m/s
+};
+
+// record_time/record_acceleration may be empty unless spec.kind == record.
+GroundMotion make_ground_motion(const GroundMotionSpec& spec, std::vector<double> record_time = {},
+                                std::vector<double> record_acceleration = {});
+
+}  // namespace polydem

@@ -1,0 +1,31 @@
+// Automatic critical time step for explicit central differences.
+//
+// For each free block we bound its highest natural frequency on its joints
+// by assuming every face is in full contact (the most a block can carry):
+// a face point at r (from the centroid) has the spring matrix
+// D = kn·n nᵀ + ks·(I − n nᵀ) per unit area, and the block's 6×6 stiffness
+// is ∫ [I, −[r]×]ᵀ D [I, −[r]×] dA over its faces (exact for polygons: the
+// quadratic terms use each triangle's second moment). Its largest
+// mass-normalised eigenvalue is ω_b². A joint between two free blocks can
+// vibrate up to √2 faster than one block on a fixed neighbour (Gershgorin),
+// so ω = √2·max_b ω_b. The central-difference limit with stiffness-
+// proportional damping ξ = β·ω/2 is dt = (2/ω)(√(1+ξ²) − ξ); the step used
+// is that times the safety factor.
+#pragma once
+
+#include "core/blocks.hpp"
+#include "core/scene_spec.hpp"
+
+namespace polydem {
+
+struct CriticalStep {
+  double omega_max = 0;  // rad/s
+  double damping_ratio = 0;  // ξ at omega_max
+  double critical = 0;   // s, without safety factor
+  double chosen = 0;     // s
+  int governing_block = -1;
+};
+
+CriticalStep critical_time_step(const Blocks& blocks, const JointSpec& joint, double safety_factor);
+
+}  // namespace polydem

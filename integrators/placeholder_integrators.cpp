@@ -1,1 +1,0 @@
-// placeholder until the integrators stage lands; removed with it

@@ -1,0 +1,56 @@
+// Runs every verification deck in examples/verification/ and requires each of
+// its checks (exact or analytical results, tolerances stated in the deck) to
+// pass. The decks are what a user runs; this test is what keeps them honest.
+#include "apps/scene_runner.hpp"
+#include "io/deck.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace polydem {
+namespace {
+
+std::string deck(const std::string& name) { return std::string(POLYDEM_SOURCE_DIR) + "/examples/verification/" + name; }
+
+class VerificationDeck : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(VerificationDeck, ChecksPass) {
+  const SceneSpec spec = read_deck(deck(GetParam()));
+  ASSERT_FALSE(spec.checks.empty()) << "a verification deck must carry checks";
+  const RunReport r = run_scene(spec);
+  for (const CheckResult& c : r.checks) {
+    EXPECT_TRUE(c.passed) << c.name << ": measured " << c.measured << " expected " << c.expected << " tolerance "
+                          << c.tolerance << " (" << c.note << ")";
+    std::cout << "  " << GetParam() << " " << c.name << ": measured " << c.measured << " expected " << c.expected
+              << " " << c.unit << "\n";
+  }
+  EXPECT_LT(r.energy_balance_error, 0.05) << "energy ledger does not close";
+}
+
+INSTANTIATE_TEST_SUITE_P(Decks, VerificationDeck,
+                         ::testing::Values("resting_block.toml", "slope_slide.toml", "slope_stick.toml",
+                                           "rocking_onset.toml", "free_rocking.toml", "energy_conservation.toml",
+                                           "stack_of_ten.toml", "dry_stone_wall.toml"),
+                         [](const auto& info) {
+                           std::string n = info.param;
+                           return n.substr(0, n.find('.'));
+                         });
+
+// A check that cannot fail is no check: a slope steeper than friction must
+// fail the `stick` check, and a wrong expected value must fail.
+TEST(VerificationChecks, CanFail) {
+  SceneSpec spec = read_deck(deck("slope_stick.toml"), {"simulation.gravity=[6.0, 0.0, -7.76]"});
+  RunReport r = run_scene(spec);
+  ASSERT_EQ(r.checks.size(), 1u);
+  EXPECT_FALSE(r.checks[0].passed) << "a block on a 37.7 degree slope with phi = 30 must slide";
+
+  spec = read_deck(deck("resting_block.toml"));
+  spec.checks.resize(1);
+  spec.checks[0].expected = 1.01 * 25506.0;  // 1 % more than m g
+  r = run_scene(spec);
+  EXPECT_FALSE(r.checks[0].passed);
+}
+
+}  // namespace
+}  // namespace polydem
