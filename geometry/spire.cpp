@@ -1,0 +1,411 @@
+// The spire builder: course by course, face by face, stone by stone.
+//
+// Every block is a list of half-spaces n·x <= d turned into a polyhedron by
+// halfspace_intersection() (CGAL hull of the dual points, exact predicates).
+// Neighbours share their joint planes exactly (the same Plane value), so
+// they meet without gaps or overlaps up to round-off in the corners.
+//
+// A window is the convex prism O = {|s| <= w/2, z >= sill, z <= h(s)} in the
+// face's frame (s along the face, horizontal; h the head profile: flat, or a
+// pointed arch as straight chords, concave). A stone S that O cuts becomes
+// the convex pieces of S \ O:
+//   left  S ∩ {s <= -w/2}          right  S ∩ {s >= w/2}
+//   below S ∩ {|s| <= w/2, z <= sill}
+//   above S ∩ {s_j <= s <= s_j+1} ∩ {above chord j}   for each chord j,
+// which tile S \ O because h is linear on each [s_j, s_j+1]. The pieces are
+// cut from S by clip(): S's corners on the kept side plus the crossings of
+// its edges, hulled again (convex_hull, CGAL).
+#include "geometry/spire.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <sstream>
+
+namespace polydem {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+const double kTan8 = std::tan(kPi / 8.0);  // half the face width over the apothem
+
+struct Plane {
+  Vec3 n;    // need not be unit
+  double d;  // n·x <= d is inside
+};
+
+std::string num(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+// Horizontal unit normal and tangent (towards increasing azimuth) of face k.
+Vec3 face_normal(int k) {
+  const double th = k * kPi / 4.0;
+  return {std::cos(th), std::sin(th), 0.0};
+}
+Vec3 face_tangent(int k) {
+  const double th = k * kPi / 4.0;
+  return {-std::sin(th), std::cos(th), 0.0};
+}
+
+double outer_apothem_at_base(const SpireSpec& s) { return s.base_inradius + 0.5 * s.wall_thickness; }
+double shell_top(const SpireSpec& s) { return s.height - s.tip_height; }
+double thickness_at(const SpireSpec& s, double z) {
+  return s.wall_thickness + (s.wall_thickness_top - s.wall_thickness) * z / shell_top(s);
+}
+
+// Planes of face k (inside = wall side).
+Plane outer_plane(const SpireSpec& s, int k) {
+  const double A = outer_apothem_at_base(s);
+  return {face_normal(k) + Vec3(0, 0, A / s.height), A};
+}
+Plane inner_plane(const SpireSpec& s, int k) {
+  // n_k·x >= a_i(z) = (A - t0) - c z
+  const double A = outer_apothem_at_base(s);
+  const double c = A / s.height + (s.wall_thickness_top - s.wall_thickness) / shell_top(s);
+  return {-face_normal(k) - Vec3(0, 0, c), -(A - s.wall_thickness)};
+}
+// The mitre planes through the axis and the octagon's corners at azimuth
+// θ_k ∓ π/8; inside = towards the face.
+Plane low_corner_plane(int k) {
+  const double phi = k * kPi / 4.0 - kPi / 8.0;
+  return {Vec3(std::sin(phi), -std::cos(phi), 0.0), 0.0};
+}
+Plane high_corner_plane(int k) {
+  const double phi = k * kPi / 4.0 + kPi / 8.0;
+  return {Vec3(-std::sin(phi), std::cos(phi), 0.0), 0.0};
+}
+Plane s_at_least(int k, double s0) { return {-face_tangent(k), -s0}; }
+Plane s_at_most(int k, double s1) { return {face_tangent(k), s1}; }
+Plane z_at_least(double z0) { return {Vec3(0, 0, -1), -z0}; }
+Plane z_at_most(double z1) { return {Vec3(0, 0, 1), z1}; }
+Plane flipped(const Plane& p) { return {-p.n, -p.d}; }
+
+Polyhedron intersect(const std::vector<Plane>& planes, const Vec3& interior) {
+  std::vector<Vec3> n;
+  std::vector<double> d;
+  for (const auto& p : planes) n.push_back(p.n), d.push_back(p.d);
+  return halfspace_intersection(n, d, interior);
+}
+
+// p ∩ {plane}: nullopt if nothing with volume is left; p itself if the
+// plane does not cut it. Corners within tol of the plane count as on it.
+std::optional<Polyhedron> clip(const Polyhedron& p, const Plane& plane) {
+  const double len = plane.n.norm();
+  const Vec3 n = plane.n / len;
+  const double d = plane.d / len;
+  const double tol = 1e-9 * bounding_box_diagonal(p.vertices);
+  std::vector<double> dist;
+  bool any_in = false, any_out = false;
+  for (const auto& v : p.vertices) {
+    dist.push_back(n.dot(v) - d);
+    any_in = any_in || dist.back() < -tol;
+    any_out = any_out || dist.back() > tol;
+  }
+  if (!any_out) return p;
+  if (!any_in) return std::nullopt;
+  std::vector<Vec3> pts;
+  for (size_t i = 0; i < p.vertices.size(); ++i)
+    if (dist[i] <= tol) pts.push_back(p.vertices[i]);
+  for (const auto& e : p.edges) {
+    const double da = dist[e[0]], db = dist[e[1]];
+    if ((da < -tol && db > tol) || (da > tol && db < -tol)) {
+      const double t = da / (da - db);
+      pts.push_back(p.vertices[e[0]] + t * (p.vertices[e[1]] - p.vertices[e[0]]));
+    }
+  }
+  return convex_hull(pts);
+}
+
+std::optional<Polyhedron> clip_all(const Polyhedron& p, const std::vector<Plane>& planes) {
+  std::optional<Polyhedron> cur = p;
+  for (const auto& pl : planes) {
+    cur = clip(*cur, pl);
+    if (!cur) return std::nullopt;
+  }
+  return cur;
+}
+
+// The window's head profile as points (s, z) from the left springing to the
+// right one: the corners where h(s) changes slope.
+std::vector<Vec2> head_points(const SpireSpec& s) {
+  const double w = s.window_width;
+  if (s.window_head_shape == WindowHead::flat) return {{-0.5 * w, s.window_head}, {0.5 * w, s.window_head}};
+  // Equilateral pointed arch: arcs of radius w centred on the opposite
+  // springing point; the left arc runs from angle 180° to 120°.
+  const double spring = s.window_head - w * std::sqrt(3.0) / 2.0;
+  const int m = s.window_arch_segments;
+  std::vector<Vec2> pts;
+  for (int i = 0; i <= m; ++i) {
+    const double a = kPi - (kPi / 3.0) * i / m;
+    pts.emplace_back(0.5 * w + w * std::cos(a), spring + w * std::sin(a));
+  }
+  for (int i = m - 1; i >= 0; --i) pts.emplace_back(-pts[i].x(), pts[i].y());
+  pts[m].x() = 0.0;  // apex exactly on the face's centre line
+  return pts;
+}
+
+struct Window {
+  double half_width;
+  double sill;
+  double head;                // z of the top of the opening
+  std::vector<Vec2> profile;  // head corners (s, z), s increasing
+};
+
+// Below chord j of the head (inside the opening), in face k's frame.
+Plane below_chord(int k, const Vec2& a, const Vec2& b) {
+  const double ds = b.x() - a.x(), dz = b.y() - a.y();
+  // (-dz, ds) is the chord's upward normal in the (s, z) plane.
+  return {-dz * face_tangent(k) + Vec3(0, 0, ds), -dz * a.x() + ds * a.y()};
+}
+
+// The convex pieces of stone \ window on face k (none if the window takes the
+// whole stone); nullopt if they do not meet.
+std::optional<std::vector<Polyhedron>> cut_by_window(const Polyhedron& stone, int k, const Window& w) {
+  const Plane left = s_at_most(k, -w.half_width);   // s <= -w/2
+  const Plane right = s_at_least(k, w.half_width);  // s >= w/2
+  const Plane below = z_at_most(w.sill);
+  std::vector<Plane> opening = {flipped(left), flipped(right), flipped(below)};
+  for (size_t j = 0; j + 1 < w.profile.size(); ++j) opening.push_back(below_chord(k, w.profile[j], w.profile[j + 1]));
+  if (!clip_all(stone, opening)) return std::nullopt;
+
+  std::vector<std::optional<Polyhedron>> parts;
+  parts.push_back(clip(stone, left));
+  parts.push_back(clip_all(stone, {flipped(left), flipped(right), below}));
+  for (size_t j = 0; j + 1 < w.profile.size(); ++j)
+    parts.push_back(clip_all(stone, {s_at_least(k, w.profile[j].x()), s_at_most(k, w.profile[j + 1].x()),
+                                     flipped(below_chord(k, w.profile[j], w.profile[j + 1]))}));
+  parts.push_back(clip(stone, right));
+  std::vector<Polyhedron> out;
+  for (auto& p : parts)
+    if (p) out.push_back(std::move(*p));
+  return out;
+}
+
+std::string zero_padded(int v, int width) {
+  std::string s = std::to_string(v);
+  while (static_cast<int>(s.size()) < width) s.insert(s.begin(), '0');
+  return s;
+}
+
+void require(bool ok, const char* field, const std::string& what) {
+  if (!ok) throw SpireSpecError(field, what);
+}
+
+void require_finite_positive(double v, const char* field) {
+  require(std::isfinite(v) && v > 0, field, "must be > 0 and finite (got " + num(v) + ")");
+}
+
+}  // namespace
+
+double spire_outer_inradius(const SpireSpec& s, double z) {
+  return outer_apothem_at_base(s) * (1.0 - z / s.height);
+}
+
+double spire_inner_inradius(const SpireSpec& s, double z) { return spire_outer_inradius(s, z) - thickness_at(s, z); }
+
+const char* to_string(SpireBlockKind kind) {
+  switch (kind) {
+    case SpireBlockKind::base: return "base";
+    case SpireBlockKind::stone: return "stone";
+    case SpireBlockKind::window_piece: return "window_piece";
+    case SpireBlockKind::tip: return "tip";
+  }
+  return "?";
+}
+
+void validate_spire(const SpireSpec& s) {
+  require_finite_positive(s.height, "height");
+  require_finite_positive(s.tip_height, "tip_height");
+  require(s.tip_height < s.height, "tip_height",
+          "must be less than height (" + num(s.height) + "), leaving a shell of courses below the tip (got " +
+              num(s.tip_height) + ")");
+  require_finite_positive(s.base_inradius, "base_inradius");
+  require_finite_positive(s.wall_thickness, "wall_thickness");
+  require_finite_positive(s.wall_thickness_top, "wall_thickness_top");
+  require(s.wall_thickness < 2.0 * s.base_inradius, "wall_thickness",
+          "must be less than 2·base_inradius = " + num(2.0 * s.base_inradius) + " (got " + num(s.wall_thickness) + ")");
+  const double top = shell_top(s);
+  const double ai_top = spire_inner_inradius(s, top);
+  require(ai_top > 1e-3 * s.base_inradius, "wall_thickness_top",
+          "the wall (" + num(s.wall_thickness_top) + " m) is as thick as the spire is wide at the top of the shell (z = " +
+              num(top) + " m, outer inradius " + num(spire_outer_inradius(s, top)) +
+              " m): the shell must stay hollow up to the solid tip");
+  require_finite_positive(s.course_height, "course_height");
+  require(s.course_height <= top * (1 + 1e-12), "course_height",
+          "must be at most height - tip_height = " + num(top) + " (got " + num(s.course_height) + ")");
+  require(top / s.course_height <= 10000, "course_height", "gives more than 10000 courses");
+  require(s.stones_per_face >= 1 && s.stones_per_face <= 64, "stones_per_face",
+          "must be in [1, 64] (got " + std::to_string(s.stones_per_face) + ")");
+  require(std::isfinite(s.base_thickness) && s.base_thickness >= 0, "base_thickness",
+          "must be >= 0 and finite (0 = no base block) (got " + num(s.base_thickness) + ")");
+
+  std::vector<int> seen;
+  for (int f : s.window_faces) {
+    require(f >= 0 && f <= 7, "window_faces", "face indices are 0..7 (got " + std::to_string(f) + ")");
+    require(std::find(seen.begin(), seen.end(), f) == seen.end(), "window_faces",
+            "face " + std::to_string(f) + " is listed twice (one window per face)");
+    seen.push_back(f);
+  }
+  require(s.window_arch_segments >= 1 && s.window_arch_segments <= 64, "window_arch_segments",
+          "must be in [1, 64] (got " + std::to_string(s.window_arch_segments) + ")");
+  require(std::isfinite(s.window_sill) && s.window_sill >= 0, "window_sill",
+          "must be >= 0 (z = 0 is the bed of course 0) (got " + num(s.window_sill) + ")");
+  require_finite_positive(s.window_width, "window_width");
+  require(std::isfinite(s.window_head) && s.window_head > s.window_sill, "window_head",
+          "must be above window_sill = " + num(s.window_sill) + " (got " + num(s.window_head) + ")");
+  require(s.window_head <= top, "window_head",
+          "must be at most the top of the shell, height - tip_height = " + num(top) + " (got " + num(s.window_head) +
+              ")");
+  if (s.window_head_shape == WindowHead::pointed) {
+    const double rise = s.window_width * std::sqrt(3.0) / 2.0;
+    require(s.window_head - s.window_sill >= rise, "window_head",
+            "a pointed head of width " + num(s.window_width) + " m rises " + num(rise) +
+                " m (equilateral arch): window_head must be at least window_sill + " + num(rise) + " = " +
+                num(s.window_sill + rise) + " (got " + num(s.window_head) + ")");
+  }
+  // The jambs must cross the wall inside the face: the face is narrowest at
+  // the inner surface at the head.
+  const double room = spire_inner_inradius(s, s.window_head) * kTan8;
+  require(0.5 * s.window_width < 0.999 * room, "window_width",
+          "does not fit in the face: at the window head (z = " + num(s.window_head) +
+              " m) the face is " + num(2 * room) + " m wide at the inner surface (got " + num(s.window_width) + ")");
+}
+
+SpireModel build_spire(const SpireSpec& s) {
+  validate_spire(s);
+  SpireModel model;
+  model.shell_top = shell_top(s);
+  model.n_courses = std::max(1, static_cast<int>(std::lround(model.shell_top / s.course_height)));
+  model.course_height = model.shell_top / model.n_courses;
+  const int n = s.stones_per_face;
+  const int course_digits = std::max(2, static_cast<int>(std::to_string(model.n_courses - 1).size()));
+
+  const double A = outer_apothem_at_base(s);
+  if (s.base_thickness > 0) {
+    std::vector<Vec2> octagon;
+    const double R = A / std::cos(kPi / 8.0);
+    for (int k = 0; k < 8; ++k) {
+      const double phi = k * kPi / 4.0 + kPi / 8.0;
+      octagon.emplace_back(R * std::cos(phi), R * std::sin(phi));
+    }
+    SpireBlock b;
+    b.shape = make_prism(octagon, -s.base_thickness, 0.0);
+    b.kind = SpireBlockKind::base;
+    b.name = "base";
+    model.blocks.push_back(std::move(b));
+  }
+
+  Window window;
+  window.half_width = 0.5 * s.window_width;
+  window.sill = s.window_sill;
+  window.head = s.window_head;
+  window.profile = head_points(s);
+  auto has_window = [&](int k) {
+    return std::find(s.window_faces.begin(), s.window_faces.end(), k) != s.window_faces.end();
+  };
+
+  std::vector<bool> jambs_continue(8, true);  // aligned_above_windows: still continuing the jambs
+  for (int c = 0; c < model.n_courses; ++c) {
+    const double z0 = c * model.course_height;
+    const double z1 = c + 1 == model.n_courses ? model.shell_top : (c + 1) * model.course_height;
+    const double zm = 0.5 * (z0 + z1);
+    const double am = 0.5 * (spire_outer_inradius(s, zm) + spire_inner_inradius(s, zm));
+    const double face_width = 2.0 * am * kTan8;   // mid-wall, mid-course
+    const double nominal = face_width / n;         // nominal stone width
+    const bool odd = c % 2 == 1;
+
+    for (int k = 0; k < 8; ++k) {
+      const bool win = has_window(k);
+      const bool window_course = win && z0 < window.head - 1e-12 && z1 > window.sill + 1e-12;
+      std::vector<double> joints;
+      bool on_jambs = false;
+      if (s.joint_pattern == SpireJointPattern::aligned_above_windows && win && jambs_continue[k] &&
+          z1 > window.sill + 1e-12) {
+        const double side = spire_inner_inradius(s, z1) * kTan8 - window.half_width;
+        if (side >= 0.25 * nominal)
+          on_jambs = true;
+        else
+          jambs_continue[k] = false;
+      }
+      if (on_jambs) {
+        joints = {-window.half_width, window.half_width};
+      } else {
+        const bool shift = odd && s.joint_pattern != SpireJointPattern::aligned;
+        for (int j = 1; j < (shift ? n + 1 : n); ++j) {
+          const double f = shift ? (j - 0.5) / n : static_cast<double>(j) / n;
+          joints.push_back((f - 0.5) * face_width);
+        }
+        // Joints next to a jamb move onto it: no slivers beside the window.
+        if (window_course)
+          for (double& x : joints)
+            for (double jamb : {-window.half_width, window.half_width})
+              if (std::abs(x - jamb) < 0.25 * nominal) x = jamb;
+        std::sort(joints.begin(), joints.end());
+        joints.erase(std::unique(joints.begin(), joints.end()), joints.end());
+      }
+
+      const int n_stones = static_cast<int>(joints.size()) + 1;
+      const double corner = am * kTan8;  // s of the corners at mid-wall
+      for (int i = 0; i < n_stones; ++i) {
+        std::vector<Plane> planes = {outer_plane(s, k), inner_plane(s, k), z_at_least(z0), z_at_most(z1)};
+        const double lo = i == 0 ? -corner : joints[i - 1];
+        const double hi = i + 1 == n_stones ? corner : joints[i];
+        planes.push_back(i == 0 ? low_corner_plane(k) : s_at_least(k, lo));
+        planes.push_back(i + 1 == n_stones ? high_corner_plane(k) : s_at_most(k, hi));
+        const Vec3 interior = am * face_normal(k) + 0.5 * (lo + hi) * face_tangent(k) + Vec3(0, 0, zm);
+        const std::string name =
+            "course" + zero_padded(c, course_digits) + "_face" + std::to_string(k) + "_stone" + std::to_string(i);
+        Polyhedron stone;
+        try {
+          stone = intersect(planes, interior);
+        } catch (const GeometryError& e) {
+          throw GeometryError("spire: cannot build " + name + ": " + e.what());
+        }
+        std::optional<std::vector<Polyhedron>> cut_pieces;
+        if (window_course) {
+          try {
+            cut_pieces = cut_by_window(stone, k, window);
+          } catch (const GeometryError& e) {
+            throw GeometryError("spire: cannot cut the window out of " + name + ": " + e.what());
+          }
+        }
+        const bool cut = cut_pieces.has_value();
+        std::vector<Polyhedron> pieces;
+        if (cut)
+          pieces = std::move(*cut_pieces);
+        else
+          pieces.push_back(std::move(stone));
+        if (cut) ++model.stones_cut_by_windows;
+        for (size_t p = 0; p < pieces.size(); ++p) {
+          SpireBlock b;
+          b.shape = std::move(pieces[p]);
+          b.kind = cut ? SpireBlockKind::window_piece : SpireBlockKind::stone;
+          b.course = c;
+          b.face = k;
+          b.stone = i;
+          b.piece = cut ? static_cast<int>(p) : -1;
+          b.name = cut ? name + "_piece" + std::to_string(p) : name;
+          if (cut) ++model.window_pieces;
+          model.blocks.push_back(std::move(b));
+        }
+      }
+    }
+  }
+
+  std::vector<Plane> tip_planes;
+  for (int k = 0; k < 8; ++k) tip_planes.push_back(outer_plane(s, k));
+  tip_planes.push_back(z_at_least(model.shell_top));
+  SpireBlock tip;
+  tip.shape = intersect(tip_planes, Vec3(0, 0, model.shell_top + 0.25 * s.tip_height));
+  tip.kind = SpireBlockKind::tip;
+  tip.course = model.n_courses;
+  tip.name = "tip";
+  model.blocks.push_back(std::move(tip));
+  return model;
+}
+
+}  // namespace polydem
