@@ -44,6 +44,13 @@ constexpr std::string_view kGroundMotionKeys[] = {"kind",           "applied_as"
                                                   "period",         "record",         "scale"};
 constexpr std::string_view kOutputKeys[] = {"history_interval", "histories", "energies"};
 constexpr std::string_view kCheckKeys[] = {"kind", "block", "expected", "tolerance"};
+constexpr std::string_view kSpireKeys[] = {
+    "height",           "base_inradius",         "wall_thickness",      "wall_thickness_top",
+    "course_height",    "tip_height",            "stones_per_face",     "joint_pattern",
+    "window_faces",     "window_sill",           "window_width",        "window_head",
+    "window_head_shape", "window_arch_segments", "base_thickness",      "base_motion",
+    "density",          "stone_youngs_modulus",  "mortar_youngs_modulus", "mortar_thickness",
+    "shear_stiffness_ratio"};
 
 struct SectionSchema {
   std::string_view name;
@@ -54,6 +61,7 @@ constexpr SectionSchema kSections[] = {
     {"simulation", false, kSimulationKeys}, {"joint", false, kJointKeys},
     {"block", true, kBlockKeys},            {"ground_motion", false, kGroundMotionKeys},
     {"output", false, kOutputKeys},         {"check", true, kCheckKeys},
+    {"spire", false, kSpireKeys},
 };
 
 // Keys that define a block's shape, by shape.
@@ -336,11 +344,18 @@ SimulationSpec read_simulation(const Deck& deck) {
   return s;
 }
 
-JointSpec read_joint(const Deck& deck) {
+// What [joint] falls back on for the stiffnesses: Table 1's 98 GPa/m and
+// ks = 0.4 kn, or what [spire] derives from its materials.
+struct JointDefaults {
+  double normal_stiffness = 98e9;
+  double shear_ratio = 0.4;
+};
+
+JointSpec read_joint(const Deck& deck, const JointDefaults& defaults) {
   const TableReader r(deck, table_or_empty(deck, "joint"), "joint", kJointKeys);
   JointSpec j;
-  j.normal_stiffness = r.number("normal_stiffness", j.normal_stiffness, Range::positive);
-  j.shear_stiffness = r.number("shear_stiffness", 0.4 * j.normal_stiffness, Range::positive);
+  j.normal_stiffness = r.number("normal_stiffness", defaults.normal_stiffness, Range::positive);
+  j.shear_stiffness = r.number("shear_stiffness", defaults.shear_ratio * j.normal_stiffness, Range::positive);
   j.friction_angle = r.number("friction_angle", j.friction_angle, Range::non_negative);
   if (j.friction_angle >= 90.0)
     r.fail("friction_angle", "must be in [0, 90) degrees (got " + format_number(j.friction_angle) + ")");
@@ -469,9 +484,10 @@ BlockSpec read_block(const Deck& deck, const toml::table& t, std::size_t number)
   return b;
 }
 
-std::vector<BlockSpec> read_blocks(const Deck& deck) {
+std::vector<BlockSpec> read_blocks(const Deck& deck, bool has_spire) {
   const auto tables = section_tables(deck, "block");
-  if (tables.empty()) deck.fail("block", &deck.root(), "missing: a deck needs at least one [[block]]");
+  if (tables.empty() && !has_spire)
+    deck.fail("block", &deck.root(), "missing: a deck needs at least one [[block]] (or a [spire])");
   std::vector<BlockSpec> blocks;
   for (std::size_t i = 0; i < tables.size(); ++i) {
     BlockSpec b = read_block(deck, *tables[i], i + 1);
@@ -486,6 +502,119 @@ std::vector<BlockSpec> read_blocks(const Deck& deck) {
     blocks.push_back(std::move(b));
   }
   return blocks;
+}
+
+// [spire]: the octagonal spire of geometry/spire.hpp, plus the materials its
+// joints are made of and how its base block moves.
+struct SpireSection {
+  SpireSpec spec;
+  SpireModel model;
+  JointDefaults joint;
+  double density = 2600.0;
+  BlockMotion base_motion = BlockMotion::fixed;
+  int line = 0;
+};
+
+// Joint stiffness with stone and mortar in series over one course pitch h:
+// 1/kn = (h - t)/E_stone + t/E_mortar (mortar thickness t).
+double series_normal_stiffness(double pitch, double mortar_thickness, double e_stone, double e_mortar) {
+  return 1.0 / ((pitch - mortar_thickness) / e_stone + mortar_thickness / e_mortar);
+}
+
+std::optional<SpireSection> read_spire(const Deck& deck) {
+  const toml::table* t = section_table(deck, "spire");
+  if (!t) return std::nullopt;
+  const TableReader r(deck, *t, "spire", kSpireKeys);
+  SpireSection out;
+  out.line = r.line();
+  SpireSpec& s = out.spec;
+  s.height = r.number("height", s.height, Range::positive);
+  s.base_inradius = r.number("base_inradius", s.base_inradius, Range::positive);
+  s.wall_thickness = r.number("wall_thickness", s.wall_thickness, Range::positive);
+  s.wall_thickness_top = r.number("wall_thickness_top", s.wall_thickness_top, Range::positive);
+  s.course_height = r.number("course_height", s.course_height, Range::positive);
+  s.tip_height = r.number("tip_height", s.tip_height, Range::positive);
+  if (const auto n = r.integer("stones_per_face")) {
+    if (*n < 1 || *n > 64) r.fail("stones_per_face", "must be in [1, 64] (got " + std::to_string(*n) + ")");
+    s.stones_per_face = static_cast<int>(*n);
+  }
+  s.joint_pattern = r.choice<SpireJointPattern>("joint_pattern",
+                                                {{"staggered", SpireJointPattern::staggered},
+                                                 {"aligned", SpireJointPattern::aligned},
+                                                 {"aligned_above_windows", SpireJointPattern::aligned_above_windows}},
+                                                s.joint_pattern);
+  if (const toml::node* n = t->get("window_faces")) {
+    const auto* arr = n->as_array();
+    if (!arr) r.fail("window_faces", "must be an array of face indices 0..7 (got " + describe(*n) + ")");
+    s.window_faces.clear();
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      const toml::node& e = *arr->get(i);
+      const auto* v = e.as_integer();
+      const std::string path = indexed(r.key_path("window_faces"), i + 1);
+      if (!v) deck.fail(path, &e, "must be an integer face index 0..7 (got " + describe(e) + ")");
+      if (v->get() < 0 || v->get() > 7)
+        deck.fail(path, &e, "face indices are 0..7, face 0 facing +x (got " + std::to_string(v->get()) + ")");
+      if (std::find(s.window_faces.begin(), s.window_faces.end(), v->get()) != s.window_faces.end())
+        deck.fail(path, &e, "face " + std::to_string(v->get()) + " is listed twice (one window per face)");
+      s.window_faces.push_back(static_cast<int>(v->get()));
+    }
+  }
+  s.window_sill = r.number("window_sill", s.window_sill, Range::non_negative);
+  s.window_width = r.number("window_width", s.window_width, Range::positive);
+  s.window_head = r.number("window_head", s.window_head, Range::positive);
+  s.window_head_shape = r.choice<WindowHead>("window_head_shape",
+                                             {{"pointed", WindowHead::pointed}, {"flat", WindowHead::flat}},
+                                             s.window_head_shape);
+  if (const auto n = r.integer("window_arch_segments")) {
+    if (*n < 1 || *n > 64) r.fail("window_arch_segments", "must be in [1, 64] (got " + std::to_string(*n) + ")");
+    s.window_arch_segments = static_cast<int>(*n);
+  }
+  s.base_thickness = r.number("base_thickness", s.base_thickness, Range::non_negative);
+  out.base_motion = r.choice<BlockMotion>("base_motion",
+                                          {{"fixed", BlockMotion::fixed}, {"kinematic", BlockMotion::kinematic}},
+                                          out.base_motion);
+  if (r.has("base_motion") && s.base_thickness == 0)
+    r.fail("base_motion", "there is no base block (base_thickness = 0)");
+  out.density = r.number("density", out.density, Range::positive);
+
+  try {
+    out.model = build_spire(s);
+  } catch (const SpireSpecError& e) {
+    r.fail(e.field, e.detail);
+  } catch (const GeometryError& e) {
+    deck.fail("spire", t, std::string("cannot build the spire: ") + e.what());
+  }
+
+  // Table 1: E_stone 30 GPa, E_mortar 10 GPa; section 3.1: 1 cm of mortar.
+  const double e_stone = r.number("stone_youngs_modulus", 30e9, Range::positive);
+  const double e_mortar = r.number("mortar_youngs_modulus", 10e9, Range::positive);
+  const double mortar = r.number("mortar_thickness", 0.01, Range::non_negative);
+  if (!(mortar < out.model.course_height))
+    r.fail("mortar_thickness", "must be less than the course pitch " + format_number(out.model.course_height) +
+                                   " m (got " + format_number(mortar) + ")");
+  out.joint.normal_stiffness = series_normal_stiffness(out.model.course_height, mortar, e_stone, e_mortar);
+  out.joint.shear_ratio = r.number("shear_stiffness_ratio", out.joint.shear_ratio, Range::positive);
+  return out;
+}
+
+// The generated blocks after the [[block]] ones; names must stay unique.
+void append_spire_blocks(const Deck& deck, const SpireSection& spire, std::vector<BlockSpec>& blocks) {
+  const toml::node* at = deck.root().get("spire");
+  const std::size_t n_listed = blocks.size();
+  for (const auto& sb : spire.model.blocks) {
+    for (std::size_t i = 0; i < n_listed; ++i)
+      if (const BlockSpec& b = blocks[i]; b.name == sb.name)
+        deck.fail("spire", at, "generated block " + in_quotes(sb.name) + " has the name of the [[block]] at line " +
+                                   std::to_string(b.deck_line) + "; rename that block");
+    BlockSpec b;
+    b.name = sb.name;
+    b.shape = sb.shape;
+    b.density = spire.density;
+    b.motion = sb.kind == SpireBlockKind::base ? spire.base_motion : BlockMotion::free;
+    b.course = sb.course;
+    b.deck_line = spire.line;
+    blocks.push_back(std::move(b));
+  }
 }
 
 // acceleration (SI) or acceleration_g (in g), not both; nullopt if neither.
@@ -753,8 +882,13 @@ SceneSpec parse_deck(const std::string& text, const std::string& path_for_messag
   scene.deck_path = path_for_messages;
   scene.deck_text = text;
   scene.simulation = read_simulation(deck);
-  scene.joint = read_joint(deck);
-  scene.blocks = read_blocks(deck);
+  const std::optional<SpireSection> spire = read_spire(deck);
+  scene.joint = read_joint(deck, spire ? spire->joint : JointDefaults{});
+  scene.blocks = read_blocks(deck, spire.has_value());
+  if (spire) {
+    append_spire_blocks(deck, *spire, scene.blocks);
+    scene.spire = spire->spec;
+  }
   scene.ground_motion = read_ground_motion(deck);
   scene.output = read_output(deck, scene.blocks);
   scene.checks = read_checks(deck, scene.blocks);
