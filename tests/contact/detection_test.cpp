@@ -1,0 +1,168 @@
+// ContactDetector: subcontact persistence across detections, and the
+// half-margin rule that decides when detection has to run again.
+//
+// Scene: a fixed 3 × 3 × 1 base with its top at z = 0 and a free unit cube
+// resting on it (bottom at z = 0). Margin 0.02 m.
+#include "contact/detection.hpp"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <numeric>
+
+namespace polydem {
+namespace {
+
+constexpr double kMargin = 0.02;
+
+BlockSpec block_spec(std::string name, Polyhedron shape, BlockMotion motion) {
+  BlockSpec s;
+  s.name = std::move(name);
+  s.shape = std::move(shape);
+  s.motion = motion;
+  return s;
+}
+
+Blocks resting_cube() {
+  return build_blocks({block_spec("base", make_box(Vec3(3, 3, 1), Vec3(0, 0, -0.5)), BlockMotion::fixed),
+                       block_spec("cube", make_box(Vec3(1, 1, 1), Vec3(0, 0, 0.5)), BlockMotion::free)});
+}
+
+void translate(Blocks& b, int i, const Vec3& d) { b.state.position[i] += d; }
+
+void turn(Blocks& b, int i, double angle, const Vec3& axis) {
+  b.state.orientation[i] = (Quat(Eigen::AngleAxisd(angle, axis)) * b.state.orientation[i]).normalized();
+  b.state.rotation[i] = b.state.orientation[i].toRotationMatrix();
+}
+
+TEST(ContactDetector, FindsTheRestingPatch) {
+  Blocks b = resting_cube();
+  ContactDetector det(b, kMargin);
+  EXPECT_EQ(det.margin(), kMargin);
+  ContactSet cs;
+  det.detect(b, cs, false);
+  EXPECT_EQ(cs.detections, 1);
+  ASSERT_EQ(cs.pairs.size(), 1u);
+  EXPECT_EQ(cs.pairs[0].a, 0);
+  EXPECT_EQ(cs.pairs[0].b, 1);
+  EXPECT_EQ(cs.pairs[0].count, 4);
+  EXPECT_NEAR(cs.pairs[0].patch_area, 1.0, 1e-12);
+  ASSERT_EQ(cs.sub.size(), 4u);
+  double area = 0;
+  for (std::size_t s = 0; s < cs.sub.size(); ++s) {
+    area += cs.sub.area[s];
+    EXPECT_NEAR(cs.sub.overlap[s], 0.0, 1e-12);  // just touching
+    EXPECT_EQ(cs.sub.bonded[s], 0);
+    EXPECT_NE(cs.sub.ref_block[s], cs.sub.inc_block[s]);
+  }
+  EXPECT_NEAR(area, 1.0, 1e-12);
+  // Gather lists: each subcontact appears once for each of its two blocks,
+  // +1 on the incident block and −1 on the reference block.
+  ASSERT_EQ(cs.gather_offset.size(), 3u);
+  EXPECT_EQ(cs.gather_offset[1] - cs.gather_offset[0], 4);
+  EXPECT_EQ(cs.gather_offset[2] - cs.gather_offset[1], 4);
+  for (int i = 0; i < 2; ++i)
+    for (int k = cs.gather_offset[i]; k < cs.gather_offset[i + 1]; ++k) {
+      const int s = cs.gather_sub[k];
+      EXPECT_EQ(cs.gather_sign[k], cs.sub.inc_block[s] == i ? 1.0 : -1.0);
+    }
+  // Bonded when asked (cohesion or tension at t = 0).
+  ContactDetector det2(b, kMargin);
+  ContactSet cs2;
+  det2.detect(b, cs2, true);
+  for (std::size_t s = 0; s < cs2.sub.size(); ++s) EXPECT_EQ(cs2.sub.bonded[s], 1);
+}
+
+TEST(ContactDetector, SubcontactsKeepTheirHistoryAcrossDetections) {
+  Blocks b = resting_cube();
+  ContactDetector det(b, kMargin);
+  ContactSet cs;
+  det.detect(b, cs, true);
+  ASSERT_EQ(cs.sub.size(), 4u);
+  // Give every subcontact its own history, remembered by key.
+  std::map<std::uint64_t, Vec3> shear;
+  std::map<std::uint64_t, double> slip, damp;
+  for (std::size_t s = 0; s < cs.sub.size(); ++s) {
+    cs.sub.shear_force[s] = Vec3(100.0 * (s + 1), -7.0 * s, 0);
+    cs.sub.slip_energy[s] = 0.5 + s;
+    cs.sub.damping_energy[s] = 0.25 * s;
+    cs.sub.bonded[s] = s % 2;
+    shear[cs.sub.key[s]] = cs.sub.shear_force[s];
+    slip[cs.sub.key[s]] = cs.sub.slip_energy[s];
+    damp[cs.sub.key[s]] = cs.sub.damping_energy[s];
+  }
+  ASSERT_EQ(shear.size(), 4u) << "keys must be distinct";
+  std::map<std::uint64_t, int> bonded;
+  for (std::size_t s = 0; s < cs.sub.size(); ++s) bonded[cs.sub.key[s]] = cs.sub.bonded[s];
+  // The cube slides a little (less than the margin, same features): detect again.
+  translate(b, 1, Vec3(0.004, -0.003, 0));
+  det.detect(b, cs, false);
+  EXPECT_EQ(cs.detections, 2);
+  ASSERT_EQ(cs.sub.size(), 4u);
+  for (std::size_t s = 0; s < cs.sub.size(); ++s) {
+    const std::uint64_t k = cs.sub.key[s];
+    ASSERT_EQ(shear.count(k), 1u) << "key " << k << " is new";
+    EXPECT_EQ(cs.sub.shear_force[s], shear[k]);
+    EXPECT_EQ(cs.sub.slip_energy[s], slip[k]);
+    EXPECT_EQ(cs.sub.damping_energy[s], damp[k]);
+    EXPECT_EQ(cs.sub.bonded[s], bonded[k]);
+  }
+  EXPECT_EQ(cs.retired_slip_energy, 0.0);
+}
+
+TEST(ContactDetector, LostSubcontactsRetireTheirDissipation) {
+  Blocks b = resting_cube();
+  ContactDetector det(b, kMargin);
+  ContactSet cs;
+  det.detect(b, cs, false);
+  ASSERT_EQ(cs.sub.size(), 4u);
+  for (std::size_t s = 0; s < cs.sub.size(); ++s) {
+    cs.sub.slip_energy[s] = 1.0 + s;      // 1+2+3+4 = 10 J
+    cs.sub.damping_energy[s] = 0.5 * s;  // 0+0.5+1+1.5 = 3 J
+  }
+  translate(b, 1, Vec3(0, 0, 0.1));  // lifted beyond the margin
+  det.detect(b, cs, false);
+  EXPECT_TRUE(cs.pairs.empty());
+  EXPECT_EQ(cs.sub.size(), 0u);
+  EXPECT_EQ(cs.retired_slip_energy, 10.0);
+  EXPECT_EQ(cs.retired_damping_energy, 3.0);
+}
+
+TEST(ContactDetector, RedetectsOnlyAfterHalfTheMargin) {
+  Blocks b = resting_cube();
+  ContactDetector det(b, kMargin);
+  ContactSet cs;
+  det.detect(b, cs, false);
+  EXPECT_FALSE(det.needs_detection(b));
+  // Translation (the threshold is margin/2): 0.49·margin no, 0.51·margin yes.
+  translate(b, 1, Vec3(0.49 * kMargin, 0, 0));
+  EXPECT_FALSE(det.needs_detection(b));
+  translate(b, 1, Vec3(0.02 * kMargin, 0, 0));
+  EXPECT_TRUE(det.needs_detection(b));
+  // After detection the reference is the new position.
+  det.detect(b, cs, false);
+  EXPECT_FALSE(det.needs_detection(b));
+  // Rotation counts as angle × bounding radius (√3/2 for the unit cube).
+  const double radius = b.props.radius[1];
+  EXPECT_NEAR(radius, std::sqrt(3.0) / 2.0, 1e-12);
+  turn(b, 1, 0.49 * kMargin / radius, Vec3::UnitZ());  // corners travel 0.49·margin
+  EXPECT_FALSE(det.needs_detection(b));
+  turn(b, 1, 0.02 * kMargin / radius, Vec3::UnitZ());  // 0.51·margin in all
+  EXPECT_TRUE(det.needs_detection(b));
+  // Fixed blocks are ignored however far they are moved (they never move).
+  det.detect(b, cs, false);
+  translate(b, 0, Vec3(1, 0, 0));
+  EXPECT_FALSE(det.needs_detection(b));
+}
+
+TEST(ContactDetector, NeverPairsTwoBlocksThatCannotMove) {
+  Blocks b = build_blocks({block_spec("fixed", make_box(Vec3(1, 1, 1), Vec3(0, 0, -0.5)), BlockMotion::fixed),
+                           block_spec("moving", make_box(Vec3(1, 1, 1), Vec3(0, 0, 0.5)), BlockMotion::kinematic)});
+  ContactDetector det(b, kMargin);
+  ContactSet cs;
+  det.detect(b, cs, false);
+  EXPECT_TRUE(cs.pairs.empty());
+}
+
+}  // namespace
+}  // namespace polydem
