@@ -1,5 +1,6 @@
-// polydem: the command line. Subcommands: run, analytic.
+// polydem: the command line. Subcommands: run, analytic, mesh.
 #include "apps/analytic_command.hpp"
+#include "apps/mesh_command.hpp"
 #include "apps/run_command.hpp"
 
 #include <CLI/CLI.hpp>
@@ -24,12 +25,19 @@ int main(int argc, char** argv) {
   analytic_cmd->prefix_command();  // everything after `analytic` goes to the model's own parser
   analytic_cmd->set_help_flag();
 
+  polydem::MeshOptions mesh;
+  auto* mesh_cmd = app.add_subcommand("mesh", "Build a deck's blocks (e.g. its [spire]): DIR/blocks.vtu and a summary");
+  mesh_cmd->add_option("deck", mesh.deck_path, "Deck file (TOML)")->required();
+  mesh_cmd->add_option("--out", mesh.out_dir, "Output directory")->capture_default_str();
+  mesh_cmd->add_option("--set", mesh.overrides, "Override a deck key: section.key=value (repeatable)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : polydem::exit_bad_input;
   }
   if (analytic_cmd->parsed()) return run_analytic_command(analytic_cmd->remaining());
+  if (mesh_cmd->parsed()) return polydem::mesh_command(mesh);
   if (run_cmd->parsed()) {
     if (run.deck_path.empty() && !run.use_default) {
       std::cerr << "polydem run: give a deck file or --default\n";
