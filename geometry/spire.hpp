@@ -68,7 +68,7 @@ struct SpireSpec {
   double window_width = 0.3;         // between the jambs, centred on the face
   double window_head = 1.5;          // z of the top of the opening (apex of a pointed head)
   WindowHead window_head_shape = WindowHead::pointed;  // pointed: equilateral arch, rise = width·√3/2
-  int window_arch_segments = 2;      // straight segments per arc of a pointed head
+  int window_arch_segments = 1;      // straight segments per arc of a pointed head (1: fewest, biggest pieces)
   double base_thickness = 0.3;       // the base block under course 0; 0 = no base block
 };
 
