@@ -95,8 +95,9 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
   if (spec.simulation.time_step > 0) {
     if (rep.critical.chosen > 0 && spec.simulation.time_step > rep.critical.chosen) {
       std::ostringstream m;
-      m << spec.deck_path << ":" << deck_line_of(spec.deck_text, "time_step")
-        << ": key 'simulation.time_step': " << spec.simulation.time_step
+      const int line = deck_line_of(spec.deck_text, "time_step");
+      m << spec.deck_path << (line > 0 ? ":" + std::to_string(line) + ":" : std::string(": --set"))
+        << " key 'simulation.time_step': " << spec.simulation.time_step
         << " s exceeds the stable step " << rep.critical.chosen << " s (critical " << rep.critical.critical
         << " s times safety factor " << spec.simulation.safety_factor << "); a deck may only lower it";
       throw std::runtime_error(m.str());
@@ -116,6 +117,7 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
   }
 
   Simulation sim(std::move(blocks), spec.simulation, spec.joint, std::move(motion), rep.margin, dt);
+  sim.set_parallel_threshold(control.parallel_threshold);
 
   // Blocks must not overlap at the start beyond the tolerance.
   {

@@ -121,20 +121,13 @@ bool find_patch(const PosedBlock& a, const PosedBlock& b, double margin, int pre
   out.ref_side = ref_side;
 
   // 4. Edge-to-edge: no face separates as well as MPR says. One subcontact
-  // at the incident vertex nearest the MPR contact point, nominal area.
+  // with a nominal area on the MPR normal, acting at MPR's contact point
+  // (the middle of the overlap), moved half the overlap onto the incident
+  // block so that its gap starts at the MPR overlap.
   if (-best > mpr_overlap + 0.25 * margin + 1e-12) {
     const Vec3 n = (ref_side == 0 ? mpr_dir : Vec3(-mpr_dir)).normalized();
-    double off = -std::numeric_limits<double>::infinity();
-    for (const Vec3& v : ref_w) off = std::max(off, n.dot(v));
-    double lowest = std::numeric_limits<double>::infinity();
-    int arg = 0;
-    for (std::size_t k = 0; k < inc_w.size(); ++k) {
-      const double h = n.dot(inc_w[k]) + 1e-9 * (inc_w[k] - mpr_pos).norm();
-      if (h < lowest) {
-        lowest = h;
-        arg = static_cast<int>(k);
-      }
-    }
+    const Vec3 point = mpr_pos - (0.5 * mpr_overlap) * n;
+    const double off = n.dot(point) + mpr_overlap;
     const double la = std::cbrt(std::abs(mass_properties(*a.shape).volume));
     const double lb = std::cbrt(std::abs(mass_properties(*b.shape).volume));
     out.ref_face = -1;
@@ -142,8 +135,8 @@ bool find_patch(const PosedBlock& a, const PosedBlock& b, double margin, int pre
     out.normal = n;
     out.offset = off;
     out.area = 1e-2 * std::min(la, lb) * std::min(la, lb);
-    out.points.push_back({inc_w[arg], n.dot(inc_w[arg]) - off, out.area, 0x40000000u | static_cast<unsigned>(arg)});
-    return out.points.front().separation <= margin;
+    out.points.push_back({point, -mpr_overlap, out.area, 0x40000000u});
+    return mpr_overlap >= -margin;
   }
 
   // 3. Patch: clip the incident face by the reference face's side planes.

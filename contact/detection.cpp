@@ -89,7 +89,7 @@ bool ContactDetector::needs_detection(const Blocks& b) const {
   const auto& im = *impl_;
   double moved = 0;
   const int n = b.count;
-#pragma omp parallel for reduction(max : moved) schedule(static) if (n >= 256)
+#pragma omp parallel for reduction(max : moved) schedule(static) if (n >= 2048)
   for (int i = 0; i < n; ++i) {
     if (b.props.motion[i] == BlockMotion::fixed) continue;
     const Quat dq = b.state.orientation[i] * im.detected_orientation[i].conjugate();

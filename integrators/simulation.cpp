@@ -33,8 +33,29 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec
   position_prev_ = blocks_.state.position;
   orientation_prev_ = blocks_.state.orientation;
   load_work_.assign(n, 0.0);
-  // Kinematic blocks start with the base velocity at t = −dt/2 (zero).
   detect_contacts();
+  start_half_step_back();
+}
+
+// The deck gives velocities at t = 0; leapfrog keeps them at t − dt/2. Step
+// them back half a step with the forces at t = 0 (joint forces without a
+// shear increment, gravity, the ground motion), so that free flight from a
+// given velocity is the exact parabola and not half a step late.
+void Simulation::start_half_step_back() {
+  compute_joint_forces(law_, blocks_.state, contacts_.sub, 0.0, 0, contacts_.sub.size());
+  gather_block_forces();
+  auto& st = blocks_.state;
+  const auto& pr = blocks_.props;
+  const bool body_force = motion_.active() && motion_.applied_as == GroundMotionApplication::body_force;
+  const Vec3 a_ground = body_force ? Vec3(motion_.acceleration_at(0.0) * motion_.direction) : Vec3::Zero();
+  for (int i : blocks_.free_blocks) {
+    const double m = pr.mass[i];
+    const Vec3 force = m * sim_.gravity - m * a_ground + st.contact_force[i];
+    st.velocity[i] -= (0.5 * dt_ * pr.inv_mass[i]) * force;
+    st.angular_momentum[i] -= 0.5 * dt_ * st.contact_torque[i];
+    const Mat3& R = st.rotation[i];
+    st.angular_velocity[i] = R * pr.inv_principal_inertia[i].cwiseProduct(R.transpose() * st.angular_momentum[i]);
+  }
 }
 
 void Simulation::detect_contacts() {
@@ -43,9 +64,17 @@ void Simulation::detect_contacts() {
 
 void Simulation::step() {
   if (detector_.needs_detection(blocks_)) detect_contacts();
-  compute_joint_forces_parallel();
-  gather_block_forces();
-  update_free_blocks();
+  // One parallel region per step (a region costs more than a barrier); small
+  // scenes stay serial, where a parallel region costs more than it saves.
+  const bool parallel = contacts_.sub.size() >= parallel_threshold_ ||
+                        16 * blocks_.free_blocks.size() >= parallel_threshold_;
+#pragma omp parallel if (parallel)
+  {
+    compute_joint_forces_parallel();
+#pragma omp barrier
+    gather_block_forces();
+    update_free_blocks();
+  }
   move_kinematic_blocks();
   time_ += dt_;
   ++steps_;
@@ -53,16 +82,14 @@ void Simulation::step() {
 }
 
 void Simulation::compute_joint_forces_parallel() {
+  // Called inside the step's parallel region: each thread takes one
+  // contiguous block of subcontacts (a static partition).
   const std::size_t n = contacts_.sub.size();
-  // Small scenes: a parallel region costs more than it saves.
-#pragma omp parallel if (n >= 512)
-  {
-    const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
-    const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
-    const std::size_t chunk = (n + nt - 1) / nt;
-    const std::size_t begin = std::min(n, t * chunk), end = std::min(n, begin + chunk);
-    compute_joint_forces(law_, blocks_.state, contacts_.sub, dt_, begin, end);
-  }
+  const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
+  const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
+  const std::size_t chunk = (n + nt - 1) / nt;
+  const std::size_t begin = std::min(n, t * chunk), end = std::min(n, begin + chunk);
+  compute_joint_forces(law_, blocks_.state, contacts_.sub, dt_, begin, end);
 }
 
 void Simulation::gather_block_forces() {
@@ -72,7 +99,7 @@ void Simulation::gather_block_forces() {
   const auto& sign = contacts_.gather_sign;
   const auto& sub = contacts_.sub;
   auto& st = blocks_.state;
-#pragma omp parallel for schedule(static) if (n >= 128)
+#pragma omp for schedule(static)
   for (int i = 0; i < n; ++i) {
     Vec3 f = Vec3::Zero(), m = Vec3::Zero();
     const Vec3& x = st.position[i];
@@ -96,7 +123,7 @@ void Simulation::update_free_blocks() {
   const Vec3 a_ground = body_force ? Vec3(motion_.acceleration_at(time_) * motion_.direction) : Vec3::Zero();
   const int nf = static_cast<int>(blocks_.free_blocks.size());
   const int* free = blocks_.free_blocks.data();
-#pragma omp parallel for schedule(static) if (nf >= 128)
+#pragma omp for schedule(static)
   for (int k = 0; k < nf; ++k) {
     const int i = free[k];
     const double m = pr.mass[i];

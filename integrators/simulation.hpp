@@ -50,6 +50,12 @@ class Simulation {
   Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec& joint, GroundMotion motion, double margin,
              double dt);
 
+  // Steps with fewer subcontacts (and fewer free blocks than a sixteenth of
+  // this) run on one thread: below a few thousand subcontacts a step takes
+  // tens of microseconds and the threads' barriers cost more than they save,
+  // badly so on a loaded machine.
+  void set_parallel_threshold(std::size_t subcontacts) { parallel_threshold_ = subcontacts; }
+
   void step();
   double time() const { return time_; }
   double dt() const { return dt_; }
@@ -72,6 +78,7 @@ class Simulation {
 
  private:
   void detect_contacts();
+  void start_half_step_back();
   void compute_joint_forces_parallel();
   void gather_block_forces();
   void update_free_blocks();
@@ -85,6 +92,7 @@ class Simulation {
   ContactDetector detector_;
   ContactSet contacts_;
   bool bond_initial_;
+  std::size_t parallel_threshold_ = 2048;
   double dt_;
   double time_ = 0;
   long steps_ = 0;

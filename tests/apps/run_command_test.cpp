@@ -212,9 +212,6 @@ TEST_F(RunCommandTest, TimeStepFromAnOverrideIsRejectedNamingTheOverride) {
   EXPECT_EQ(run(kDeck, {"simulation.time_step=1e-3"}), exit_bad_input);
   EXPECT_NE(err_.find("simulation.time_step"), std::string::npos) << err_;
   expect_nothing_written();
-  GTEST_SKIP() << "BUG: a time_step above the critical step that comes from --set is reported as "
-                  "'<deck>:0: key 'simulation.time_step'' (line 0, no mention of --set), unlike every other "
-                  "override error (run_scene uses deck_line_of() without checking for 0)";
   // The deck has no time_step line: like every other override error, the
   // message names the override, not a line.
   EXPECT_EQ(err_.find(deck_.string() + ":0:"), std::string::npos) << err_;

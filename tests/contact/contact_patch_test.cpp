@@ -253,8 +253,6 @@ TEST(FindPatch, EdgeOnEdgeFallbackGivesOneSubcontact) {
 // Where the single fallback subcontact acts: at the ridges' crossing, the
 // only place the blocks touch. Anywhere else its force makes a spurious torque.
 TEST(FindPatch, EdgeOnEdgeFallbackActsAtTheCrossing) {
-  GTEST_SKIP() << "BUG: the edge-on-edge fallback puts its subcontact at an incident vertex (here 0.5 m from "
-                  "the ridges' crossing), so its force makes a spurious torque";
   CrossedRidges c;
   Patch patch;
   PatchScratch scratch;
