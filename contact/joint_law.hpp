@@ -35,6 +35,11 @@ JointLaw make_joint_law(const JointSpec& spec);
 void compute_joint_forces(const JointLaw& law, const BlockState& state, Subcontacts& sub, double dt,
                           std::size_t begin, std::size_t end);
 
+// The same for the subcontacts of pairs [pair_begin, pair_end): the hot path.
+// The pair's common plane and the two blocks' motion are loaded once.
+void compute_pair_forces(const JointLaw& law, const BlockState& state, const std::vector<ContactPair>& pairs,
+                         Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end);
+
 // Elastic strain energy stored in the joints, J.
 double joint_strain_energy(const JointLaw& law, const Subcontacts& sub);
 

@@ -24,7 +24,55 @@ void add_point(Mat6& K, const Mat3& D, const Vec3& r, double w) {
   K.block<3, 3>(3, 3) += w * X.transpose() * D * X;
 }
 
+// Largest ω² of one block's 6×6 stiffness K against its mass and inertia.
+double block_omega_squared(const Blocks& b, int i, const Mat6& K) {
+  Eigen::Matrix<double, 6, 1> inv_sqrt_m;
+  const double m = b.props.mass[i];
+  const Vec3& I = b.props.principal_inertia[i];
+  inv_sqrt_m << 1 / std::sqrt(m), 1 / std::sqrt(m), 1 / std::sqrt(m), 1 / std::sqrt(I.x()), 1 / std::sqrt(I.y()),
+      1 / std::sqrt(I.z());
+  const Mat6 Kn = inv_sqrt_m.asDiagonal() * K * inv_sqrt_m.asDiagonal();
+  Eigen::SelfAdjointEigenSolver<Mat6> eig(Kn, Eigen::EigenvaluesOnly);
+  return std::max(0.0, eig.eigenvalues().maxCoeff());
+}
+
+void finish(CriticalStep& out, const JointSpec& joint, double safety_factor) {
+  if (out.omega_max <= 0) return;
+  const double xi = 0.5 * joint.damping * out.omega_max;
+  out.damping_ratio = xi;
+  out.critical = (2.0 / out.omega_max) * (std::sqrt(1.0 + xi * xi) - xi);
+  out.chosen = safety_factor * out.critical;
+}
+
 }  // namespace
+
+CriticalStep critical_time_step_from_contacts(const Blocks& b, const ContactSet& contacts, const JointSpec& joint,
+                                              double safety_factor) {
+  CriticalStep out;
+  const double kn = joint.normal_stiffness, ks = joint.shear_stiffness;
+  const auto& sub = contacts.sub;
+  for (int i : b.free_blocks) {
+    Mat6 K = Mat6::Zero();
+    const int first = contacts.gather_offset[i], last = contacts.gather_offset[i + 1];
+    if (first == last) continue;
+    // Body frame: the inertia is diagonal there.
+    const Mat3& R = b.state.rotation[i];
+    for (int k = first; k < last; ++k) {
+      const int s = contacts.gather_sub[k];
+      const Vec3 n = R.transpose() * (b.state.rotation[sub.ref_block[s]] * sub.ref_normal_local[s]);
+      const Vec3 r = R.transpose() * (sub.point[s] - b.state.position[i]);
+      const Mat3 D = sub.area[s] * (kn * n * n.transpose() + ks * (Mat3::Identity() - n * n.transpose()));
+      add_point(K, D, r, 1.0);
+    }
+    const double w = std::sqrt(2.0 * block_omega_squared(b, i, K));
+    if (w > out.omega_max) {
+      out.omega_max = w;
+      out.governing_block = i;
+    }
+  }
+  finish(out, joint, safety_factor);
+  return out;
+}
 
 CriticalStep critical_time_step(const Blocks& b, const JointSpec& joint, double safety_factor) {
   CriticalStep out;
@@ -59,24 +107,13 @@ CriticalStep critical_time_step(const Blocks& b, const JointSpec& joint, double 
         K += part;
       }
     }
-    Eigen::Matrix<double, 6, 1> inv_sqrt_m;
-    const double m = b.props.mass[i];
-    const Vec3& I = b.props.principal_inertia[i];
-    inv_sqrt_m << 1 / std::sqrt(m), 1 / std::sqrt(m), 1 / std::sqrt(m), 1 / std::sqrt(I.x()), 1 / std::sqrt(I.y()),
-        1 / std::sqrt(I.z());
-    const Mat6 Kn = inv_sqrt_m.asDiagonal() * K * inv_sqrt_m.asDiagonal();
-    Eigen::SelfAdjointEigenSolver<Mat6> eig(Kn, Eigen::EigenvaluesOnly);
-    const double w = std::sqrt(2.0 * std::max(0.0, eig.eigenvalues().maxCoeff()));
+    const double w = std::sqrt(2.0 * block_omega_squared(b, i, K));
     if (w > out.omega_max) {
       out.omega_max = w;
       out.governing_block = i;
     }
   }
-  if (out.omega_max <= 0) return out;
-  const double xi = 0.5 * joint.damping * out.omega_max;
-  out.damping_ratio = xi;
-  out.critical = (2.0 / out.omega_max) * (std::sqrt(1.0 + xi * xi) - xi);
-  out.chosen = safety_factor * out.critical;
+  finish(out, joint, safety_factor);
   return out;
 }
 

@@ -13,6 +13,7 @@
 // is that times the safety factor.
 #pragma once
 
+#include "contact/subcontacts.hpp"
 #include "core/blocks.hpp"
 #include "core/scene_spec.hpp"
 
@@ -27,5 +28,16 @@ struct CriticalStep {
 };
 
 CriticalStep critical_time_step(const Blocks& blocks, const JointSpec& joint, double safety_factor);
+
+// The same bound from the joints a block actually has: the subcontacts of
+// the current detection (closed or still open within the margin, so every
+// joint that can close before the next detection is counted), each a spring
+// kn·A normal and ks·A tangential at its point. This is the stiffness of the
+// discrete model itself (corner subcontacts included), usually well below the
+// all-faces bound: spire stones never touch on their outer and inner faces.
+// Blocks without subcontacts do not constrain it (they are in flight; a new
+// joint is detected before it closes).
+CriticalStep critical_time_step_from_contacts(const Blocks& blocks, const ContactSet& contacts, const JointSpec& joint,
+                                              double safety_factor);
 
 }  // namespace polydem
