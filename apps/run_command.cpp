@@ -33,6 +33,8 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   s.set("end_time_s", r.end_time);
   s.set("steps", r.steps);
   s.set("time_step_s", r.time_step);
+  s.set("initial_time_step_s", r.initial_time_step);
+  s.set("time_step_reductions", r.time_step_reductions);
   s.set("critical_time_step_s", r.critical.critical);
   s.set("highest_frequency_rad_s", r.critical.omega_max);
   s.set("damping_ratio_at_highest_frequency", r.critical.damping_ratio);

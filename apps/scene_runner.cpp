@@ -118,6 +118,7 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
 
   Simulation sim(std::move(blocks), spec.simulation, spec.joint, std::move(motion), rep.margin, dt);
   sim.set_parallel_threshold(control.parallel_threshold);
+  rep.initial_time_step = sim.dt();
 
   // Blocks must not overlap at the start beyond the tolerance.
   {
@@ -221,6 +222,8 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
   if (spec.output.energies) record();  // the final state is always in the ledger
 
   rep.steps = sim.steps();
+  rep.time_step = sim.dt();
+  rep.time_step_reductions = sim.time_step_reductions();
   rep.end_time = sim.time();
   rep.detections = sim.contacts().detections;
   rep.energy = sim.energies();

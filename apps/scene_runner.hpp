@@ -32,7 +32,9 @@ struct RunReport {
   std::string status;  // "completed" or "settled"
   long steps = 0;
   double end_time = 0;
-  double time_step = 0;
+  double time_step = 0;          // s, at the end of the run
+  double initial_time_step = 0;  // s, at the start
+  int time_step_reductions = 0;
   CriticalStep critical;
   double margin = 0;
   double wall_seconds = 0;

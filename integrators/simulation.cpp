@@ -29,11 +29,13 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec
                        double margin, double dt)
     : blocks_(std::move(blocks)),
       sim_(sim),
+      joint_(joint),
       law_(make_joint_law(joint)),
       motion_(std::move(motion)),
       detector_(blocks_, margin),
       bond_initial_(joint.cohesion > 0 || joint.tensile_strength > 0),
-      dt_(dt) {
+      dt_(dt),
+      dt_prev_(dt) {
   const int n = blocks_.count;
   velocity_mid_ = blocks_.state.velocity;
   omega_mid_ = blocks_.state.angular_velocity;
@@ -41,6 +43,7 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec
   orientation_prev_ = blocks_.state.orientation;
   load_work_.assign(n, 0.0);
   detect_contacts();
+  dt_prev_ = dt_;
   start_half_step_back();
 }
 
@@ -65,8 +68,17 @@ void Simulation::start_half_step_back() {
   }
 }
 
+// After each detection the step is checked against the joints just found
+// (closed or within the margin): if they allow less, the step is lowered
+// for the rest of the run. Leapfrog carries the change exactly (the velocity
+// update spans the mean of the old and new steps).
 void Simulation::detect_contacts() {
   detector_.detect(blocks_, contacts_, bond_initial_ && contacts_.detections == 0);
+  const CriticalStep c = critical_time_step_from_contacts(blocks_, contacts_, joint_, sim_.safety_factor);
+  if (c.chosen > 0 && c.chosen < dt_) {
+    dt_ = c.chosen;
+    ++dt_reductions_;
+  }
 }
 
 void Simulation::step() {
@@ -84,6 +96,7 @@ void Simulation::step() {
   }
   move_kinematic_blocks();
   time_ += dt_;
+  dt_prev_ = dt_;
   ++steps_;
   if (steps_ % 256 == 0) check_finite();
 }
@@ -125,6 +138,7 @@ void Simulation::update_free_blocks() {
   auto& st = blocks_.state;
   const auto& pr = blocks_.props;
   const double dt = dt_;
+  const double dv_dt = 0.5 * (dt_prev_ + dt_);  // span of the velocity update
   const Vec3 g = sim_.gravity;
   const bool body_force = motion_.active() && motion_.applied_as == GroundMotionApplication::body_force;
   const Vec3 a_ground = body_force ? Vec3(motion_.acceleration_at(time_) * motion_.direction) : Vec3::Zero();
@@ -137,8 +151,8 @@ void Simulation::update_free_blocks() {
     const Vec3 load = -m * a_ground;  // inertial force of the moving base frame
     const Vec3 force = m * g + load + st.contact_force[i];
     const Vec3 v_old = st.velocity[i];
-    const Vec3 v_new = v_old + (dt * pr.inv_mass[i]) * force;
-    const Vec3 L_new = st.angular_momentum[i] + dt * st.contact_torque[i];
+    const Vec3 v_new = v_old + (dv_dt * pr.inv_mass[i]) * force;
+    const Vec3 L_new = st.angular_momentum[i] + dv_dt * st.contact_torque[i];
     const Vec3& inv_I = pr.inv_principal_inertia[i];
     // ω at the half step: predict the half-step orientation, then evaluate.
     const Mat3& R0 = st.rotation[i];

@@ -59,6 +59,9 @@ class Simulation {
   void step();
   double time() const { return time_; }
   double dt() const { return dt_; }
+  // Times the step was lowered because a detection found joints stiffer
+  // than the step allowed (see critical_time_step_from_contacts).
+  int time_step_reductions() const { return dt_reductions_; }
   long steps() const { return steps_; }
 
   const Blocks& blocks() const { return blocks_; }
@@ -87,6 +90,7 @@ class Simulation {
 
   Blocks blocks_;
   SimulationSpec sim_;
+  JointSpec joint_;
   JointLaw law_;
   GroundMotion motion_;
   ContactDetector detector_;
@@ -94,6 +98,8 @@ class Simulation {
   bool bond_initial_;
   std::size_t parallel_threshold_ = 2048;
   double dt_;
+  double dt_prev_;  // the step before: leapfrog with a changing step
+  int dt_reductions_ = 0;
   double time_ = 0;
   long steps_ = 0;
   // Per-block ledger terms and mid-step kinematics (for the energy ledger).
