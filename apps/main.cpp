@@ -1,5 +1,6 @@
 // polydem: the command line. Subcommands: run, analytic, mesh.
 #include "apps/analytic_command.hpp"
+#include "apps/collapse_command.hpp"
 #include "apps/mesh_command.hpp"
 #include "apps/run_command.hpp"
 
@@ -21,6 +22,24 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--set", run.overrides, "Override a deck key: section.key=value (repeatable)");
   run_cmd->add_flag("--quiet", run.quiet, "No progress or report on stderr");
 
+  polydem::CollapseOptions col;
+  auto* collapse_cmd = app.add_subcommand("collapse", "Collapse acceleration under a constant horizontal acceleration");
+  collapse_cmd->add_option("deck", col.deck_path, "Deck file (TOML)");
+  collapse_cmd->add_flag("--default", col.use_default, "Use the built-in default deck");
+  collapse_cmd->add_option("--out", col.out_dir, "Output directory")->capture_default_str();
+  collapse_cmd->add_option("--direction", col.directions_deg, "Azimuth of the ground motion, degrees (repeatable)");
+  collapse_cmd->add_option("--method", col.method, "bisection | ramp | both")
+      ->check(CLI::IsMember({"bisection", "ramp", "both"}))->capture_default_str();
+  collapse_cmd->add_option("--low", col.low_g, "Lower end of the bracket, g")->capture_default_str();
+  collapse_cmd->add_option("--high", col.high_g, "Upper end of the bracket, g")->capture_default_str();
+  collapse_cmd->add_option("--tolerance", col.tolerance_g, "Bracket width to stop at, g")->capture_default_str();
+  collapse_cmd->add_option("--rise-time", col.rise_time, "Rise of each constant acceleration, s")->capture_default_str();
+  collapse_cmd->add_option("--hold-time", col.hold_time, "Hold after the rise, s")->capture_default_str();
+  collapse_cmd->add_option("--ramp-rate", col.ramp_rate_g, "Ramp rate, g/s")->capture_default_str();
+  collapse_cmd->add_option("--threads", col.threads, "OpenMP threads");
+  collapse_cmd->add_option("--set", col.overrides, "Override a deck key (repeatable)");
+  collapse_cmd->add_flag("--quiet", col.quiet, "No per-run lines on stderr");
+
   auto* analytic_cmd = app.add_subcommand("analytic", "Analytical models of the paper (polydem analytic --help)");
   analytic_cmd->prefix_command();  // everything after `analytic` goes to the model's own parser
   analytic_cmd->set_help_flag();
@@ -38,6 +57,13 @@ int main(int argc, char** argv) {
   }
   if (analytic_cmd->parsed()) return run_analytic_command(analytic_cmd->remaining());
   if (mesh_cmd->parsed()) return polydem::mesh_command(mesh);
+  if (collapse_cmd->parsed()) {
+    if (col.deck_path.empty() && !col.use_default) {
+      std::cerr << "polydem collapse: give a deck file or --default\n";
+      return polydem::exit_bad_input;
+    }
+    return polydem::collapse_command(col);
+  }
   if (run_cmd->parsed()) {
     if (run.deck_path.empty() && !run.use_default) {
       std::cerr << "polydem run: give a deck file or --default\n";

@@ -138,6 +138,7 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
     }
   }
 
+  AssessmentMonitor assessment(spec.assessment, sim);
   std::vector<std::unique_ptr<CheckMonitor>> monitors;
   for (const CheckSpec& c : spec.checks) monitors.push_back(make_check(c, spec, sim));
 
@@ -195,11 +196,12 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
 
   const double end = spec.simulation.end_time;
   double quiet_since = -1;
-  rep.status = "completed";
   while (sim.time() < end - 0.5 * sim.dt()) {
     sim.step();
     rep.subcontact_updates += static_cast<long>(sim.contacts().sub.size());
     for (auto& m : monitors) m->observe(sim);
+    assessment.observe(sim);
+    if (spec.assessment.stop_on_collapse && assessment.collapsed()) break;
     if (sim.time() - sim.dt() >= next_record - 1e-12 * end) {
       record();
       next_record += interval > 0 ? interval : 0.0;
@@ -211,7 +213,7 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
       if (vmax < spec.simulation.settle_velocity) {
         if (quiet_since < 0) quiet_since = sim.time();
         if (sim.time() - quiet_since >= spec.simulation.settle_time) {
-          rep.status = "settled";
+          rep.settled = true;
           break;
         }
       } else {
@@ -221,6 +223,8 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
   }
   if (spec.output.energies) record();  // the final state is always in the ledger
 
+  rep.assessment = assessment.finish(sim);
+  rep.status = rep.assessment.status;
   rep.steps = sim.steps();
   rep.time_step = sim.dt();
   rep.time_step_reductions = sim.time_step_reductions();

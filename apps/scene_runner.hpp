@@ -3,6 +3,7 @@
 // deck's verification checks. No files here: run_command writes them.
 #pragma once
 
+#include "apps/assessment.hpp"
 #include "core/scene_spec.hpp"
 #include "integrators/simulation.hpp"
 
@@ -29,7 +30,9 @@ struct HistoryTable {
 };
 
 struct RunReport {
-  std::string status;  // "completed" or "settled"
+  std::string status;  // "intact", "damaged" or "collapsed" (see assessment)
+  bool settled = false;  // stopped early: every block at rest (simulation.settle_*)
+  Assessment assessment;
   long steps = 0;
   double end_time = 0;
   double time_step = 0;          // s, at the end of the run

@@ -21,7 +21,7 @@ double GroundMotion::acceleration_at(double t) const {
   if (s < 0) return 0.0;
   switch (kind) {
     case GroundMotionKind::none: return 0.0;
-    case GroundMotionKind::constant: return acceleration;
+    case GroundMotionKind::constant: return s < rise_time ? acceleration * s / rise_time : acceleration;
     case GroundMotionKind::ramp: return rate * s;
     case GroundMotionKind::sine_pulse:
       return s <= period ? acceleration * std::sin(2.0 * std::numbers::pi * s / period) : 0.0;
@@ -41,7 +41,8 @@ double GroundMotion::velocity_at(double t) const {
   if (s < 0) return 0.0;
   switch (kind) {
     case GroundMotionKind::none: return 0.0;
-    case GroundMotionKind::constant: return acceleration * s;
+    case GroundMotionKind::constant:
+      return s < rise_time ? 0.5 * acceleration * s * s / rise_time : acceleration * (s - 0.5 * rise_time);
     case GroundMotionKind::ramp: return 0.5 * rate * s * s;
     case GroundMotionKind::sine_pulse: {
       const double w = 2.0 * std::numbers::pi / period;
@@ -71,6 +72,7 @@ GroundMotion make_ground_motion(const GroundMotionSpec& spec, std::vector<double
   g.acceleration = spec.acceleration;
   g.rate = spec.rate;
   g.period = spec.period;
+  g.rise_time = spec.rise_time;
   if (spec.kind == GroundMotionKind::record) {
     g.record_time = std::move(record_time);
     g.record_acceleration = std::move(record_acceleration);

@@ -17,7 +17,7 @@ struct GroundMotion {
   GroundMotionKind kind = GroundMotionKind::none;
   GroundMotionApplication applied_as = GroundMotionApplication::body_force;
   Vec3 direction{1, 0, 0};
-  double start_time = 0, acceleration = 0, rate = 0, period = 1;
+  double start_time = 0, acceleration = 0, rate = 0, period = 1, rise_time = 0;
   // Record samples (m/s²) at record_time (s, increasing), and the velocity
   // at each sample by the trapezoidal rule so that v_g is the exact integral
   // of the piecewise-linear acceleration.

@@ -67,6 +67,7 @@ struct GroundMotionSpec {
   Vec3 direction{1.0, 0.0, 0.0};  // unit, horizontal
   double start_time = 0.0;        // s: zero before
   double acceleration = 0.0;      // m/s²: constant value, or pulse amplitude a_p
+  double rise_time = 0.0;         // s: a constant acceleration rises linearly over this time, then holds
   double rate = 0.0;              // m/s³: ramp a = rate·(t - start_time)
   double period = 1.0;            // s: one-sine pulse a_p·sin(2π(t-t0)/T_p) for 0 ≤ t-t0 ≤ T_p
   std::string record_path;        // record file (PEER .AT2 or two-column CSV), resolved relative to the deck
@@ -83,6 +84,21 @@ struct OutputSpec {
   double history_interval = 0.0;  // s; 0 = every step
   std::vector<HistorySpec> histories;
   bool energies = true;
+};
+
+// [assessment] : how a run is judged. A free block whose centroid ends more
+// than damage_displacement from where it started is visible damage; one that
+// moves more than collapse_displacement at any time means collapse. The
+// monitor block (default: the highest free block, the spire's tip) gives the
+// collapse mode: Mode I if its horizontal displacement along the ground
+// motion changed sign before collapse (it rocked back and impacted), Mode II
+// if not (Zhang & Makris 2001, paper section 3.3).
+struct AssessmentSpec {
+  double damage_displacement = 0.005;  // m
+  double collapse_displacement = 0.1;  // m
+  bool stop_on_collapse = false;
+  std::string monitor_block;           // empty: the highest free block
+  int deck_line = 0;
 };
 
 // [[check]] : a verification check evaluated after the run.
@@ -107,6 +123,7 @@ struct SceneSpec {
   std::optional<SpireSpec> spire;  // [spire], when the deck has one (its blocks are in `blocks`)
   GroundMotionSpec ground_motion;
   OutputSpec output;
+  AssessmentSpec assessment;
   std::vector<CheckSpec> checks;
 };
 

@@ -41,8 +41,11 @@ constexpr std::string_view kBlockKeys[] = {"name",     "shape",    "size",   "ce
                                            "motion",   "velocity", "angular_velocity", "course"};
 constexpr std::string_view kGroundMotionKeys[] = {"kind",           "applied_as", "direction", "start_time",
                                                   "acceleration",   "acceleration_g", "rate",  "rate_g",
-                                                  "period",         "record",         "scale"};
+                                                  "period",         "record",         "scale",
+                                                  "rise_time"};
 constexpr std::string_view kOutputKeys[] = {"history_interval", "histories", "energies"};
+constexpr std::string_view kAssessmentKeys[] = {"damage_displacement", "collapse_displacement", "stop_on_collapse",
+                                                "monitor_block"};
 constexpr std::string_view kCheckKeys[] = {"kind", "block", "expected", "tolerance"};
 constexpr std::string_view kSpireKeys[] = {
     "height",           "base_inradius",         "wall_thickness",      "wall_thickness_top",
@@ -61,6 +64,7 @@ constexpr SectionSchema kSections[] = {
     {"simulation", false, kSimulationKeys}, {"joint", false, kJointKeys},
     {"block", true, kBlockKeys},            {"ground_motion", false, kGroundMotionKeys},
     {"output", false, kOutputKeys},         {"check", true, kCheckKeys},
+    {"assessment", false, kAssessmentKeys},
     {"spire", false, kSpireKeys},
 };
 
@@ -652,6 +656,7 @@ GroundMotionSpec read_ground_motion(const Deck& deck) {
   g.acceleration = acceleration.value_or(g.acceleration);
   g.rate = rate.value_or(g.rate);
   g.period = r.number("period", g.period, Range::positive);
+  g.rise_time = r.number("rise_time", g.rise_time, Range::non_negative);
   g.scale = r.number("scale", g.scale, Range::any);
   const auto record = r.string("record");
 
@@ -712,6 +717,22 @@ OutputSpec read_output(const Deck& deck, const std::vector<BlockSpec>& blocks) {
     }
   }
   return o;
+}
+
+AssessmentSpec read_assessment(const Deck& deck, const std::vector<BlockSpec>& blocks) {
+  const TableReader r(deck, table_or_empty(deck, "assessment"), "assessment", kAssessmentKeys);
+  AssessmentSpec a;
+  a.damage_displacement = r.number("damage_displacement", a.damage_displacement, Range::positive);
+  a.collapse_displacement = r.number("collapse_displacement", a.collapse_displacement, Range::positive);
+  if (a.collapse_displacement <= a.damage_displacement)
+    r.fail("collapse_displacement", "must be larger than damage_displacement (" +
+                                        std::to_string(a.damage_displacement) + " m)");
+  a.stop_on_collapse = r.boolean("stop_on_collapse").value_or(a.stop_on_collapse);
+  a.monitor_block = r.string("monitor_block").value_or("");
+  if (!a.monitor_block.empty() &&
+      std::none_of(blocks.begin(), blocks.end(), [&](const BlockSpec& b) { return b.name == a.monitor_block; }))
+    r.fail("monitor_block", "no block named " + in_quotes(a.monitor_block));
+  return a;
 }
 
 std::vector<CheckSpec> read_checks(const Deck& deck, const std::vector<BlockSpec>& blocks) {
@@ -891,6 +912,7 @@ SceneSpec parse_deck(const std::string& text, const std::string& path_for_messag
   }
   scene.ground_motion = read_ground_motion(deck);
   scene.output = read_output(deck, scene.blocks);
+  scene.assessment = read_assessment(deck, scene.blocks);
   scene.checks = read_checks(deck, scene.blocks);
   return scene;
 }

@@ -1,0 +1,57 @@
+// Judging a run the way the paper does (section 3): intact, damaged
+// (visible residual displacement) or collapsed, the collapse mode (I after an
+// impact, II without; Zhang & Makris 2001), and the crack: which blocks moved
+// and the angle of the surface that separates them from the rest.
+#pragma once
+
+#include "core/scene_spec.hpp"
+#include "integrators/simulation.hpp"
+
+#include <string>
+#include <vector>
+
+namespace polydem {
+
+struct Assessment {
+  std::string status = "intact";  // intact | damaged | collapsed
+  std::string collapse_mode;      // "I", "II" or "" (not collapsed)
+  double collapse_time = -1;      // s, first time a block moved collapse_displacement
+  double damage_time = -1;        // s, first time a block moved damage_displacement
+  double ground_acceleration_at_damage = 0;  // m/s², a_g at damage_time (onset under a ramp)
+  double max_displacement = 0;    // m, largest displacement of any free block during the run
+  std::string max_displacement_block;
+  double max_residual_displacement = 0;  // m, at the end
+  std::string monitor_block;
+  // The crack: blocks that had moved more than damage_displacement when the
+  // run collapsed (or at the end), and the angle from horizontal of the line
+  // through the lowest moved block of each of eight sectors around the
+  // vertical axis, in the plane of the ground motion (degrees).
+  std::vector<std::string> moved_blocks;
+  double crack_angle_deg = -1;
+  double crack_low_z = 0, crack_high_z = 0;  // m, lowest moved block on the trailing/leading side
+};
+
+class AssessmentMonitor {
+ public:
+  AssessmentMonitor(const AssessmentSpec& spec, const Simulation& sim);
+  void observe(const Simulation& sim);  // cheap: samples every 16th step
+  bool collapsed() const { return collapsed_; }
+  Assessment finish(const Simulation& sim);
+
+ private:
+  Vec3 displacement(const Simulation& sim, int i) const;
+  void record_crack(const Simulation& sim);
+
+  AssessmentSpec spec_;
+  Vec3 direction_;
+  int monitor_ = -1;
+  int reference_ = -1;  // a kinematic base block: displacements are relative to it
+  Vec3 reference_start_ = Vec3::Zero();
+  std::vector<Vec3> start_;
+  bool collapsed_ = false;
+  int first_sign_ = 0;
+  bool reversed_ = false;
+  Assessment result_;
+};
+
+}  // namespace polydem
