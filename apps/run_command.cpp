@@ -43,6 +43,16 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   as.set("crack_lowest_z_m", a.crack_angle_deg >= 0 ? Json(a.crack_low_z) : Json());
   as.set("crack_highest_z_m", a.crack_angle_deg >= 0 ? Json(a.crack_high_z) : Json());
   s.set("assessment", std::move(as));
+  if (!r.walking.bed_joint.empty() || !r.walking.vertical_joint.empty()) {
+    Json w = Json::object();
+    w.set("residual_bed_opening_m", r.walking.bed_opening);
+    w.set("residual_bed_joint", r.walking.bed_joint);
+    w.set("residual_vertical_opening_m", r.walking.vertical_opening);
+    w.set("residual_vertical_joint", r.walking.vertical_joint);
+    w.set("max_bed_opening_m", r.walking.max_bed_opening);
+    w.set("max_vertical_opening_m", r.walking.max_vertical_opening);
+    s.set("walking", std::move(w));
+  }
   s.set("checks_passed", r.all_checks_passed());
   s.set("end_time_s", r.end_time);
   s.set("steps", r.steps);

@@ -69,6 +69,34 @@ const char* unit_of(const std::string& q) {
   return "-";
 }
 
+// The largest opening of the joints between blocks, split into bed joints
+// (normal within 45° of vertical) and vertical joints. A joint's opening is
+// the largest gap among its subcontacts (negative when it is closed).
+struct Openings {
+  double bed = 0, vertical = 0;
+  int bed_pair = -1, vertical_pair = -1;
+};
+Openings joint_openings(const Simulation& sim, const Vec3& up) {
+  Openings o;
+  const ContactSet& c = sim.contacts();
+  const auto& st = sim.blocks().state;
+  for (std::size_t q = 0; q < c.pairs.size(); ++q) {
+    const ContactPair& p = c.pairs[q];
+    if (p.count == 0) continue;
+    double gap = -std::numeric_limits<double>::infinity();
+    for (int s = p.first; s < p.first + p.count; ++s) gap = std::max(gap, -c.sub.overlap[s]);
+    const Vec3 n = st.rotation[p.ref_block] * c.sub.ref_normal_local[p.first];
+    const bool bed = std::abs(n.dot(up)) > std::sqrt(0.5);
+    double& best = bed ? o.bed : o.vertical;
+    int& which = bed ? o.bed_pair : o.vertical_pair;
+    if (gap > best) {
+      best = gap;
+      which = static_cast<int>(q);
+    }
+  }
+  return o;
+}
+
 double automatic_margin(const Blocks& b) {
   double smallest = std::numeric_limits<double>::infinity();
   for (int i = 0; i < b.count; ++i)
@@ -155,7 +183,15 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
       rep.histories.units.push_back(unit_of(h.quantity));
     }
   }
-  const bool ground_channel = sim.ground_motion().active() && !channels.empty();
+  const bool walking = spec.output.walking;
+  const Vec3 up = spec.simulation.gravity.norm() > 0 ? Vec3(-spec.simulation.gravity.normalized()) : Vec3(0, 0, 1);
+  const bool ground_channel = sim.ground_motion().active() && (!channels.empty() || walking);
+  if (walking) {
+    for (const char* c : {"walking.bed_opening", "walking.vertical_opening"}) {
+      rep.histories.columns.push_back(c);
+      rep.histories.units.push_back("m");
+    }
+  }
   if (ground_channel) {
     rep.histories.columns.push_back("ground.acceleration");
     rep.histories.units.push_back("m/s^2");
@@ -167,7 +203,8 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
   const double interval = spec.output.history_interval;
   const long expected_rows = interval > 0 ? static_cast<long>(spec.simulation.end_time / interval) + 2
                                           : static_cast<long>(spec.simulation.end_time / dt) + 2;
-  if (!channels.empty()) rep.histories.rows.reserve(expected_rows * rep.histories.columns.size());
+  const bool any_history = !channels.empty() || walking;
+  if (any_history) rep.histories.rows.reserve(expected_rows * rep.histories.columns.size());
   if (spec.output.energies) rep.energies.rows.reserve(expected_rows * rep.energies.columns.size());
 
   double next_record = 0.0;
@@ -175,9 +212,16 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
   bool first_energy = true;
   auto record = [&]() {
     const double t = std::max(0.0, sim.time() - sim.dt());  // force time
-    if (!channels.empty()) {
+    if (any_history) {
       rep.histories.rows.push_back(t);
       for (const Channel& c : channels) append_channel(sim, c, rep.histories.rows);
+      if (walking) {
+        const Openings o = joint_openings(sim, up);
+        rep.histories.rows.push_back(o.bed);
+        rep.histories.rows.push_back(o.vertical);
+        rep.walking.max_bed_opening = std::max(rep.walking.max_bed_opening, o.bed);
+        rep.walking.max_vertical_opening = std::max(rep.walking.max_vertical_opening, o.vertical);
+      }
       if (ground_channel) rep.histories.rows.push_back(sim.ground_motion().acceleration_at(t));
     }
     if (spec.output.energies) {
@@ -223,6 +267,18 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
   }
   if (spec.output.energies) record();  // the final state is always in the ledger
 
+  if (walking) {
+    const Openings o = joint_openings(sim, up);
+    auto name = [&](int q) {
+      if (q < 0) return std::string();
+      const ContactPair& p = sim.contacts().pairs[q];
+      return sim.blocks().props.name[p.a] + "|" + sim.blocks().props.name[p.b];
+    };
+    rep.walking.bed_opening = o.bed;
+    rep.walking.vertical_opening = o.vertical;
+    rep.walking.bed_joint = name(o.bed_pair);
+    rep.walking.vertical_joint = name(o.vertical_pair);
+  }
   rep.assessment = assessment.finish(sim);
   rep.status = rep.assessment.status;
   rep.steps = sim.steps();

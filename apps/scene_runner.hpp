@@ -47,6 +47,14 @@ struct RunReport {
   EnergyLedger energy;
   double energy_balance_error = 0;  // max |balance − balance(0)| / reference energy
   double energy_reference = 0;      // J
+  // Walking (output.walking): largest opening of bed joints (normal within
+  // 45° of vertical) and of vertical joints, at the end and the largest seen.
+  struct Walking {
+    double bed_opening = 0, vertical_opening = 0;          // m, at the end
+    double max_bed_opening = 0, max_vertical_opening = 0;  // m, during the run
+    std::string bed_joint, vertical_joint;                 // "blockA|blockB" at the end
+  };
+  Walking walking;
   HistoryTable histories;
   HistoryTable energies;
   std::vector<CheckResult> checks;

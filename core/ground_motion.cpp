@@ -62,6 +62,36 @@ double GroundMotion::velocity_at(double t) const {
   return 0.0;
 }
 
+std::vector<double> oscillator_absolute_acceleration(const std::vector<double>& time,
+                                                     const std::vector<double>& ag, double f_hz, double zeta) {
+  const double w = 2.0 * std::numbers::pi * f_hz;
+  std::vector<double> out(ag.size(), 0.0);
+  if (ag.empty()) return out;
+  // Relative displacement u, velocity v, acceleration a of the oscillator:
+  // a + 2ζω v + ω² u = −a_g; the absolute acceleration is a + a_g = −2ζω v − ω² u.
+  double u = 0, v = 0, a = -ag[0];
+  out[0] = -2 * zeta * w * v - w * w * u;
+  constexpr int kSub = 20;
+  for (std::size_t k = 1; k < ag.size(); ++k) {
+    const double h = (time[k] - time[k - 1]) / kSub;
+    const double keff = w * w + 2 * zeta * w * 2 / h + 4 / (h * h);
+    for (int j = 1; j <= kSub; ++j) {
+      const double x = static_cast<double>(j) / kSub;
+      const double p = -((1 - x) * ag[k - 1] + x * ag[k]);
+      // Newmark β = 1/4, γ = 1/2, solved for the new displacement.
+      const double rhs = p + (4 / (h * h)) * u + (4 / h) * v + a + 2 * zeta * w * ((2 / h) * u + v);
+      const double u1 = rhs / keff;
+      const double v1 = (2 / h) * (u1 - u) - v;
+      const double a1 = (4 / (h * h)) * (u1 - u) - (4 / h) * v - a;
+      u = u1;
+      v = v1;
+      a = a1;
+    }
+    out[k] = -2 * zeta * w * v - w * w * u;
+  }
+  return out;
+}
+
 GroundMotion make_ground_motion(const GroundMotionSpec& spec, std::vector<double> record_time,
                                 std::vector<double> record_acceleration) {
   GroundMotion g;
@@ -77,6 +107,9 @@ GroundMotion make_ground_motion(const GroundMotionSpec& spec, std::vector<double
     g.record_time = std::move(record_time);
     g.record_acceleration = std::move(record_acceleration);
     for (double& a : g.record_acceleration) a *= spec.scale;
+    if (spec.tower_frequency > 0)
+      g.record_acceleration =
+          oscillator_absolute_acceleration(g.record_time, g.record_acceleration, spec.tower_frequency, spec.tower_damping);
     g.record_velocity.assign(g.record_time.size(), 0.0);
     for (std::size_t k = 1; k < g.record_time.size(); ++k)
       g.record_velocity[k] = g.record_velocity[k - 1] + 0.5 * (g.record_acceleration[k - 1] + g.record_acceleration[k]) *

@@ -72,6 +72,11 @@ struct GroundMotionSpec {
   double period = 1.0;            // s: one-sine pulse a_p·sin(2π(t-t0)/T_p) for 0 ≤ t-t0 ≤ T_p
   std::string record_path;        // record file (PEER .AT2 or two-column CSV), resolved relative to the deck
   double scale = 1.0;             // record multiplier
+  // The supporting tower's fundamental mode as a linear filter (paper 3.4):
+  // the record drives a damped oscillator of this frequency and its absolute
+  // acceleration is the motion at the spire's base. 0 = no filter.
+  double tower_frequency = 0.0;   // Hz
+  double tower_damping = 0.05;    // damping ratio
   int deck_line = 0;
 };
 
@@ -84,6 +89,9 @@ struct OutputSpec {
   double history_interval = 0.0;  // s; 0 = every step
   std::vector<HistorySpec> histories;
   bool energies = true;
+  // Histories of the largest joint openings (bed and vertical joints): the
+  // stones' "walking" under an earthquake (paper 3.4).
+  bool walking = false;
 };
 
 // [assessment] : how a run is judged. A free block whose centroid ends more

@@ -42,8 +42,8 @@ constexpr std::string_view kBlockKeys[] = {"name",     "shape",    "size",   "ce
 constexpr std::string_view kGroundMotionKeys[] = {"kind",           "applied_as", "direction", "start_time",
                                                   "acceleration",   "acceleration_g", "rate",  "rate_g",
                                                   "period",         "record",         "scale",
-                                                  "rise_time"};
-constexpr std::string_view kOutputKeys[] = {"history_interval", "histories", "energies"};
+                                                  "rise_time",      "tower_frequency", "tower_damping"};
+constexpr std::string_view kOutputKeys[] = {"history_interval", "histories", "energies", "walking"};
 constexpr std::string_view kAssessmentKeys[] = {"damage_displacement", "collapse_displacement", "stop_on_collapse",
                                                 "monitor_block"};
 constexpr std::string_view kCheckKeys[] = {"kind", "block", "expected", "tolerance"};
@@ -657,6 +657,8 @@ GroundMotionSpec read_ground_motion(const Deck& deck) {
   g.rate = rate.value_or(g.rate);
   g.period = r.number("period", g.period, Range::positive);
   g.rise_time = r.number("rise_time", g.rise_time, Range::non_negative);
+  g.tower_frequency = r.number("tower_frequency", g.tower_frequency, Range::non_negative);
+  g.tower_damping = r.number("tower_damping", g.tower_damping, Range::non_negative);
   g.scale = r.number("scale", g.scale, Range::any);
   const auto record = r.string("record");
 
@@ -695,6 +697,7 @@ OutputSpec read_output(const Deck& deck, const std::vector<BlockSpec>& blocks) {
   OutputSpec o;
   o.history_interval = r.number("history_interval", o.history_interval, Range::non_negative);
   o.energies = r.boolean("energies").value_or(o.energies);
+  o.walking = r.boolean("walking").value_or(o.walking);
   if (const toml::node* n = r.table().get("histories")) {
     const auto* arr = n->as_array();
     if (!arr) r.fail("histories", "must be an array of \"BLOCK.QUANTITY\" strings (got " + describe(*n) + ")");
