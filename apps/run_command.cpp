@@ -7,6 +7,7 @@
 #include "io/ground_motion_record.hpp"
 #include "io/hdf5_results.hpp"
 #include "io/json.hpp"
+#include "io/vtk.hpp"
 
 #include <fmt/core.h>
 #include <omp.h>
@@ -106,6 +107,75 @@ void write_table(ResultsFile& f, const std::string& group, const HistoryTable& t
   }
 }
 
+// ParaView output: one .vtu per snapshot for the blocks and one for the
+// joints, listed in .pvd series written at the end.
+class SnapshotWriter {
+ public:
+  explicit SnapshotWriter(std::string dir, bool joints) : dir_(std::move(dir)), joints_(joints) {
+    std::filesystem::create_directories(dir_);
+  }
+
+  void write(const Simulation& sim, double time) {
+    const Blocks& b = sim.blocks();
+    std::vector<Polyhedron> shapes;
+    std::vector<int> id, course;
+    std::vector<Vec3> disp, vel;
+    for (int i = 0; i < b.count; ++i) {
+      shapes.push_back(world_shape(b, i));
+      id.push_back(i);
+      course.push_back(b.props.course[i]);
+      disp.push_back(b.state.position[i] - b.initial_position[i]);
+      vel.push_back(b.state.velocity[i]);
+    }
+    VtkCellData data;
+    data.add_ints("block_id", id).add_ints("course", course).add_vectors("displacement", disp).add_vectors("velocity",
+                                                                                                           vel);
+    const std::string name = fmt::format("blocks_{:05d}.vtu", count_);
+    write_vtu(dir_ + "/" + name, shapes, data);
+    blocks_.push_back({time, name});
+    if (joints_) {
+      const ContactSet& c = sim.contacts();
+      std::vector<std::vector<Vec3>> polys;
+      std::vector<double> fn, fs, opening, slip;
+      for (const ContactPair& p : c.pairs) {
+        if (p.count == 0) continue;
+        std::vector<Vec3> poly;
+        double n = 0, t = 0, open = -std::numeric_limits<double>::infinity(), e = 0;
+        for (int s = p.first; s < p.first + p.count; ++s) {
+          poly.push_back(c.sub.point[s]);
+          n += c.sub.normal_force[s];
+          t += c.sub.shear_force[s].norm();
+          open = std::max(open, -c.sub.overlap[s]);
+          e += c.sub.slip_energy[s];
+        }
+        polys.push_back(std::move(poly));
+        fn.push_back(n);
+        fs.push_back(t);
+        opening.push_back(open);
+        slip.push_back(e);
+      }
+      VtkCellData jd;
+      jd.add_scalars("normal_force", fn).add_scalars("shear_force", fs).add_scalars("opening", opening).add_scalars(
+          "slip_energy", slip);
+      const std::string jname = fmt::format("joints_{:05d}.vtu", count_);
+      write_vtu_polygons(dir_ + "/" + jname, polys, jd);
+      joints_series_.push_back({time, jname});
+    }
+    ++count_;
+  }
+
+  void finish() {
+    if (!blocks_.empty()) write_pvd(dir_ + "/blocks.pvd", blocks_);
+    if (!joints_series_.empty()) write_pvd(dir_ + "/joints.pvd", joints_series_);
+  }
+
+ private:
+  std::string dir_;
+  bool joints_;
+  int count_ = 0;
+  std::vector<PvdEntry> blocks_, joints_series_;
+};
+
 void print_report(const RunReport& r, const std::string& out_dir) {
   std::cerr << fmt::format("polydem: {} steps of {:.3e} s to t = {:.4g} s in {:.2f} s ({:.3g} subcontact updates/s)\n",
                            r.steps, r.time_step, r.end_time, r.wall_seconds,
@@ -145,17 +215,24 @@ int run_command(const RunOptions& o) {
                                tty ? "   " : "\n");
     };
   }
+  std::unique_ptr<SnapshotWriter> snapshots;
+  if (spec.output.snapshot_interval > 0) {
+    snapshots = std::make_unique<SnapshotWriter>(o.out_dir + "/vtk", spec.output.snapshot_joints);
+    control.snapshot = [&snapshots](const Simulation& sim, double t) { snapshots->write(sim, t); };
+  }
   RunReport report;
   try {
     report = run_scene(spec, control);
   } catch (const InstabilityError& e) {
     std::cerr << "\npolydem: stopped: " << e.what() << "\n";
+    if (snapshots) snapshots->finish();  // the snapshots before the instability stay readable
     return exit_instability;
   } catch (const std::exception& e) {
     std::cerr << "\npolydem: error: " << e.what() << "\n";
     return exit_bad_input;
   }
   if (!o.quiet && isatty(STDERR_FILENO)) std::cerr << "\n";
+  if (snapshots) snapshots->finish();
 
   std::filesystem::create_directories(o.out_dir);
   {

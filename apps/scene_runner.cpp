@@ -239,6 +239,12 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
   };
 
   const double end = spec.simulation.end_time;
+  const bool snapshots = spec.output.snapshot_interval > 0 && control.snapshot;
+  double next_snapshot = 0.0;
+  if (snapshots) {
+    control.snapshot(sim, 0.0);
+    next_snapshot = spec.output.snapshot_interval;
+  }
   double quiet_since = -1;
   while (sim.time() < end - 0.5 * sim.dt()) {
     sim.step();
@@ -251,6 +257,10 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
       next_record += interval > 0 ? interval : 0.0;
     }
     if (control.progress && sim.steps() % control.progress_every == 0) control.progress(sim);
+    if (snapshots && sim.time() >= next_snapshot - 1e-12 * end) {
+      control.snapshot(sim, sim.time());
+      next_snapshot += spec.output.snapshot_interval;
+    }
     if (spec.simulation.settle_velocity > 0) {
       double vmax = 0;
       for (int i : sim.blocks().free_blocks) vmax = std::max(vmax, sim.blocks().state.velocity[i].norm());
@@ -266,6 +276,8 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
     }
   }
   if (spec.output.energies) record();  // the final state is always in the ledger
+  if (snapshots && sim.time() > next_snapshot - spec.output.snapshot_interval + 1e-12 * end)
+    control.snapshot(sim, sim.time());
 
   if (walking) {
     const Openings o = joint_openings(sim, up);

@@ -70,6 +70,9 @@ struct RunControl {
   // Called every `progress_every` steps (for progress output); may be empty.
   std::function<void(const Simulation&)> progress;
   long progress_every = 1000;
+  // Called at t = 0, every output.snapshot_interval and at the end (only
+  // when the deck asks for snapshots).
+  std::function<void(const Simulation&, double time)> snapshot;
 };
 
 // Throws DeckError-like std::runtime_error for input found bad only now

@@ -92,6 +92,10 @@ struct OutputSpec {
   // Histories of the largest joint openings (bed and vertical joints): the
   // stones' "walking" under an earthquake (paper 3.4).
   bool walking = false;
+  // ParaView snapshots (a .pvd series of .vtu files) every this many
+  // seconds; 0 = none. Joints (the contact patches) go in a second series.
+  double snapshot_interval = 0.0;
+  bool snapshot_joints = true;
 };
 
 // [assessment] : how a run is judged. A free block whose centroid ends more

@@ -81,6 +81,37 @@ VtkCellData& VtkCellData::add_ints(std::string name, std::vector<int> values) {
   return *this;
 }
 
+namespace {
+
+void put_cell_data(std::string& out, const VtkCellData& data) {
+  const bool any = !data.scalars.empty() || !data.vectors.empty() || !data.ints.empty();
+  if (any) {
+    out += "      <CellData";
+    if (!data.scalars.empty()) out += " Scalars=\"" + xml_escape(data.scalars.front().name) + "\"";
+    if (!data.vectors.empty()) out += " Vectors=\"" + xml_escape(data.vectors.front().name) + "\"";
+    out += ">\n";
+    for (const auto& s : data.scalars) {
+      out += "        <DataArray type=\"Float64\" Name=\"" + xml_escape(s.name) + "\" format=\"ascii\">\n";
+      put_values(out, s.values, 6, put_number);
+      out += "        </DataArray>\n";
+    }
+    for (const auto& s : data.vectors) {
+      out += "        <DataArray type=\"Float64\" Name=\"" + xml_escape(s.name) +
+             "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+      std::vector<double> flat;
+      flat.reserve(3 * s.values.size());
+      for (const Vec3& v : s.values) flat.insert(flat.end(), {v.x(), v.y(), v.z()});
+      put_values(out, flat, 3, put_number);
+      out += "        </DataArray>\n";
+    }
+    for (const auto& s : data.ints)
+      put_int_array(out, "Int32", s.name, std::vector<long long>(s.values.begin(), s.values.end()));
+    out += "      </CellData>\n";
+  }
+}
+
+}  // namespace
+
 std::string vtu_document(const std::vector<Polyhedron>& blocks, const VtkCellData& data) {
   const std::size_t nb = blocks.size();
   for (const auto& s : data.scalars) check_size(s.name, s.values.size(), nb);
@@ -130,34 +161,53 @@ std::string vtu_document(const std::vector<Polyhedron>& blocks, const VtkCellDat
   put_int_array(out, "Int64", "faceoffsets", faceoffsets);
   out += "      </Cells>\n";
 
-  const bool any = !data.scalars.empty() || !data.vectors.empty() || !data.ints.empty();
-  if (any) {
-    out += "      <CellData";
-    if (!data.scalars.empty()) out += " Scalars=\"" + xml_escape(data.scalars.front().name) + "\"";
-    if (!data.vectors.empty()) out += " Vectors=\"" + xml_escape(data.vectors.front().name) + "\"";
-    out += ">\n";
-    for (const auto& s : data.scalars) {
-      out += "        <DataArray type=\"Float64\" Name=\"" + xml_escape(s.name) + "\" format=\"ascii\">\n";
-      put_values(out, s.values, 6, put_number);
-      out += "        </DataArray>\n";
-    }
-    for (const auto& s : data.vectors) {
-      out += "        <DataArray type=\"Float64\" Name=\"" + xml_escape(s.name) +
-             "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-      std::vector<double> flat;
-      flat.reserve(3 * s.values.size());
-      for (const Vec3& v : s.values) flat.insert(flat.end(), {v.x(), v.y(), v.z()});
-      put_values(out, flat, 3, put_number);
-      out += "        </DataArray>\n";
-    }
-    for (const auto& s : data.ints)
-      put_int_array(out, "Int32", s.name, std::vector<long long>(s.values.begin(), s.values.end()));
-    out += "      </CellData>\n";
-  }
+  put_cell_data(out, data);
   out += "    </Piece>\n";
   out += "  </UnstructuredGrid>\n";
   out += "</VTKFile>\n";
   return out;
+}
+
+std::string vtu_polygons_document(const std::vector<std::vector<Vec3>>& polygons, const VtkCellData& data) {
+  const std::size_t nc = polygons.size();
+  for (const auto& s : data.scalars) check_size(s.name, s.values.size(), nc);
+  for (const auto& s : data.vectors) check_size(s.name, s.values.size(), nc);
+  for (const auto& s : data.ints) check_size(s.name, s.values.size(), nc);
+  std::vector<double> points;
+  std::vector<long long> connectivity, offsets;
+  for (const auto& poly : polygons) {
+    for (const Vec3& v : poly) {
+      connectivity.push_back(static_cast<long long>(points.size() / 3));
+      points.insert(points.end(), {v.x(), v.y(), v.z()});
+    }
+    offsets.push_back(static_cast<long long>(connectivity.size()));
+  }
+  std::string out;
+  out += "<?xml version=\"1.0\"?>\n";
+  out += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n";
+  out += "  <UnstructuredGrid>\n";
+  out += "    <Piece NumberOfPoints=\"" + std::to_string(points.size() / 3) + "\" NumberOfCells=\"" +
+         std::to_string(nc) + "\">\n";
+  out += "      <Points>\n";
+  out += "        <DataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  put_values(out, points, 3, put_number);
+  out += "        </DataArray>\n";
+  out += "      </Points>\n";
+  out += "      <Cells>\n";
+  put_int_array(out, "Int64", "connectivity", connectivity);
+  put_int_array(out, "Int64", "offsets", offsets);
+  put_int_array(out, "UInt8", "types", std::vector<long long>(nc, 7), 20);  // VTK_POLYGON
+  out += "      </Cells>\n";
+  put_cell_data(out, data);
+  out += "    </Piece>\n";
+  out += "  </UnstructuredGrid>\n";
+  out += "</VTKFile>\n";
+  return out;
+}
+
+void write_vtu_polygons(const std::string& path, const std::vector<std::vector<Vec3>>& polygons,
+                        const VtkCellData& cell_data) {
+  write_file_atomic(path, vtu_polygons_document(polygons, cell_data));
 }
 
 void write_vtu(const std::string& path, const std::vector<Polyhedron>& blocks, const VtkCellData& cell_data) {

@@ -51,6 +51,11 @@ void write_vtu(const std::string& path, const std::vector<Polyhedron>& blocks, c
 // A .pvd collection: one DataSet per entry. `file` is written as given; use a
 // path relative to the .pvd (e.g. "vtk/step_000100.vtu") so the run folder
 // can be moved.
+// Polygons (VTK_POLYGON cells), e.g. the contact patches of the joints.
+std::string vtu_polygons_document(const std::vector<std::vector<Vec3>>& polygons, const VtkCellData& cell_data = {});
+void write_vtu_polygons(const std::string& path, const std::vector<std::vector<Vec3>>& polygons,
+                        const VtkCellData& cell_data = {});
+
 struct PvdEntry {
   double time = 0;
   std::string file;
