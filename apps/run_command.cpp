@@ -30,6 +30,10 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   s.set("polydem_version", POLYDEM_VERSION);
   s.set("deck", spec.deck_path);
   s.set("status", r.status);
+  if (r.unstable) {
+    s.set("instability", r.instability);
+    s.set("last_good_time_s", r.last_good_time);
+  }
   s.set("settled", r.settled);
   const Assessment& a = r.assessment;
   Json as = Json::object();
@@ -244,7 +248,16 @@ int run_command(const RunOptions& o) {
     if (!report.energies.columns.empty()) write_table(h5, "/energies", report.energies);
     h5.commit();
   }
+  if (report.unstable) {
+    write_vtu(o.out_dir + "/last_good_state.vtu", report.final_shapes);
+    if (snapshots) snapshots->finish();
+  }
   write_file_atomic(o.out_dir + "/summary.json", summary_json(spec, report, omp_get_max_threads()).dump(2) + "\n");
+  if (report.unstable) {
+    std::cerr << "\npolydem: stopped: " << report.instability << "\npolydem: last good state in " << o.out_dir
+              << "/last_good_state.vtu, results so far in " << o.out_dir << "/summary.json and results.h5\n";
+    return exit_instability;
+  }
   if (!o.quiet) print_report(report, o.out_dir);
   return report.all_checks_passed() ? exit_success : exit_check_failed;
 }

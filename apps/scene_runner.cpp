@@ -246,36 +246,43 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
     next_snapshot = spec.output.snapshot_interval;
   }
   double quiet_since = -1;
-  while (sim.time() < end - 0.5 * sim.dt()) {
-    sim.step();
-    rep.subcontact_updates += static_cast<long>(sim.contacts().sub.size());
-    for (auto& m : monitors) m->observe(sim);
-    assessment.observe(sim);
-    if (spec.assessment.stop_on_collapse && assessment.collapsed()) break;
-    if (sim.time() - sim.dt() >= next_record - 1e-12 * end) {
-      record();
-      next_record += interval > 0 ? interval : 0.0;
-    }
-    if (control.progress && sim.steps() % control.progress_every == 0) control.progress(sim);
-    if (snapshots && sim.time() >= next_snapshot - 1e-12 * end) {
-      control.snapshot(sim, sim.time());
-      next_snapshot += spec.output.snapshot_interval;
-    }
-    if (spec.simulation.settle_velocity > 0) {
-      double vmax = 0;
-      for (int i : sim.blocks().free_blocks) vmax = std::max(vmax, sim.blocks().state.velocity[i].norm());
-      if (vmax < spec.simulation.settle_velocity) {
-        if (quiet_since < 0) quiet_since = sim.time();
-        if (sim.time() - quiet_since >= spec.simulation.settle_time) {
-          rep.settled = true;
-          break;
+  try {
+    while (sim.time() < end - 0.5 * sim.dt()) {
+      sim.step();
+      rep.subcontact_updates += static_cast<long>(sim.contacts().sub.size());
+      for (auto& m : monitors) m->observe(sim);
+      assessment.observe(sim);
+      if (spec.assessment.stop_on_collapse && assessment.collapsed()) break;
+      if (sim.time() - sim.dt() >= next_record - 1e-12 * end) {
+        record();
+        next_record += interval > 0 ? interval : 0.0;
+      }
+      if (control.progress && sim.steps() % control.progress_every == 0) control.progress(sim);
+      if (snapshots && sim.time() >= next_snapshot - 1e-12 * end) {
+        control.snapshot(sim, sim.time());
+        next_snapshot += spec.output.snapshot_interval;
+      }
+      if (spec.simulation.settle_velocity > 0) {
+        double vmax = 0;
+        for (int i : sim.blocks().free_blocks) vmax = std::max(vmax, sim.blocks().state.velocity[i].norm());
+        if (vmax < spec.simulation.settle_velocity) {
+          if (quiet_since < 0) quiet_since = sim.time();
+          if (sim.time() - quiet_since >= spec.simulation.settle_time) {
+            rep.settled = true;
+            break;
+          }
+        } else {
+          quiet_since = -1;
         }
-      } else {
-        quiet_since = -1;
       }
     }
+  } catch (const InstabilityError& e) {
+    // Stop, but keep what was computed: the histories so far and the state
+    // of the last passed check.
+    rep.unstable = true;
+    rep.instability = e.what();
   }
-  if (spec.output.energies) record();  // the final state is always in the ledger
+  if (spec.output.energies && !rep.unstable) record();  // the final state is always in the ledger
   if (snapshots && sim.time() > next_snapshot - spec.output.snapshot_interval + 1e-12 * end)
     control.snapshot(sim, sim.time());
 
@@ -302,9 +309,17 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
   rep.energy_reference = reference;
   rep.energy_balance_error = reference > 0 ? worst / reference : 0.0;
   for (auto& m : monitors) rep.checks.push_back(m->finish(sim));
-  rep.final_position = sim.blocks().state.position;
-  rep.final_velocity = sim.blocks().state.velocity;
-  rep.final_orientation = sim.blocks().state.orientation;
+  const BlockState& final_state = rep.unstable ? sim.last_good_state() : sim.blocks().state;
+  rep.final_position = final_state.position;
+  rep.final_velocity = final_state.velocity;
+  rep.final_orientation = final_state.orientation;
+  if (rep.unstable) {
+    rep.status = "unstable";
+    rep.last_good_time = sim.last_good_time();
+    for (int i = 0; i < sim.blocks().count; ++i)
+      rep.final_shapes.push_back(transformed(sim.blocks().props.local_shape[i], final_state.rotation[i],
+                                             final_state.position[i]));
+  }
   rep.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   return rep;
 }

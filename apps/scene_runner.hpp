@@ -31,7 +31,11 @@ struct HistoryTable {
 
 struct RunReport {
   std::string status;  // "intact", "damaged" or "collapsed" (see assessment)
-  bool settled = false;  // stopped early: every block at rest (simulation.settle_*)
+  bool settled = false;
+  bool unstable = false;     // stopped by the guard (see Simulation::check_health)
+  std::string instability;   // the guard's message
+  double last_good_time = 0;  // s
+  std::vector<Polyhedron> final_shapes;  // the last good state's blocks (unstable runs only)  // stopped early: every block at rest (simulation.settle_*)
   Assessment assessment;
   long steps = 0;
   double end_time = 0;
@@ -76,8 +80,9 @@ struct RunControl {
 };
 
 // Throws DeckError-like std::runtime_error for input found bad only now
-// (overlapping blocks, time step above the critical one), InstabilityError on
-// a non-finite state.
+// (overlapping blocks, time step above the critical one). A run the guard
+// stops returns with `unstable` set, the histories so far and the last good
+// state as the final state.
 RunReport run_scene(const SceneSpec& spec, const RunControl& control = {});
 
 // Finds the line of `key` (e.g. "time_step") in the deck text; 0 if absent.

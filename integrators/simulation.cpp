@@ -26,7 +26,7 @@ Quat rotation_quaternion(const Vec3& w) {
 }  // namespace
 
 Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec& joint, GroundMotion motion,
-                       double margin, double dt)
+                       double margin, double dt, bool adaptive_time_step)
     : blocks_(std::move(blocks)),
       sim_(sim),
       joint_(joint),
@@ -34,6 +34,7 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec
       motion_(std::move(motion)),
       detector_(blocks_, margin),
       bond_initial_(joint.cohesion > 0 || joint.tensile_strength > 0),
+      adaptive_dt_(adaptive_time_step),
       dt_(dt),
       dt_prev_(dt) {
   const int n = blocks_.count;
@@ -45,6 +46,7 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec
   detect_contacts();
   dt_prev_ = dt_;
   start_half_step_back();
+  last_good_ = blocks_.state;
 }
 
 // The deck gives velocities at t = 0; leapfrog keeps them at t − dt/2. Step
@@ -74,6 +76,7 @@ void Simulation::start_half_step_back() {
 // update spans the mean of the old and new steps).
 void Simulation::detect_contacts() {
   detector_.detect(blocks_, contacts_, bond_initial_ && contacts_.detections == 0);
+  if (!adaptive_dt_) return;
   const CriticalStep c = critical_time_step_from_contacts(blocks_, contacts_, joint_, sim_.safety_factor);
   if (c.chosen > 0 && c.chosen < dt_) {
     dt_ = c.chosen;
@@ -98,7 +101,7 @@ void Simulation::step() {
   time_ += dt_;
   dt_prev_ = dt_;
   ++steps_;
-  if (steps_ % 256 == 0) check_finite();
+  if (steps_ % 256 == 0) check_health();
 }
 
 void Simulation::compute_joint_forces_parallel() {
@@ -193,15 +196,51 @@ void Simulation::move_kinematic_blocks() {
   }
 }
 
-void Simulation::check_finite() const {
+void Simulation::check_health() {
   const auto& st = blocks_.state;
+  auto stop = [&](const std::string& cause) {
+    std::ostringstream msg;
+    msg << "numerical instability at step " << steps_ << " (t = " << time_ << " s, time step " << dt_
+        << " s): " << cause << "; the last good state is from step " << last_good_step_ << " (t = "
+        << last_good_time_ << " s)";
+    throw InstabilityError(msg.str());
+  };
   for (int i : blocks_.free_blocks) {
     if (st.position[i].allFinite() && st.velocity[i].allFinite() && st.angular_momentum[i].allFinite()) continue;
-    std::ostringstream msg;
-    msg << "numerical instability at step " << steps_ << " (t = " << time_ << " s): block '" << blocks_.props.name[i]
-        << "' has a non-finite position or velocity (time step " << dt_ << " s)";
-    throw InstabilityError(msg.str());
+    stop("block '" + blocks_.props.name[i] + "' has a non-finite position or velocity");
   }
+  const auto& sub = contacts_.sub;
+  const double limit = detector_.margin();
+  for (std::size_t s = 0; s < sub.size(); ++s) {
+    if (sub.overlap[s] <= limit) continue;
+    std::ostringstream what;
+    what << "blocks '" << blocks_.props.name[sub.ref_block[s]] << "' and '" << blocks_.props.name[sub.inc_block[s]]
+         << "' overlap by " << sub.overlap[s] << " m, beyond the penetration limit " << limit
+         << " m (the contact margin)";
+    stop(what.str());
+  }
+  const EnergyLedger e = energies();
+  const double mechanical = e.kinetic + e.gravitational + e.strain - e.load_work;
+  if (!energy_started_) {
+    mechanical0_ = mechanical;
+    energy_started_ = true;
+  }
+  energy_reference_ = std::max(energy_reference_, e.kinetic + e.strain + std::abs(e.gravitational) +
+                                                      std::abs(e.load_work) + e.slip + e.damping);
+  // A floor so that a scene at rest (all energies ~0) is not judged on noise.
+  double floor = 0;
+  for (int i : blocks_.free_blocks) floor += blocks_.props.mass[i] * sim_.gravity.norm() * 1e-6;
+  const double growth = mechanical - mechanical0_;
+  if (growth > energy_growth_limit_ * std::max(energy_reference_, floor) && growth > floor) {
+    std::ostringstream what;
+    what << "the mechanical energy grew by " << growth << " J beyond the work of the loads (" << 100 * growth /
+                                                                                                 energy_reference_
+         << " % of the energy in play)";
+    stop(what.str());
+  }
+  last_good_ = st;
+  last_good_time_ = time_;
+  last_good_step_ = steps_;
 }
 
 double Simulation::largest_opening(int i) const {

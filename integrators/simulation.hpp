@@ -47,8 +47,11 @@ struct EnergyLedger {
 class Simulation {
  public:
   // dt: the step to use (already checked against the critical step).
+  // adaptive_time_step: lower the step when a detection finds stiffer joints
+  // (always on in runs; tests switch it off to drive a run unstable on
+  // purpose and see the guard act).
   Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec& joint, GroundMotion motion, double margin,
-             double dt);
+             double dt, bool adaptive_time_step = true);
 
   // Steps with fewer subcontacts (and fewer free blocks than a sixteenth of
   // this) run on one thread: below a few thousand subcontacts a step takes
@@ -79,6 +82,18 @@ class Simulation {
   // Largest opening (m) among block i's subcontacts at the force time.
   double largest_opening(int i) const;
 
+  // The guard. Every 256 steps the state is checked: a non-finite value,
+  // a joint overlapping more than the penetration limit (the contact margin:
+  // beyond it the patch geometry no longer describes the joint), or a
+  // mechanical energy that has grown by more than energy_growth_limit of the
+  // energy in play beyond the work of the loads (energy appearing from
+  // nowhere: the step is too large) throws InstabilityError naming the cause,
+  // the step and the time. The state of the last passed check is kept.
+  void set_energy_growth_limit(double fraction) { energy_growth_limit_ = fraction; }
+  const BlockState& last_good_state() const { return last_good_; }
+  double last_good_time() const { return last_good_time_; }
+  long last_good_step() const { return last_good_step_; }
+
  private:
   void detect_contacts();
   void start_half_step_back();
@@ -86,7 +101,7 @@ class Simulation {
   void gather_block_forces();
   void update_free_blocks();
   void move_kinematic_blocks();
-  void check_finite() const;
+  void check_health();
 
   Blocks blocks_;
   SimulationSpec sim_;
@@ -96,6 +111,7 @@ class Simulation {
   ContactDetector detector_;
   ContactSet contacts_;
   bool bond_initial_;
+  bool adaptive_dt_;
   std::size_t parallel_threshold_ = 2048;
   double dt_;
   double dt_prev_;  // the step before: leapfrog with a changing step
@@ -105,6 +121,13 @@ class Simulation {
   // Per-block ledger terms and mid-step kinematics (for the energy ledger).
   std::vector<Vec3> velocity_mid_, omega_mid_, position_prev_;
   std::vector<Quat> orientation_prev_;
+  // Guard.
+  double energy_growth_limit_ = 0.1;
+  double energy_reference_ = 0, mechanical0_ = 0;
+  bool energy_started_ = false;
+  BlockState last_good_;
+  double last_good_time_ = 0;
+  long last_good_step_ = 0;
   std::vector<double> load_work_;
 };
 

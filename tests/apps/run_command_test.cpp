@@ -256,13 +256,21 @@ TEST_F(RunCommandTest, BadOverrideIsRejectedNamingTheOverride) {
   expect_nothing_written();
 }
 
-TEST_F(RunCommandTest, NonFiniteStateExitsThreeAndWritesNothing) {
+TEST_F(RunCommandTest, NonFiniteStateExitsThreeAndKeepsTheLastGoodState) {
   // Gravity so strong that m·g overflows: the state becomes infinite at once.
   const std::string deck = replace_once(kDeck, "end_time = 0.002\n", "end_time = 0.05\ngravity = [0.0, 0.0, -1e308]\n");
   EXPECT_EQ(run(deck), exit_instability) << err_;
   EXPECT_NE(err_.find("step"), std::string::npos) << err_;
   EXPECT_NE(err_.find("'stone'"), std::string::npos) << err_;
-  expect_nothing_written();
+  EXPECT_NE(err_.find("last good state"), std::string::npos) << err_;
+  // The guard keeps the state of its last passed check and says so.
+  const fs::path out = dir_ / "out";
+  EXPECT_TRUE(fs::exists(out / "last_good_state.vtu"));
+  const std::string summary = read_text(out / "summary.json");
+  EXPECT_NE(summary.find("\"status\": \"unstable\""), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"instability\""), std::string::npos) << summary;
+  for (const auto& e : fs::directory_iterator(out))
+    EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << "temporary left behind: " << e.path();
 }
 
 // The built binary.
