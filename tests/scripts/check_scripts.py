@@ -1,0 +1,106 @@
+#!/usr/bin/python3
+"""End-to-end check of the plotting scripts in scripts/ (run by CTest, label `scripts`).
+
+    /usr/bin/python3 tests/scripts/check_scripts.py POLYDEM_BINARY SOURCE_DIR
+
+Runs polydem on small cases into a temporary folder (free rocking for 0.3 s with
+snapshots, a constant-acceleration collapse search on the rocking-onset block in
+two directions, the 402-block spire mesh), then every script on the results, and
+checks that each PNG exists, is larger than 10 kB and is not a blank image (the
+standard deviation of its pixels). The spire rendering must take under 20 s.
+No pytest: a failure prints what failed and exits 1.
+"""
+
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.image as mpimg  # noqa: E402
+
+PYTHON = "/usr/bin/python3"
+failures = []
+
+
+def run(cmd, ok_codes=(0,)):
+    t0 = time.monotonic()
+    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    seconds = time.monotonic() - t0
+    print(f"$ {' '.join(cmd)}  [{seconds:.1f} s, exit {proc.returncode}]")
+    if proc.returncode not in ok_codes:
+        print(proc.stdout)
+        raise SystemExit(f"FAILED: exit code {proc.returncode} (expected {ok_codes})")
+    return seconds
+
+
+def check_png(path):
+    if not os.path.exists(path):
+        failures.append(f"{path}: not written")
+        return
+    size = os.path.getsize(path)
+    pixels = mpimg.imread(path)[..., :3]
+    spread = float(np.std(pixels))
+    print(f"  {os.path.basename(path)}: {size / 1024:.0f} kB, {pixels.shape[1]}x{pixels.shape[0]}, "
+          f"pixel std {spread:.3f}")
+    if size <= 10 * 1024:
+        failures.append(f"{path}: only {size} bytes")
+    if spread < 0.05:
+        failures.append(f"{path}: nearly uniform image (pixel std {spread:.4f})")
+
+
+def main():
+    polydem, source = sys.argv[1], sys.argv[2]
+    scripts = os.path.join(source, "scripts")
+    verification = os.path.join(source, "examples", "verification")
+    with tempfile.TemporaryDirectory(prefix="polydem_scripts_") as tmp:
+        rock = os.path.join(tmp, "rock")
+        # Exit 1 is expected: 0.3 s ends before the first impact the deck's checks measure.
+        run([polydem, "run", os.path.join(verification, "free_rocking.toml"), "--out", rock, "--quiet",
+             "--set", "simulation.end_time=0.3", "--set", "output.snapshot_interval=0.1"], ok_codes=(0, 1))
+        col = os.path.join(tmp, "collapse")
+        run([polydem, "collapse", os.path.join(verification, "rocking_onset.toml"), "--out", col, "--quiet",
+             "--direction", "0", "--direction", "90", "--low", "0.1", "--high", "0.5", "--tolerance", "0.05",
+             "--hold-time", "1.0", "--ramp-rate", "0.3"])
+        mesh = os.path.join(tmp, "spire")
+        run([polydem, "mesh", os.path.join(source, "examples", "spire", "spire_geometry.toml"), "--out", mesh])
+
+        png = lambda name: os.path.join(tmp, name)  # noqa: E731
+        h5 = os.path.join(rock, "results.h5")
+        run([PYTHON, os.path.join(scripts, "plot_histories.py"), h5, "--out", png("histories.png")])
+        check_png(png("histories.png"))
+        run([PYTHON, os.path.join(scripts, "plot_histories.py"), h5, "--columns", "pillar.rotation.y",
+             "pillar.angular_velocity.*", "--relative", "--out", png("histories_some.png")])
+        check_png(png("histories_some.png"))
+        run([PYTHON, os.path.join(scripts, "plot_energy.py"), h5, "--out", png("energy.png")])
+        check_png(png("energy.png"))
+        run([PYTHON, os.path.join(scripts, "render_blocks.py"), os.path.join(rock, "vtk", "blocks.pvd"), "--last",
+             "--out", png("blocks_last.png")])
+        check_png(png("blocks_last.png"))
+        run([PYTHON, os.path.join(scripts, "render_blocks.py"), os.path.join(rock, "vtk", "blocks.pvd"),
+             "--time", "0.1", "--color", "block_id", "--view", "-30", "25", "--out", png("blocks_t.png")])
+        check_png(png("blocks_t.png"))
+        seconds = run([PYTHON, os.path.join(scripts, "render_blocks.py"), os.path.join(mesh, "blocks.vtu"),
+                       "--color", "course", "--out", png("spire.png")])
+        check_png(png("spire.png"))
+        if seconds > 20.0:
+            failures.append(f"rendering the 402-block spire took {seconds:.1f} s (limit 20 s)")
+        collapse_json = os.path.join(col, "collapse.json")
+        run([PYTHON, os.path.join(scripts, "plot_collapse.py"), collapse_json, "--out", png("collapse_bar.png")])
+        check_png(png("collapse_bar.png"))
+        run([PYTHON, os.path.join(scripts, "plot_collapse.py"), collapse_json, "--kind", "polar",
+             "--out", png("collapse_polar.png")])
+        check_png(png("collapse_polar.png"))
+
+    if failures:
+        print("FAILED:\n  " + "\n  ".join(failures))
+        sys.exit(1)
+    print("all plotting scripts wrote non-trivial PNGs")
+
+
+if __name__ == "__main__":
+    main()
