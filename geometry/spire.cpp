@@ -7,12 +7,32 @@
 //
 // A window is the convex prism O = {|s| <= w/2, z >= sill, z <= h(s)} in the
 // face's frame (s along the face, horizontal; h the head profile: flat, or a
-// pointed arch as straight chords, concave). A stone S that O cuts becomes
-// the convex pieces of S \ O:
-//   left  S ∩ {s <= -w/2}          right  S ∩ {s >= w/2}
+// pointed arch as straight chords, concave). Every region below is a prism
+// perpendicular to the face: half-planes a s + b z <= d of the (s, z) plane.
+//
+// The head is built so that it carries the masonry above it under gravity:
+//   pointed  voussoirs. The joint at each corner P_j of the left arc is the
+//            plane through P_j normal to the arc's tangent there: at the
+//            springing P_0 normal to the first chord (the springing joint,
+//            inclined, so the voussoir bears on the springer beside the
+//            opening), between chords along the bisector of the two chords
+//            (the circle's radius), at the apex the vertical crown joint
+//            s = 0, where the two arcs lean on each other. Voussoir j is
+//            {above chord j, after joint j, before joint j+1}; the right arc
+//            is the mirror image.
+//   flat     a lintel {|s| <= w/2 + b, z >= head} bearing b on each jamb.
+// The head blocks (voussoirs, lintel) span the "head courses", from the
+// course holding the springing (the head, flat) up to the first bed joint at
+// least half a course above the head, as single blocks: no bed joint crosses
+// a voussoir and the crown joint is at least half a course tall. In a head
+// course the face's vertical joints are replaced around the head: one "zone"
+// stone spans everything that the head blocks take from that course (joints
+// at ±s_zone, or none if the stones outside would be slivers). The zone stone
+// and every stone that O meets become the convex pieces
+//   left  S ∩ {s <= -w/2} ∩ {before the springing joint}   (flat: z <= head)
 //   below S ∩ {|s| <= w/2, z <= sill}
-//   above S ∩ {s_j <= s <= s_j+1} ∩ {above chord j}   for each chord j,
-// which tile S \ O because h is linear on each [s_j, s_j+1]. The pieces are
+//   right the mirror of left
+// which with O and the head blocks tile the face's courses. The pieces are
 // cut from S by clip(): S's corners on the kept side plus the crossings of
 // its edges, hulled again (convex_hull, CGAL).
 #include "geometry/spire.hpp"
@@ -82,7 +102,6 @@ Plane s_at_least(int k, double s0) { return {-face_tangent(k), -s0}; }
 Plane s_at_most(int k, double s1) { return {face_tangent(k), s1}; }
 Plane z_at_least(double z0) { return {Vec3(0, 0, -1), -z0}; }
 Plane z_at_most(double z1) { return {Vec3(0, 0, 1), z1}; }
-Plane flipped(const Plane& p) { return {-p.n, -p.d}; }
 
 Polyhedron intersect(const std::vector<Plane>& planes, const Vec3& interior) {
   std::vector<Vec3> n;
@@ -148,40 +167,95 @@ std::vector<Vec2> head_points(const SpireSpec& s) {
   return pts;
 }
 
+// a s + b z <= d in face k's (s, z) frame.
+struct HalfPlane {
+  double a, b, d;
+  HalfPlane flipped() const { return {-a, -b, -d}; }
+  HalfPlane mirrored() const { return {-a, b, d}; }  // s -> -s
+};
+
+Plane on_face(int k, const HalfPlane& h) { return {h.a * face_tangent(k) + Vec3(0, 0, h.b), h.d}; }
+
+std::vector<Plane> on_face(int k, const std::vector<HalfPlane>& hs) {
+  std::vector<Plane> out;
+  for (const auto& h : hs) out.push_back(on_face(k, h));
+  return out;
+}
+
 struct Window {
   double half_width;
   double sill;
   double head;                // z of the top of the opening
+  bool pointed;
   std::vector<Vec2> profile;  // head corners (s, z), s increasing
+  // The head courses [head_lo, head_hi] and the top of the head blocks.
+  int head_lo = -1, head_hi = -1;
+  double head_top = 0;
+  double spring = 0;          // pointed: z of the springing
+  double spring_slope = 0;    // pointed: dz/ds of the first chord
+  double lintel_half = 0;     // flat: half the lintel's length, w/2 + b; 0 = the whole face
+  std::vector<HalfPlane> left, below, right;      // the regions beside and under the opening
+  std::vector<std::vector<HalfPlane>> head_blocks;  // voussoirs left to right, or the lintel
 };
 
-// Below chord j of the head (inside the opening), in face k's frame.
-Plane below_chord(int k, const Vec2& a, const Vec2& b) {
+// Below chord a-b (inside the opening).
+HalfPlane below_chord(const Vec2& a, const Vec2& b) {
   const double ds = b.x() - a.x(), dz = b.y() - a.y();
   // (-dz, ds) is the chord's upward normal in the (s, z) plane.
-  return {-dz * face_tangent(k) + Vec3(0, 0, ds), -dz * a.x() + ds * a.y()};
+  return {-dz, ds, -dz * a.x() + ds * a.y()};
 }
 
-// The convex pieces of stone \ window on face k (none if the window takes the
-// whole stone); nullopt if they do not meet.
-std::optional<std::vector<Polyhedron>> cut_by_window(const Polyhedron& stone, int k, const Window& w) {
-  const Plane left = s_at_most(k, -w.half_width);   // s <= -w/2
-  const Plane right = s_at_least(k, w.half_width);  // s >= w/2
-  const Plane below = z_at_most(w.sill);
-  std::vector<Plane> opening = {flipped(left), flipped(right), flipped(below)};
-  for (size_t j = 0; j + 1 < w.profile.size(); ++j) opening.push_back(below_chord(k, w.profile[j], w.profile[j + 1]));
-  if (!clip_all(stone, opening)) return std::nullopt;
+// The regions of the window's partition (see the top of the file).
+void build_regions(Window& w) {
+  const double hw = w.half_width;
+  w.below = {{1, 0, hw}, {-1, 0, hw}, {0, 1, w.sill}};
+  if (!w.pointed) {
+    w.left = {{1, 0, -hw}, {0, 1, w.head}};
+    std::vector<HalfPlane> lintel = {{0, -1, -w.head}};
+    if (w.lintel_half > 0) lintel.push_back({1, 0, w.lintel_half}), lintel.push_back({-1, 0, w.lintel_half});
+    w.head_blocks = {lintel};
+  } else {
+    const auto& p = w.profile;
+    const int m = static_cast<int>(p.size() - 1) / 2;  // chords per arc; p[m] is the apex
+    auto chord_dir = [&](int j) { return Vec2(p[j + 1] - p[j]).normalized(); };
+    // Joint j of the left arc: "before" (springing side) half-plane.
+    auto before_joint = [&](int j) {
+      Vec2 t;
+      if (j == 0)
+        t = chord_dir(0);
+      else if (j == m)
+        t = Vec2(1, 0);  // the crown: s <= 0
+      else
+        t = (chord_dir(j - 1) + chord_dir(j)).normalized();
+      return HalfPlane{t.x(), t.y(), t.dot(p[j])};
+    };
+    w.left = {{1, 0, -hw}, before_joint(0)};
+    std::vector<std::vector<HalfPlane>> left_arc;
+    for (int j = 0; j < m; ++j)
+      left_arc.push_back({below_chord(p[j], p[j + 1]).flipped(), before_joint(j).flipped(), before_joint(j + 1)});
+    w.head_blocks = left_arc;
+    for (int j = m - 1; j >= 0; --j) {
+      std::vector<HalfPlane> v;
+      for (const auto& h : left_arc[j]) v.push_back(h.mirrored());
+      w.head_blocks.push_back(v);
+    }
+  }
+  for (const auto& h : w.left) w.right.push_back(h.mirrored());
+}
 
-  std::vector<std::optional<Polyhedron>> parts;
-  parts.push_back(clip(stone, left));
-  parts.push_back(clip_all(stone, {flipped(left), flipped(right), below}));
-  for (size_t j = 0; j + 1 < w.profile.size(); ++j)
-    parts.push_back(clip_all(stone, {s_at_least(k, w.profile[j].x()), s_at_most(k, w.profile[j + 1].x()),
-                                     flipped(below_chord(k, w.profile[j], w.profile[j + 1]))}));
-  parts.push_back(clip(stone, right));
+// Does the opening meet the stone (with volume)?
+bool meets_opening(const Polyhedron& stone, int k, const Window& w) {
+  std::vector<HalfPlane> opening = {{-1, 0, w.half_width}, {1, 0, w.half_width}, {0, -1, -w.sill}};
+  for (size_t j = 0; j + 1 < w.profile.size(); ++j) opening.push_back(below_chord(w.profile[j], w.profile[j + 1]));
+  return clip_all(stone, on_face(k, opening)).has_value();
+}
+
+// The convex pieces of the stone beside and under the opening (none if the
+// opening and the head blocks take the whole stone).
+std::vector<Polyhedron> cut_by_window(const Polyhedron& stone, int k, const Window& w) {
   std::vector<Polyhedron> out;
-  for (auto& p : parts)
-    if (p) out.push_back(std::move(*p));
+  for (const auto* region : {&w.left, &w.below, &w.right})
+    if (auto piece = clip_all(stone, on_face(k, *region))) out.push_back(std::move(*piece));
   return out;
 }
 
@@ -299,28 +373,68 @@ SpireModel build_spire(const SpireSpec& s) {
     model.blocks.push_back(std::move(b));
   }
 
+  auto course_z0 = [&](int c) { return c * model.course_height; };
+  auto course_z1 = [&](int c) { return c + 1 == model.n_courses ? model.shell_top : (c + 1) * model.course_height; };
+
   Window window;
   window.half_width = 0.5 * s.window_width;
   window.sill = s.window_sill;
   window.head = s.window_head;
+  window.pointed = s.window_head_shape == WindowHead::pointed;
   window.profile = head_points(s);
+  // The head courses: from the one holding the springing (flat: the head)
+  // to the first whose top is at least half a course above the head.
+  if (window.pointed) {
+    window.spring = window.profile.front().y();
+    const Vec2 d = window.profile[1] - window.profile[0];
+    window.spring_slope = d.y() / d.x();
+  }
+  const double head_bottom = window.pointed ? window.spring : window.head;
+  for (int c = 0; c < model.n_courses; ++c) {
+    if (window.head_lo < 0 && course_z1(c) > head_bottom + 1e-12) window.head_lo = c;
+    if (window.head_lo >= 0 &&
+        (course_z1(c) >= window.head + 0.5 * model.course_height - 1e-12 || c + 1 == model.n_courses)) {
+      window.head_hi = c;
+      break;
+    }
+  }
+  // (No head course: a flat head at the top of the shell, under the tip.)
+  if (window.head_lo >= 0) window.head_top = course_z1(window.head_hi);
+  if (!window.pointed && window.head_lo >= 0) {
+    // The lintel bears on each jamb over half the wall left beside the
+    // opening at the inner surface at its top (the face's narrowest place).
+    const double room = spire_inner_inradius(s, window.head_top) * kTan8 - window.half_width;
+    window.lintel_half = room > 0.02 * s.window_width ? window.half_width + 0.5 * room : 0.0;
+  }
+  build_regions(window);
+  if (window.head_lo < 0) window.head_blocks.clear();
   auto has_window = [&](int k) {
     return std::find(s.window_faces.begin(), s.window_faces.end(), k) != s.window_faces.end();
+  };
+  // The face's courses [c_lo, c_hi] as one slab between the corner planes.
+  auto face_slab = [&](int k, int c_lo, int c_hi) {
+    const double z0 = course_z0(c_lo), z1 = course_z1(c_hi), zm = 0.5 * (z0 + z1);
+    const double am = 0.5 * (spire_outer_inradius(s, zm) + spire_inner_inradius(s, zm));
+    return intersect({outer_plane(s, k), inner_plane(s, k), z_at_least(z0), z_at_most(z1), low_corner_plane(k),
+                      high_corner_plane(k)},
+                     am * face_normal(k) + Vec3(0, 0, zm));
   };
 
   std::vector<bool> jambs_continue(8, true);  // aligned_above_windows: still continuing the jambs
   for (int c = 0; c < model.n_courses; ++c) {
-    const double z0 = c * model.course_height;
-    const double z1 = c + 1 == model.n_courses ? model.shell_top : (c + 1) * model.course_height;
+    const double z0 = course_z0(c);
+    const double z1 = course_z1(c);
     const double zm = 0.5 * (z0 + z1);
     const double am = 0.5 * (spire_outer_inradius(s, zm) + spire_inner_inradius(s, zm));
     const double face_width = 2.0 * am * kTan8;   // mid-wall, mid-course
     const double nominal = face_width / n;         // nominal stone width
     const bool odd = c % 2 == 1;
+    const bool head_course = c >= window.head_lo && c <= window.head_hi;
 
     for (int k = 0; k < 8; ++k) {
       const bool win = has_window(k);
       const bool window_course = win && z0 < window.head - 1e-12 && z1 > window.sill + 1e-12;
+      const bool zone_course = win && head_course;
       std::vector<double> joints;
       bool on_jambs = false;
       if (s.joint_pattern == SpireJointPattern::aligned_above_windows && win && jambs_continue[k] &&
@@ -344,9 +458,23 @@ SpireModel build_spire(const SpireSpec& s) {
           for (double& x : joints)
             for (double jamb : {-window.half_width, window.half_width})
               if (std::abs(x - jamb) < 0.25 * nominal) x = jamb;
-        std::sort(joints.begin(), joints.end());
-        joints.erase(std::unique(joints.begin(), joints.end()), joints.end());
       }
+      if (zone_course) {
+        // One zone stone takes what the head blocks leave of this course
+        // around the opening: no joint within s_zone (or a quarter stone
+        // beyond it), none at all if the stones outside would be slivers.
+        double s_zone = 0;
+        if (window.pointed)
+          s_zone = window.half_width + std::max(0.0, z1 - window.spring) * window.spring_slope;
+        else
+          s_zone = window.lintel_half;
+        const double inner_half = spire_inner_inradius(s, z1) * kTan8;
+        const bool whole_face = s_zone <= 0 || (window.pointed && inner_half - s_zone < 0.25 * nominal);
+        std::erase_if(joints, [&](double x) { return whole_face || std::abs(x) < s_zone + 0.25 * nominal; });
+        if (!whole_face) joints.push_back(-s_zone), joints.push_back(s_zone);
+      }
+      std::sort(joints.begin(), joints.end());
+      joints.erase(std::unique(joints.begin(), joints.end()), joints.end());
 
       const int n_stones = static_cast<int>(joints.size()) + 1;
       const double corner = am * kTan8;  // s of the corners at mid-wall
@@ -365,20 +493,18 @@ SpireModel build_spire(const SpireSpec& s) {
         } catch (const GeometryError& e) {
           throw GeometryError("spire: cannot build " + name + ": " + e.what());
         }
-        std::optional<std::vector<Polyhedron>> cut_pieces;
-        if (window_course) {
+        const bool zone_stone = zone_course && lo < 0 && hi > 0;
+        bool cut = false;
+        std::vector<Polyhedron> pieces;
+        if (window_course || zone_stone) {
           try {
-            cut_pieces = cut_by_window(stone, k, window);
+            cut = zone_stone || meets_opening(stone, k, window);
+            if (cut) pieces = cut_by_window(stone, k, window);
           } catch (const GeometryError& e) {
             throw GeometryError("spire: cannot cut the window out of " + name + ": " + e.what());
           }
         }
-        const bool cut = cut_pieces.has_value();
-        std::vector<Polyhedron> pieces;
-        if (cut)
-          pieces = std::move(*cut_pieces);
-        else
-          pieces.push_back(std::move(stone));
+        if (!cut) pieces.push_back(std::move(stone));
         if (cut) ++model.stones_cut_by_windows;
         for (size_t p = 0; p < pieces.size(); ++p) {
           SpireBlock b;
@@ -390,6 +516,36 @@ SpireModel build_spire(const SpireSpec& s) {
           b.piece = cut ? static_cast<int>(p) : -1;
           b.name = cut ? name + "_piece" + std::to_string(p) : name;
           if (cut) ++model.window_pieces;
+          model.blocks.push_back(std::move(b));
+        }
+      }
+
+      // The head blocks, once per window, with the lowest head course.
+      if (win && c == window.head_lo) {
+        const std::string prefix = "course" + zero_padded(c, course_digits) + "_face" + std::to_string(k);
+        Polyhedron slab;
+        try {
+          slab = face_slab(k, window.head_lo, window.head_hi);
+        } catch (const GeometryError& e) {
+          throw GeometryError("spire: cannot build the head courses of " + prefix + ": " + e.what());
+        }
+        for (size_t v = 0; v < window.head_blocks.size(); ++v) {
+          const std::string name = prefix + (window.pointed ? "_voussoir" + std::to_string(v) : "_lintel");
+          std::optional<Polyhedron> shape;
+          try {
+            shape = clip_all(slab, on_face(k, window.head_blocks[v]));
+          } catch (const GeometryError& e) {
+            throw GeometryError("spire: cannot build " + name + ": " + e.what());
+          }
+          if (!shape) throw GeometryError("spire: " + name + " is empty");
+          SpireBlock b;
+          b.shape = std::move(*shape);
+          b.kind = SpireBlockKind::window_piece;
+          b.course = c;
+          b.face = k;
+          b.piece = static_cast<int>(v);
+          b.name = name;
+          ++model.window_pieces;
           model.blocks.push_back(std::move(b));
         }
       }

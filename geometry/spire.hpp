@@ -19,7 +19,20 @@
 // and the octagon's corner — or a vertical joint plane perpendicular to the
 // face. A window is a prism through the wall, perpendicular to its face; a
 // stone it cuts is replaced by the convex pieces left over (left and right of
-// the jambs, below the sill, and above each straight segment of the head).
+// the jambs, below the sill). The head carries the masonry above it under
+// gravity, without tension or cohesion:
+//   pointed  voussoirs: one block above each straight segment of the arch,
+//            between joints normal to the arch (at the springing normal to
+//            the first segment, inclined; at the apex the vertical crown
+//            joint where the two arcs lean on each other). The pieces beside
+//            the head (the springers) get the matching inclined face.
+//   flat     a lintel spanning the opening and bearing on both jambs.
+// The head blocks span from the springing (flat: the head) to the first bed
+// joint at least half a course above the head, so the crown joint is at
+// least half a course tall and no bed joint cuts a voussoir; in those
+// courses the face's vertical joints around the head are replaced by one
+// joint each side at the edge of the head blocks. Above that,
+// aligned_above_windows continues the jambs' joints as before.
 //
 // Sizes, defaults and their sources: examples/spire/README.md.
 // No CGAL here; the builder (geometry/spire.cpp) uses it through
@@ -68,7 +81,7 @@ struct SpireSpec {
   double window_width = 0.3;         // between the jambs, centred on the face
   double window_head = 1.5;          // z of the top of the opening (apex of a pointed head)
   WindowHead window_head_shape = WindowHead::pointed;  // pointed: equilateral arch, rise = width·√3/2
-  int window_arch_segments = 1;      // straight segments per arc of a pointed head (1: fewest, biggest pieces)
+  int window_arch_segments = 1;      // straight segments per arc of a pointed head = voussoirs per arc
   double base_thickness = 0.3;       // the base block under course 0; 0 = no base block
 };
 
@@ -93,9 +106,12 @@ struct SpireBlock {
   SpireBlockKind kind = SpireBlockKind::stone;
   int course = -1;   // 0.. for stones and pieces, n_courses for the tip, -1 for the base
   int face = -1;     // 0..7 for stones and pieces, -1 for base and tip
-  int stone = -1;    // index within the face and course (pieces keep their stone's)
-  int piece = -1;    // index among the pieces of a cut stone, -1 otherwise
-  std::string name;  // "base", "tip", "course03_face5_stone1", "course01_face0_stone1_piece2"
+  int stone = -1;    // index within the face and course (pieces keep their stone's; -1 for head blocks)
+  int piece = -1;    // index among the pieces of a cut stone (or the voussoirs), -1 otherwise
+  // "base", "tip", "course03_face5_stone1", "course01_face0_stone1_piece2",
+  // and the head blocks "course04_face0_voussoir1" (0.. from the left
+  // springing; course = the lowest course they span), "course05_face0_lintel".
+  std::string name;
 };
 
 struct SpireModel {
@@ -103,8 +119,8 @@ struct SpireModel {
   int n_courses = 0;
   double course_height = 0;        // the actual pitch: (height - tip_height) / n_courses
   double shell_top = 0;            // z of the top of the shell = bottom of the tip
-  int stones_cut_by_windows = 0;   // 0 means no window splitting happened
-  int window_pieces = 0;
+  int stones_cut_by_windows = 0;   // stones replaced by pieces (or by head blocks); 0: no window splitting
+  int window_pieces = 0;           // pieces and head blocks (voussoirs, lintels)
 };
 
 // Validates (validate_spire) and builds. Every block has passed validate().

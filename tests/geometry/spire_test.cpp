@@ -334,6 +334,139 @@ TEST(Spire, CourseHeightAdjustsToAWholeNumberOfCourses) {
   EXPECT_EQ(count(build_spire(s), SpireBlockKind::base), 0);
 }
 
+// Faces fa of a and fb of b lie in one plane with opposite normals and
+// overlap with positive area (separating axis test in the plane).
+bool share_a_joint(const Polyhedron& a, size_t fa, const Polyhedron& b, size_t fb) {
+  const Vec3& n = a.normals[fa];
+  if ((n + b.normals[fb]).norm() > 1e-9 || std::abs(a.offsets[fa] + b.offsets[fb]) > 1e-9) return false;
+  auto overlap_along = [&](const Vec3& axis) {
+    double amin = 1e300, amax = -1e300, bmin = 1e300, bmax = -1e300;
+    for (int v : a.faces[fa]) {
+      amin = std::min(amin, axis.dot(a.vertices[v]));
+      amax = std::max(amax, axis.dot(a.vertices[v]));
+    }
+    for (int v : b.faces[fb]) {
+      bmin = std::min(bmin, axis.dot(b.vertices[v]));
+      bmax = std::max(bmax, axis.dot(b.vertices[v]));
+    }
+    return std::min(amax, bmax) - std::max(amin, bmin) > 1e-6;
+  };
+  for (const auto* side : {&a.faces[fa], &b.faces[fb]}) {
+    const Polyhedron& p = side == &a.faces[fa] ? a : b;
+    for (size_t i = 0; i < side->size(); ++i) {
+      const Vec3 e = p.vertices[(*side)[(i + 1) % side->size()]] - p.vertices[(*side)[i]];
+      if (!overlap_along(e.cross(n).normalized())) return false;
+    }
+  }
+  return true;
+}
+
+// The names of the blocks (not the base) that bear on nothing: no joint of
+// theirs with another block faces downwards. Such a block can only hang on
+// vertical joints, which carry no weight without normal force (no cohesion,
+// no tension): it falls under gravity.
+std::vector<std::string> blocks_without_bearing(const SpireModel& m) {
+  std::vector<Eigen::AlignedBox3d> boxes;
+  for (const auto& b : m.blocks) boxes.push_back(box_of(b.shape));
+  std::vector<std::string> out;
+  for (size_t i = 0; i < m.blocks.size(); ++i) {
+    if (m.blocks[i].kind == SpireBlockKind::base) continue;
+    const Polyhedron& a = m.blocks[i].shape;
+    bool bears = false;
+    for (size_t fa = 0; fa < a.faces.size() && !bears; ++fa) {
+      if (a.normals[fa].z() > -1e-6) continue;  // vertical or facing up
+      for (size_t j = 0; j < m.blocks.size() && !bears; ++j) {
+        if (j == i) continue;
+        Eigen::AlignedBox3d bi = boxes[i];
+        bi.extend(bi.min() - Vec3::Constant(1e-9)).extend(bi.max() + Vec3::Constant(1e-9));
+        if (!bi.intersects(boxes[j])) continue;
+        for (size_t fb = 0; fb < m.blocks[j].shape.faces.size() && !bears; ++fb)
+          bears = share_a_joint(a, fa, m.blocks[j].shape, fb);
+      }
+    }
+    if (!bears) out.push_back(m.blocks[i].name);
+  }
+  return out;
+}
+
+TEST(Spire, EveryBlockBearsOnTheMasonryBelow) {
+  // The default (pointed heads, joints continuing the jambs above the
+  // windows), flat heads on a bed joint and between bed joints, rounder
+  // arches, staggered joints and a coarse spire.
+  std::vector<SpireSpec> specs(7);
+  specs[1].window_head_shape = WindowHead::flat;
+  specs[2].window_head_shape = WindowHead::flat;
+  specs[2].window_head = 1.35;
+  specs[2].window_sill = 0.45;
+  specs[3].window_arch_segments = 3;
+  specs[4].joint_pattern = SpireJointPattern::staggered;
+  specs[4].window_head = 1.4;
+  specs[5].joint_pattern = SpireJointPattern::aligned;
+  specs[5].stones_per_face = 3;
+  specs[6].stones_per_face = 1;
+  specs[6].course_height = 0.6;
+  for (size_t i = 0; i < specs.size(); ++i) {
+    const SpireModel m = build_spire(specs[i]);
+    const auto hanging = blocks_without_bearing(m);
+    EXPECT_TRUE(hanging.empty()) << "spec " << i << ": " << hanging.size() << " blocks, e.g. " << hanging.front();
+    if (i > 0) expect_no_overlaps(m);
+  }
+  // The check sees a hanging block: without its springer, the voussoir
+  // touches only the crown and the mitre joints, which are vertical.
+  SpireModel m = build_spire(SpireSpec{});
+  std::erase_if(m.blocks, [](const auto& b) { return b.name == "course04_face0_stone0_piece0"; });
+  EXPECT_EQ(blocks_without_bearing(m), std::vector<std::string>{"course04_face0_voussoir0"});
+}
+
+TEST(Spire, PointedHeadsAreTwoVoussoirsOnInclinedSpringers) {
+  const SpireSpec s;
+  const SpireModel m = build_spire(s);
+  // 402 blocks: base, 400 stones and pieces, tip. Before the heads were
+  // voussoirs, each window face had 7 blocks in courses 4 and 5 (a stone
+  // each side of the head, the two wedges over the arch, three stones over
+  // them); now it has 4: two springers and two voussoirs spanning both
+  // courses (414 - 4 * 3 = 402).
+  EXPECT_EQ(m.blocks.size(), 402u);
+  EXPECT_EQ(m.window_pieces, 16);  // per window face: 2 springers, 2 voussoirs
+  const double spring = s.window_head - s.window_width * std::sqrt(3.0) / 2;
+  for (int k : s.window_faces) {
+    const std::string f = "course04_face" + std::to_string(k);
+    for (const auto& b : m.blocks) {
+      if (b.name != f + "_voussoir0" && b.name != f + "_voussoir1") continue;
+      double zmin = 1e9, zmax = -1e9;
+      for (const auto& v : b.shape.vertices) zmin = std::min(zmin, v.z()), zmax = std::max(zmax, v.z());
+      EXPECT_NEAR(zmin, spring, 1e-9) << b.name;  // from the springing
+      EXPECT_NEAR(zmax, 1.8, 1e-9) << b.name;     // to the top of course 5: a crown joint 0.3 m tall
+      // The springing joint: normal to the chord, 30° from horizontal.
+      bool inclined = false;
+      for (const auto& n : b.shape.normals) inclined = inclined || std::abs(n.z() + std::cos(kPi / 6)) < 1e-9;
+      EXPECT_TRUE(inclined) << b.name;
+    }
+    EXPECT_TRUE(in_some_block(m, wall_point(s, k, 0.3, 1.25)));  // the springer beside the head
+  }
+  // The jambs' joints continue from course 6 (JointsContinueTheJambsAboveTheWindows).
+  EXPECT_FALSE(in_some_block(m, wall_point(s, 0, 0.5 * s.window_width, 1.95)));
+}
+
+TEST(Spire, FlatHeadsHaveALintelBearingOnBothJambs) {
+  SpireSpec s;
+  s.window_head_shape = WindowHead::flat;
+  const SpireModel m = build_spire(s);
+  // Per window face in courses 4 and 5: a stone each side of the opening in
+  // course 4 (the stone between the jambs is all opening), the lintel
+  // (|s| <= w/2 + b) and a stone each side in course 5: 5 blocks where
+  // pointed heads have 4 (two springers, two voussoirs), so 402 + 4 = 406.
+  EXPECT_EQ(m.blocks.size(), 406u);
+  EXPECT_EQ(m.window_pieces, 4);
+  for (int k : s.window_faces) {
+    // No vertical joint above the jambs in the lintel's course: the jamb
+    // plane at mid-course 5 is inside the lintel.
+    EXPECT_TRUE(in_some_block(m, wall_point(s, k, 0.5 * s.window_width, 1.65))) << "face " << k;
+    EXPECT_TRUE(in_some_block(m, wall_point(s, k, -0.5 * s.window_width, 1.65))) << "face " << k;
+  }
+  EXPECT_FALSE(in_some_block(m, wall_point(s, 0, 0.5 * s.window_width, 1.95)));  // course 6: the jambs again
+}
+
 void expect_spec_error(const SpireSpec& s, const std::string& field, const std::string& fragment) {
   try {
     validate_spire(s);
