@@ -8,6 +8,8 @@ packages=(
   libtomlplusplus-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-matplotlib python3-h5py
+  # scripts/fuzz.sh: clang++ with libFuzzer (libclang-rt) and clang's OpenMP
+  clang libclang-rt-14-dev libomp-dev
 )
 missing=()
 for p in "${packages[@]}"; do
