@@ -6,6 +6,7 @@
 #include <functional>
 #include <iostream>
 #include <map>
+#include <numbers>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -13,6 +14,9 @@
 #include <vector>
 
 #include "analytical/analytical.hpp"
+#include "analytical/refined_lambda.hpp"
+#include "apps/dem_frequency.hpp"
+#include "io/deck.hpp"
 
 namespace pa = polydem::analytical;
 
@@ -37,6 +41,14 @@ models (lengths in m, accelerations in g unless named, times in s):
                     [--a_max 5] [--points 80] [--tol 1e-3] [--linear] [--restitution c]
   cracked-cone-p    p of the spire cracked below its solid tip vs the cracked height H_bar
                     [--H 9.4 --r_b 1.06 --tip 3.4 --thickness 0.25 --density 2600 --count 25]
+  refined-lambda    static collapse multiplier of the block model (plane and stepped
+                    cracks through a base pivot, 16 directions; docs/analytical.md 5)
+                    [--deck FILE (its [spire]; default: the default [spire])] [--no-windows]
+  dem-frequency     first natural frequency of the block model by a DEM free vibration,
+                    against eq. 4 with E = kn * course height (docs/analytical.md 6)
+                    [--deck FILE] [--no-windows] [--duration 0.5] [--settle 0.05]
+                    [--pulse_g 0.005] [--pulse_period 0.02] [--interval 2e-4]
+                    [--keep_damping] [--threads N] [--csv FILE (t, u of the tip)]
 common: [--g 9.81] [--json]
 )";
 
@@ -86,7 +98,7 @@ struct Options {
   }
 };
 
-const std::set<std::string> kFlags = {"json", "linear", "help"};
+const std::set<std::string> kFlags = {"json", "linear", "help", "no_windows", "keep_damping"};
 
 std::string normalise(std::string k) {
   for (char& c : k)
@@ -467,6 +479,175 @@ int model_cracked(Options& o) {
   return 0;
 }
 
+// The spire scene of --deck (or the default [spire]), windows removed on
+// --no-windows.
+polydem::SceneSpec spire_scene(Options& o) {
+  const std::string deck = o.text("deck", "");
+  std::vector<std::string> overrides;
+  if (o.flag("no_windows")) overrides.push_back("spire.window_faces=[]");
+  polydem::SceneSpec s = deck.empty() ? polydem::parse_deck("[spire]\n", "<default [spire]>", overrides)
+                                      : polydem::read_deck(deck, overrides);
+  if (!s.spire) throw BadInput("the deck " + deck + " has no [spire]");
+  return s;
+}
+
+double spire_density(const polydem::SceneSpec& s, const polydem::SpireModel& m) {
+  for (const auto& sb : m.blocks)
+    for (const auto& b : s.blocks)
+      if (b.name == sb.name && sb.kind != polydem::SpireBlockKind::base) return b.density;
+  return 2600.0;
+}
+
+std::string crack_text(const pa::Mechanism& m) {
+  char buf[200];
+  if (m.family != pa::CrackFamily::stepped) {
+    std::snprintf(buf, sizeof buf, "beta in (%.2f, %.2f] deg", m.beta_low * 180.0 / std::numbers::pi, m.beta_high * 180.0 / std::numbers::pi);
+    return buf;
+  }
+  std::string s = "trailing course " + std::to_string(m.trailing_course) + ", first course per face";
+  for (std::size_t k = 0; k < m.face_course.size(); ++k) {
+    s += k ? ',' : ' ';
+    s += std::to_string(m.face_course[k]);
+  }
+  return s;
+}
+
+std::string mechanism_json(const pa::Mechanism& m) {
+  std::string s = "{\"direction\":" + jstr(m.direction.name) + ",\"azimuth_rad\":" + jnum(m.direction.azimuth) +
+                  ",\"family\":" + jstr(pa::to_string(m.family)) + ",\"lambda\":" + jnum(m.lambda) +
+                  ",\"blocks\":" + std::to_string(m.blocks.size()) + ",\"mass_kg\":" + jnum(m.mass) +
+                  ",\"centroid_m\":[" + jnum(m.centroid.x()) + "," + jnum(m.centroid.y()) + "," + jnum(m.centroid.z()) +
+                  "],\"pivot_m\":[" + jnum(m.pivot.x()) + "," + jnum(m.pivot.y()) + "," + jnum(m.pivot.z()) + "]";
+  if (m.family != pa::CrackFamily::stepped) {
+    s += ",\"beta_low_rad\":" + jnum(m.beta_low) + ",\"beta_high_rad\":" + jnum(m.beta_high);
+  } else {
+    s += ",\"trailing_course\":" + std::to_string(m.trailing_course) + ",\"face_course\":[";
+    for (std::size_t k = 0; k < m.face_course.size(); ++k) {
+      if (k) s += ',';
+      s += std::to_string(m.face_course[k]);
+    }
+    s += "]";
+  }
+  return s + "}";
+}
+
+int model_refined(Options& o) {
+  const bool json = o.flag("json");
+  const double g = o.positive("g", pa::standard_gravity);
+  const polydem::SceneSpec scene = spire_scene(o);
+  o.check_all_used();
+  const polydem::SpireModel model = polydem::build_spire(*scene.spire);
+  const double rho = spire_density(scene, model);
+  pa::RefinedLambdaOptions opt;
+  opt.g = g;
+  const auto r = pa::refined_lambda(model, rho, opt);
+  const auto& sp = *scene.spire;
+  const double l1 = pa::lambda_cone(sp.base_inradius, sp.height);
+  const auto l2 = pa::governing_crack(sp.base_inradius, sp.height);
+  const std::string src = scene.deck_path;
+  if (json) {
+    std::cout << "{\"model\":\"refined-lambda\",\"deck\":" << jstr(src) << ",\"blocks\":" << model.blocks.size()
+              << ",\"courses\":" << model.n_courses << ",\"windows\":" << sp.window_faces.size()
+              << ",\"density_kg_m3\":" << jnum(rho) << ",\"total_mass_kg\":" << jnum(r.total_mass)
+              << ",\"candidates\":" << r.candidates << ",\"lambda_eq1\":" << jnum(l1)
+              << ",\"lambda_eq2\":" << jnum(l2.lambda) << ",\"lambda_refined\":" << jnum(r.governing.lambda)
+              << ",\"governing\":" << mechanism_json(r.governing) << ",\"plane\":[";
+    for (std::size_t i = 0; i < r.plane.size(); ++i) std::cout << (i ? "," : "") << mechanism_json(r.plane[i]);
+    std::cout << "],\"plane_cover\":[";
+    for (std::size_t i = 0; i < r.plane_cover.size(); ++i) std::cout << (i ? "," : "") << mechanism_json(r.plane_cover[i]);
+    std::cout << "],\"stepped\":[";
+    for (std::size_t i = 0; i < r.stepped.size(); ++i) std::cout << (i ? "," : "") << mechanism_json(r.stepped[i]);
+    std::cout << "]}\n";
+    return 0;
+  }
+  std::cout << "refined static lambda on the block model (rigid part above a crack, pivot on the base)\n"
+            << "  spire    " << src << ": H = " << fmt(sp.height) << " m, r_b = " << fmt(sp.base_inradius)
+            << " m (mid-wall apothem), " << model.blocks.size() << " blocks, " << model.n_courses << " courses, "
+            << sp.window_faces.size() << " windows, density " << fmt(rho) << " kg/m3, free mass "
+            << fmt(r.total_mass) << " kg\n"
+            << "  direction = of the equivalent static force; the pivot is the base edge/corner that way\n"
+            << "  direction    family       lambda     blocks  mass [kg]   crack\n";
+  for (std::size_t i = 0; i < r.plane.size(); ++i)
+    for (const auto* m : {&r.plane[i], &r.plane_cover[i], &r.stepped[i]}) {
+      char line[320];
+      std::snprintf(line, sizeof line, "  %-11s  %-11s  %-9.5f  %-6zu  %-10.1f  %s\n", m->direction.name.c_str(),
+                    pa::to_string(m->family), m->lambda, m->blocks.size(), m->mass, crack_text(*m).c_str());
+      std::cout << line;
+    }
+  std::cout << "  eq. 1 lambda = " << fmt(l1) << ", eq. 2 governing = " << fmt(l2.lambda) << " (r_b, H of the spire)\n"
+            << "  refined lambda = " << fmt(r.governing.lambda) << ": " << r.governing.direction.name << ", "
+            << pa::to_string(r.governing.family) << " crack, " << crack_text(r.governing) << ", "
+            << r.governing.blocks.size() << " blocks, " << fmt(r.governing.mass) << " kg ("
+            << r.candidates << " mechanisms evaluated)\n";
+  return 0;
+}
+
+int model_dem_frequency(Options& o) {
+  const bool json = o.flag("json");
+  polydem::DemFrequencyOptions d;
+  d.duration = o.positive("duration", d.duration);
+  d.settle_time = o.number("settle", d.settle_time);
+  d.pulse_g = o.positive("pulse_g", d.pulse_g);
+  d.pulse_period = o.positive("pulse_period", d.pulse_period);
+  d.history_interval = o.positive("interval", d.history_interval);
+  d.keep_damping = o.flag("keep_damping");
+  const double th = o.number("threads", 0);
+  d.threads = static_cast<int>(th);
+  const std::string csv = o.text("csv", "");
+  const polydem::SceneSpec scene = spire_scene(o);
+  o.check_all_used();
+  if (d.settle_time < 0) throw BadInput("--settle must be >= 0");
+  const auto r = polydem::measure_dem_frequency(scene, d);
+  if (!csv.empty()) {
+    std::ofstream f(csv);
+    if (!f) throw BadInput("cannot write " + csv);
+    f << "t_s,u_m\n";
+    char line[96];
+    for (std::size_t i = 0; i < r.t.size(); ++i) {
+      std::snprintf(line, sizeof line, "%.9g,%.9g\n", r.t[i], r.u[i]);
+      f << line;
+    }
+  }
+  const double ratio = r.f_beam_hz > 0 ? r.f_fourier_hz / r.f_beam_hz : 0.0;
+  if (json) {
+    std::cout << "{\"model\":\"dem-frequency\",\"deck\":" << jstr(scene.deck_path) << ",\"tip\":" << jstr(r.tip)
+              << ",\"blocks\":" << r.blocks << ",\"windows\":" << scene.spire->window_faces.size()
+              << ",\"damping_s\":" << jnum(d.keep_damping ? scene.joint.damping : 0.0)
+              << ",\"pulse_g\":" << jnum(d.pulse_g) << ",\"pulse_period_s\":" << jnum(d.pulse_period)
+              << ",\"settle_s\":" << jnum(d.settle_time) << ",\"duration_s\":" << jnum(d.duration)
+              << ",\"status\":" << jstr(r.status) << ",\"unstable\":" << (r.unstable ? "true" : "false")
+              << ",\"steps\":" << r.steps << ",\"time_step_s\":" << jnum(r.time_step)
+              << ",\"wall_s\":" << jnum(r.wall_seconds) << ",\"samples\":" << r.samples
+              << ",\"amplitude_m\":" << jnum(r.amplitude_m) << ",\"f_dem_fourier_Hz\":" << jnum(r.f_fourier_hz)
+              << ",\"f_dem_zero_crossing_Hz\":" << jnum(r.f_zero_crossing_hz)
+              << ",\"zero_crossings\":" << r.zero_crossings << ",\"kn_Pa_m\":" << jnum(r.kn)
+              << ",\"course_height_m\":" << jnum(r.course_height) << ",\"E_eq_Pa\":" << jnum(r.E_eq)
+              << ",\"outer_apothem_m\":" << jnum(r.outer_apothem) << ",\"thickness_m\":" << jnum(r.wall_thickness)
+              << ",\"m_b_kg_m\":" << jnum(r.section.mass_per_height)
+              << ",\"EI_b_Nm2\":" << jnum(r.section.bending_stiffness) << ",\"Omega1\":" << jnum(r.Omega1)
+              << ",\"f_beam_Hz\":" << jnum(r.f_beam_hz) << ",\"ratio_dem_to_beam\":" << jnum(ratio) << "}\n";
+    return r.unstable ? 1 : 0;
+  }
+  std::cout << "first natural frequency of the block model, DEM free vibration against eq. 4\n"
+            << "  spire    " << scene.deck_path << ": " << r.blocks << " blocks, " << scene.spire->window_faces.size()
+            << " windows, tip block '" << r.tip << "'\n"
+            << "  run      gravity, joint damping " << (d.keep_damping ? fmt(scene.joint.damping) : std::string("0"))
+            << " s, sine pulse " << fmt(d.pulse_g) << " g x " << fmt(d.pulse_period) << " s at t = "
+            << fmt(d.settle_time) << " s, free vibration " << fmt(d.duration) << " s; " << r.steps
+            << " steps of " << fmt(r.time_step) << " s, " << fmt(r.wall_seconds, 3) << " s wall, status " << r.status
+            << (r.unstable ? " (UNSTABLE: " + r.instability + ")" : std::string()) << "\n"
+            << "  DEM      tip amplitude " << fmt(r.amplitude_m) << " m; f = " << fmt(r.f_fourier_hz)
+            << " Hz (Fourier peak), " << fmt(r.f_zero_crossing_hz) << " Hz (" << r.zero_crossings
+            << " zero crossings)\n"
+            << "  beam     E_eq = kn h = " << fmt(r.kn) << " Pa/m x " << fmt(r.course_height) << " m = " << fmt(r.E_eq)
+            << " Pa; hollow octagon a_out = " << fmt(r.outer_apothem) << " m, t = " << fmt(r.wall_thickness)
+            << " m: m_b = " << fmt(r.section.mass_per_height) << " kg/m, EI_b = " << fmt(r.section.bending_stiffness)
+            << " N m2; Omega1 = " << fmt(r.Omega1) << ", H = " << fmt(r.height) << " m: f = " << fmt(r.f_beam_hz)
+            << " Hz\n"
+            << "  ratio    DEM / beam = " << fmt(ratio, 4) << "\n";
+  return r.unstable ? 1 : 0;
+}
+
 }  // namespace
 
 int run_analytic_command(const std::vector<std::string>& args) {
@@ -483,11 +664,13 @@ int run_analytic_command(const std::vector<std::string>& args) {
       {"rocking", model_rocking},
       {"collapse-diagram", model_collapse},
       {"cracked-cone-p", model_cracked},
+      {"refined-lambda", model_refined},
+      {"dem-frequency", model_dem_frequency},
   };
   auto it = models.find(model);
   if (it == models.end()) {
     std::cerr << "polydem analytic: unknown model '" << model
-              << "' (expected lambda, beam, rocking, collapse-diagram, cracked-cone-p)\n";
+              << "' (expected lambda, beam, rocking, collapse-diagram, cracked-cone-p, refined-lambda, dem-frequency)\n";
     return 2;
   }
   try {
@@ -500,6 +683,8 @@ int run_analytic_command(const std::vector<std::string>& args) {
   } catch (const BadInput& e) {
     std::cerr << "polydem analytic " << model << ": " << e.what() << "\n";
   } catch (const std::invalid_argument& e) {
+    std::cerr << "polydem analytic " << model << ": " << e.what() << "\n";
+  } catch (const std::runtime_error& e) {  // deck errors (complete messages), failed runs
     std::cerr << "polydem analytic " << model << ": " << e.what() << "\n";
   }
   return 2;
