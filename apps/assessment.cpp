@@ -129,4 +129,37 @@ Assessment AssessmentMonitor::finish(const Simulation& sim) {
   return result_;
 }
 
+void AssessmentMonitor::save(ByteWriter& w) const {
+  w.put(collapsed_);
+  w.put(static_cast<std::int32_t>(first_sign_));
+  w.put(reversed_);
+  const Assessment& a = result_;
+  w.put(a.status);
+  w.put(a.collapse_mode);
+  for (double x : {a.collapse_time, a.damage_time, a.ground_acceleration_at_damage, a.max_displacement}) w.put(x);
+  w.put(a.max_displacement_block);
+  w.put(a.max_residual_displacement);
+  w.put(a.monitor_block);
+  w.put(a.moved_blocks);
+  for (double x : {a.crack_angle_deg, a.crack_low_z, a.crack_high_z}) w.put(x);
+}
+
+void AssessmentMonitor::load(ByteReader& r) {
+  r.get(collapsed_);
+  std::int32_t sign = 0;
+  r.get(sign);
+  first_sign_ = sign;
+  r.get(reversed_);
+  Assessment& a = result_;
+  r.get(a.status);
+  r.get(a.collapse_mode);
+  for (double* x : {&a.collapse_time, &a.damage_time, &a.ground_acceleration_at_damage, &a.max_displacement})
+    r.get(*x);
+  r.get(a.max_displacement_block);
+  r.get(a.max_residual_displacement);
+  r.get(a.monitor_block);
+  r.get(a.moved_blocks);
+  for (double* x : {&a.crack_angle_deg, &a.crack_low_z, &a.crack_high_z}) r.get(*x);
+}
+
 }  // namespace polydem

@@ -37,6 +37,10 @@ class AssessmentMonitor {
   void observe(const Simulation& sim);  // cheap: samples every 16th step
   bool collapsed() const { return collapsed_; }
   Assessment finish(const Simulation& sim);
+  // Checkpoints: what observe() has accumulated (the start positions come
+  // from the scene at t = 0, where a restart builds the monitor).
+  void save(ByteWriter& w) const;
+  void load(ByteReader& r);
 
  private:
   Vec3 displacement(const Simulation& sim, int i) const;

@@ -51,6 +51,8 @@ class RestingWeight : public CheckMonitor {
   RestingWeight(const CheckSpec& c, const SceneSpec& s, const Simulation& sim)
       : c_(c), up_(up_direction(s)), i_(block_index(s, c, sim)), g_(s.simulation.gravity.norm()) {}
   void observe(const Simulation&) override {}
+  void save(ByteWriter&) const override {}
+  void load(ByteReader&) override {}
   CheckResult finish(const Simulation& sim) override {
     const double carried = sim.blocks().state.contact_force[i_].dot(up_);
     return result(c_, "N", carried, sim.blocks().props.mass[i_] * g_, true,
@@ -75,6 +77,8 @@ class NoDrift : public CheckMonitor {
   CheckResult finish(const Simulation&) override {
     return result(c_, "m", worst_, 0.0, false, "largest displacement of the centroid during the run");
   }
+  void save(ByteWriter& w) const override { w.put(worst_); }
+  void load(ByteReader& r) override { r.get(worst_); }
 
  private:
   CheckSpec c_;
@@ -119,6 +123,14 @@ class SlideAcceleration : public CheckMonitor {
     return result(c_, "m/s^2", a, expected, true,
                   "mean acceleration down the slope over the second half of the run");
   }
+  void save(ByteWriter& w) const override {
+    w.put(has_half_);
+    for (double x : {t1_, v1_, t2_, v2_}) w.put(x);
+  }
+  void load(ByteReader& r) override {
+    r.get(has_half_);
+    for (double* x : {&t1_, &v1_, &t2_, &v2_}) r.get(*x);
+  }
 
  private:
   CheckSpec c_;
@@ -134,6 +146,8 @@ class Stick : public CheckMonitor {
   Stick(const CheckSpec& c, const SceneSpec& s, const Simulation& sim)
       : c_(c), i_(block_index(s, c, sim)), slope_(slope_of(s)), x0_(sim.blocks().state.position[i_]) {}
   void observe(const Simulation&) override {}
+  void save(ByteWriter&) const override {}
+  void load(ByteReader&) override {}
   CheckResult finish(const Simulation& sim) override {
     const double d = (sim.blocks().state.position[i_] - x0_).dot(slope_.down);
     return result(c_, "m", d, 0.0, false, "displacement down the slope at the end of the run");
@@ -226,6 +240,14 @@ class RockingOnset : public CheckMonitor {
     return result(c_, "g", found_ ? onset_ : std::numeric_limits<double>::quiet_NaN(), rg_.b / rg_.h, true,
                   "ground acceleration (in g) when the heel first opens; expected b/h");
   }
+  void save(ByteWriter& w) const override {
+    w.put(found_);
+    w.put(onset_);
+  }
+  void load(ByteReader& r) override {
+    r.get(found_);
+    r.get(onset_);
+  }
 
  private:
   CheckSpec c_;
@@ -304,6 +326,14 @@ class FreeRocking : public CheckMonitor {
     note << "; Housner/eq. 10 with alpha = " << rg_.alpha << " rad";
     return result(c_, "-", worst, rg_.restitution, true, note.str());
   }
+  void save(ByteWriter& w) const override {
+    for (double x : {theta0_, last_theta_, first_impact_, peak_}) w.put(x);
+    w.put(amplitudes_);
+  }
+  void load(ByteReader& r) override {
+    for (double* x : {&theta0_, &last_theta_, &first_impact_, &peak_}) r.get(*x);
+    r.get(amplitudes_);
+  }
 
  private:
   CheckSpec c_;
@@ -347,6 +377,18 @@ class EnergyCheck : public CheckMonitor {
                            "largest growth of kinetic+potential+strain energy beyond the load work, relative");
     r.passed = worst_growth_ / ref <= c_.tolerance;
     return r;
+  }
+  void save(ByteWriter& w) const override {
+    w.put(first_);
+    for (double x : {e0_.kinetic, e0_.gravitational, e0_.strain, e0_.slip, e0_.damping, e0_.load_work, e0_.balance,
+                     reference_, worst_drift_, worst_growth_})
+      w.put(x);
+  }
+  void load(ByteReader& r) override {
+    r.get(first_);
+    for (double* x : {&e0_.kinetic, &e0_.gravitational, &e0_.strain, &e0_.slip, &e0_.damping, &e0_.load_work,
+                      &e0_.balance, &reference_, &worst_drift_, &worst_growth_})
+      r.get(*x);
   }
 
  private:

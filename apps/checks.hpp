@@ -27,6 +27,11 @@ class CheckMonitor {
   // Called after every step.
   virtual void observe(const Simulation& sim) = 0;
   virtual CheckResult finish(const Simulation& sim) = 0;
+  // Checkpoints: what observe() has accumulated. What the constructor took
+  // from the scene at t = 0 is not saved: a restart builds the monitors on
+  // the scene at t = 0 and then loads.
+  virtual void save(ByteWriter& w) const = 0;
+  virtual void load(ByteReader& r) = 0;
 };
 
 // Throws std::runtime_error naming the deck line for a check that cannot be

@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <iostream>
 
 int main(int argc, char** argv) {
@@ -17,10 +18,13 @@ int main(int argc, char** argv) {
   auto* run_cmd = app.add_subcommand("run", "Run a deck: writes DIR/summary.json and DIR/results.h5");
   run_cmd->add_option("deck", run.deck_path, "Deck file (TOML)");
   run_cmd->add_flag("--default", run.use_default, "Run the built-in default deck (the main job)");
-  run_cmd->add_option("--out", run.out_dir, "Output directory")->capture_default_str();
+  auto* run_out = run_cmd->add_option("--out", run.out_dir, "Output directory")->capture_default_str();
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (0: OMP_NUM_THREADS or all cores)");
   run_cmd->add_option("--set", run.overrides, "Override a deck key: section.key=value (repeatable)");
   run_cmd->add_flag("--quiet", run.quiet, "No progress or report on stderr");
+  run_cmd->add_option("--restart", run.restart_dir,
+                      "Continue from DIR/checkpoint.bin (output.checkpoint_interval) and write the results into DIR; "
+                      "give the same deck and --set options as the original run");
 
   polydem::CollapseOptions col;
   auto* collapse_cmd = app.add_subcommand("collapse", "Collapse acceleration under a constant horizontal acceleration");
@@ -67,6 +71,12 @@ int main(int argc, char** argv) {
   if (run_cmd->parsed()) {
     if (run.deck_path.empty() && !run.use_default) {
       std::cerr << "polydem run: give a deck file or --default\n";
+      return polydem::exit_bad_input;
+    }
+    if (!run.restart_dir.empty() && run_out->count() > 0 &&
+        std::filesystem::path(run.out_dir).lexically_normal() !=
+            std::filesystem::path(run.restart_dir).lexically_normal()) {
+      std::cerr << "polydem run: --restart DIR writes its results into DIR; drop --out or give the same directory\n";
       return polydem::exit_bad_input;
     }
     return polydem::run_command(run);

@@ -1,5 +1,6 @@
 #include "apps/run_command.hpp"
 
+#include "apps/checkpoint.hpp"
 #include "apps/scene_runner.hpp"
 #include "geometry/polyhedron.hpp"
 #include "io/atomic_file.hpp"
@@ -13,8 +14,11 @@
 #include <omp.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 #include <unistd.h>
 
 #ifndef POLYDEM_VERSION
@@ -72,6 +76,13 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   s.set("free_blocks", r.free_blocks);
   s.set("contact_detections", r.detections);
   s.set("subcontact_updates", r.subcontact_updates);
+  if (r.checkpoints > 0) {
+    Json c = Json::object();
+    c.set("written", r.checkpoints);
+    c.set("state_bytes", r.checkpoint_bytes);
+    c.set("wall_seconds", r.checkpoint_wall_seconds);
+    s.set("checkpoints", std::move(c));
+  }
   s.set("threads", threads);
   s.set("wall_seconds", r.wall_seconds);
   s.set("subcontact_updates_per_second", r.wall_seconds > 0 ? r.subcontact_updates / r.wall_seconds : 0.0);
@@ -173,6 +184,34 @@ class SnapshotWriter {
     if (!joints_series_.empty()) write_pvd(dir_ + "/joints.pvd", joints_series_);
   }
 
+  // Checkpoints: the series so far. A restart continues the numbering and
+  // overwrites the snapshots written after the checkpoint.
+  void save(ByteWriter& w) const {
+    w.put(static_cast<std::int32_t>(count_));
+    for (const auto* series : {&blocks_, &joints_series_}) {
+      w.put(static_cast<std::uint64_t>(series->size()));
+      for (const PvdEntry& e : *series) {
+        w.put(e.time);
+        w.put(e.file);
+      }
+    }
+  }
+  void load(ByteReader& r) {
+    std::int32_t count = 0;
+    r.get(count);
+    count_ = count;
+    for (auto* series : {&blocks_, &joints_series_}) {
+      std::uint64_t n = 0;
+      r.get(n);
+      if (n > r.remaining()) throw StateFormatError("snapshot series: count beyond the data");
+      series->resize(static_cast<std::size_t>(n));
+      for (PvdEntry& e : *series) {
+        r.get(e.time);
+        r.get(e.file);
+      }
+    }
+  }
+
  private:
   std::string dir_;
   bool joints_;
@@ -202,8 +241,44 @@ int run_command(const RunOptions& o) {
     std::cerr << "polydem: error: " << e.what() << "\n";
     return exit_bad_input;
   }
+  // Checkpoints and restarts: the fingerprint ties a checkpoint to the deck
+  // text, the overrides, the record's bytes and the polydem version.
+  const std::string out_dir = o.restart_dir.empty() ? o.out_dir : o.restart_dir;
+  std::string restart_state;
+  std::uint64_t fingerprint = 0;
+  if (spec.output.checkpoint_interval > 0 || !o.restart_dir.empty()) {
+    std::string record_bytes;
+    if (spec.ground_motion.kind == GroundMotionKind::record) {
+      std::ifstream in(spec.ground_motion.record_path, std::ios::binary);
+      std::ostringstream ss;
+      ss << in.rdbuf();
+      record_bytes = ss.str();
+    }
+    fingerprint = deck_fingerprint(spec.deck_text, o.overrides, record_bytes, POLYDEM_VERSION);
+  }
+  if (!o.restart_dir.empty()) {
+    try {
+      const std::string path = o.restart_dir + "/" + kCheckpointFile;
+      restart_state = decode_checkpoint(read_checkpoint_file(path), fingerprint, path);
+    } catch (const std::exception& e) {
+      std::cerr << "polydem: error: " << e.what() << "\n";
+      return exit_bad_input;
+    }
+  }
+
   RunControl control;
   control.threads = o.threads;
+  if (!o.restart_dir.empty()) control.restart = &restart_state;
+  if (spec.output.checkpoint_interval > 0) {
+    control.checkpoint = [&out_dir, fingerprint, made = false](const std::string& state) mutable {
+      if (!made) {
+        std::filesystem::create_directories(out_dir);
+        made = true;
+      }
+      write_file_atomic(out_dir + "/" + kCheckpointFile, encode_checkpoint(fingerprint, state));
+    };
+  }
+  if (const char* kill = std::getenv("POLYDEM_KILL_AT_STEP")) control.kill_at_step = std::atol(kill);
   if (!o.quiet) {
     const bool tty = isatty(STDERR_FILENO);
     control.progress_every = 2000;
@@ -221,12 +296,18 @@ int run_command(const RunOptions& o) {
   }
   std::unique_ptr<SnapshotWriter> snapshots;
   if (spec.output.snapshot_interval > 0) {
-    snapshots = std::make_unique<SnapshotWriter>(o.out_dir + "/vtk", spec.output.snapshot_joints);
+    snapshots = std::make_unique<SnapshotWriter>(out_dir + "/vtk", spec.output.snapshot_joints);
     control.snapshot = [&snapshots](const Simulation& sim, double t) { snapshots->write(sim, t); };
+    control.save_extra = [&snapshots](ByteWriter& w) { snapshots->save(w); };
+    control.load_extra = [&snapshots](ByteReader& r) { snapshots->load(r); };
   }
   RunReport report;
   try {
     report = run_scene(spec, control);
+  } catch (const StateFormatError& e) {
+    std::cerr << "\npolydem: error: " << o.restart_dir << "/" << kCheckpointFile
+              << ": the checkpoint does not fit this scene: " << e.what() << "\n";
+    return exit_bad_input;
   } catch (const InstabilityError& e) {
     std::cerr << "\npolydem: stopped: " << e.what() << "\n";
     if (snapshots) snapshots->finish();  // the snapshots before the instability stay readable
@@ -238,9 +319,9 @@ int run_command(const RunOptions& o) {
   if (!o.quiet && isatty(STDERR_FILENO)) std::cerr << "\n";
   if (snapshots) snapshots->finish();
 
-  std::filesystem::create_directories(o.out_dir);
+  std::filesystem::create_directories(out_dir);
   {
-    ResultsFile h5(o.out_dir + "/results.h5");
+    ResultsFile h5(out_dir + "/results.h5");
     h5.write_string("/deck", spec.deck_text);
     h5.write_attribute("/deck", "path", spec.deck_path);
     h5.write_attribute("/deck", "polydem_version", POLYDEM_VERSION);
@@ -249,16 +330,16 @@ int run_command(const RunOptions& o) {
     h5.commit();
   }
   if (report.unstable) {
-    write_vtu(o.out_dir + "/last_good_state.vtu", report.final_shapes);
+    write_vtu(out_dir + "/last_good_state.vtu", report.final_shapes);
     if (snapshots) snapshots->finish();
   }
-  write_file_atomic(o.out_dir + "/summary.json", summary_json(spec, report, omp_get_max_threads()).dump(2) + "\n");
+  write_file_atomic(out_dir + "/summary.json", summary_json(spec, report, omp_get_max_threads()).dump(2) + "\n");
   if (report.unstable) {
-    std::cerr << "\npolydem: stopped: " << report.instability << "\npolydem: last good state in " << o.out_dir
-              << "/last_good_state.vtu, results so far in " << o.out_dir << "/summary.json and results.h5\n";
+    std::cerr << "\npolydem: stopped: " << report.instability << "\npolydem: last good state in " << out_dir
+              << "/last_good_state.vtu, results so far in " << out_dir << "/summary.json and results.h5\n";
     return exit_instability;
   }
-  if (!o.quiet) print_report(report, o.out_dir);
+  if (!o.quiet) print_report(report, out_dir);
   return report.all_checks_passed() ? exit_success : exit_check_failed;
 }
 

@@ -21,6 +21,10 @@ struct RunOptions {
   int threads = 0;
   bool quiet = false;
   std::vector<std::string> overrides;  // "key=value"
+  // Continue the run whose checkpoint is DIR/checkpoint.bin (written with
+  // output.checkpoint_interval) and write the results into DIR. The deck and
+  // overrides must be those of the original run.
+  std::string restart_dir;
 };
 
 int run_command(const RunOptions& options);

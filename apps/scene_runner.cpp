@@ -5,6 +5,8 @@
 
 #include <omp.h>
 
+#include <csignal>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -241,11 +243,90 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
   const double end = spec.simulation.end_time;
   const bool snapshots = spec.output.snapshot_interval > 0 && control.snapshot;
   double next_snapshot = 0.0;
-  if (snapshots) {
+  double quiet_since = -1;
+  const double checkpoint_interval = spec.output.checkpoint_interval;
+  const bool checkpoints = checkpoint_interval > 0 && control.checkpoint;
+  double next_checkpoint = checkpoint_interval;
+  double wall_before = 0;  // s, spent before the restart
+
+  // The runner's own state, in checkpoint order (see the header).
+  constexpr std::uint32_t kRunnerTag = 0x52554e52;  // "RUNR"
+  auto save_runner = [&](ByteWriter& w) {
+    w.put(kRunnerTag);
+    w.put(rep.histories.rows);
+    w.put(rep.energies.rows);
+    w.put(rep.walking.max_bed_opening);
+    w.put(rep.walking.max_vertical_opening);
+    w.put(rep.subcontact_updates);
+    w.put(static_cast<std::int32_t>(rep.checkpoints + 1));  // counting the one being written
+    w.put(rep.checkpoint_wall_seconds);
+    for (double x : {next_record, balance0, reference, worst, next_snapshot, quiet_since, next_checkpoint}) w.put(x);
+    w.put(first_energy);
+    w.put(wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count());
+  };
+  auto load_runner = [&](ByteReader& r) {
+    std::uint32_t tag = 0;
+    r.get(tag);
+    if (tag != kRunnerTag) throw StateFormatError("runner section missing");
+    r.get(rep.histories.rows);
+    r.get(rep.energies.rows);
+    if (rep.histories.rows.size() % std::max<std::size_t>(1, rep.histories.columns.size()) != 0 ||
+        (!rep.energies.columns.empty() && rep.energies.rows.size() % rep.energies.columns.size() != 0))
+      throw StateFormatError("history rows do not fit the deck's columns");
+    r.get(rep.walking.max_bed_opening);
+    r.get(rep.walking.max_vertical_opening);
+    r.get(rep.subcontact_updates);
+    std::int32_t written = 0;
+    r.get(written);
+    rep.checkpoints = written;
+    rep.checkpoint_bytes = static_cast<long>(control.restart->size());  // the last one written
+    r.get(rep.checkpoint_wall_seconds);
+    for (double* x : {&next_record, &balance0, &reference, &worst, &next_snapshot, &quiet_since, &next_checkpoint})
+      r.get(*x);
+    r.get(first_energy);
+    r.get(wall_before);
+  };
+  std::string checkpoint_buffer;  // reused: one allocation for the run
+  auto write_checkpoint = [&]() {
+    const auto t0 = std::chrono::steady_clock::now();
+    checkpoint_buffer.clear();
+    ByteWriter w(checkpoint_buffer);
+    sim.save_state(w);
+    assessment.save(w);
+    w.put(static_cast<std::uint64_t>(monitors.size()));
+    for (const auto& m : monitors) m->save(w);
+    save_runner(w);
+    w.put(static_cast<bool>(control.save_extra));
+    if (control.save_extra) control.save_extra(w);
+    control.checkpoint(checkpoint_buffer);
+    ++rep.checkpoints;
+    rep.checkpoint_bytes = static_cast<long>(checkpoint_buffer.size());
+    rep.checkpoint_wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
+
+  if (control.restart) {
+    ByteReader r(*control.restart);
+    sim.load_state(r);
+    assessment.load(r);
+    std::uint64_t count = 0;
+    r.get(count);
+    if (count != monitors.size())
+      throw StateFormatError("the checkpoint has " + std::to_string(count) + " checks, the deck " +
+                             std::to_string(monitors.size()));
+    for (auto& m : monitors) m->load(r);
+    load_runner(r);
+    bool extra = false;
+    r.get(extra);
+    if (extra != static_cast<bool>(control.load_extra))
+      throw StateFormatError("the caller's section does not fit (snapshots on one side only)");
+    if (extra) control.load_extra(r);
+    if (!r.at_end()) throw StateFormatError(std::to_string(r.remaining()) + " bytes left over");
+    if (any_history) rep.histories.rows.reserve(expected_rows * rep.histories.columns.size());
+    if (spec.output.energies) rep.energies.rows.reserve(expected_rows * rep.energies.columns.size());
+  } else if (snapshots) {
     control.snapshot(sim, 0.0);
     next_snapshot = spec.output.snapshot_interval;
   }
-  double quiet_since = -1;
   try {
     while (sim.time() < end - 0.5 * sim.dt()) {
       sim.step();
@@ -275,6 +356,11 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
           quiet_since = -1;
         }
       }
+      if (checkpoints && sim.time() >= next_checkpoint - 1e-12 * end) {
+        while (next_checkpoint <= sim.time() + 1e-12 * end) next_checkpoint += checkpoint_interval;
+        write_checkpoint();
+      }
+      if (sim.steps() == control.kill_at_step) std::raise(SIGKILL);
     }
   } catch (const InstabilityError& e) {
     // Stop, but keep what was computed: the histories so far and the state
@@ -320,7 +406,8 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
       rep.final_shapes.push_back(transformed(sim.blocks().props.local_shape[i], final_state.rotation[i],
                                              final_state.position[i]));
   }
-  rep.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  rep.wall_seconds =
+      wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   return rep;
 }
 

@@ -46,6 +46,12 @@ struct RunReport {
   double margin = 0;
   double wall_seconds = 0;
   long subcontact_updates = 0;  // Σ over steps of the number of subcontacts
+  // Checkpoints written (output.checkpoint_interval), over the whole run
+  // including before a restart; the size of the last one's state and the
+  // wall time spent in them (serialising, framing, writing, fsync).
+  int checkpoints = 0;
+  long checkpoint_bytes = 0;
+  double checkpoint_wall_seconds = 0;
   int detections = 0;
   int blocks = 0, free_blocks = 0;
   EnergyLedger energy;
@@ -77,8 +83,29 @@ struct RunControl {
   // Called at t = 0, every output.snapshot_interval and at the end (only
   // when the deck asks for snapshots).
   std::function<void(const Simulation&, double time)> snapshot;
+  // Checkpoints (only when the deck sets output.checkpoint_interval): called
+  // with the whole run state at each multiple of the interval; run_command
+  // frames it and writes DIR/checkpoint.bin. `save_extra`/`load_extra` add
+  // the caller's own state to it (run_command: the snapshot series).
+  std::function<void(const std::string& state)> checkpoint;
+  std::function<void(ByteWriter&)> save_extra;
+  std::function<void(ByteReader&)> load_extra;
+  // Continue from a checkpoint's state (as passed to `checkpoint`) instead of
+  // starting at t = 0; the scene must come from the same deck. A state that
+  // does not fit throws StateFormatError.
+  const std::string* restart = nullptr;
+  // Test hook (POLYDEM_KILL_AT_STEP): the process kills itself with SIGKILL
+  // after this step, as a machine that dies would. -1: never.
+  long kill_at_step = -1;
 };
 
+// Checkpoints hold the Simulation's state (Simulation::save_state), the
+// assessment and check monitors, and the runner's own: histories recorded so
+// far, next record/snapshot/checkpoint times, energy-balance tracking,
+// settle tracking, subcontact updates. Taken between two steps after all of
+// a step's bookkeeping, so a restart continues with the next step exactly as
+// the uninterrupted run would.
+//
 // Throws DeckError-like std::runtime_error for input found bad only now
 // (overlapping blocks, time step above the critical one). A run the guard
 // stops returns with `unstable` set, the histories so far and the last good

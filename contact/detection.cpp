@@ -246,4 +246,15 @@ void ContactDetector::detect(const Blocks& b, ContactSet& contacts, bool bond_ne
   im.detected_orientation = b.state.orientation;
 }
 
+void ContactDetector::save(ByteWriter& w) const {
+  w.put(impl_->detected_position);
+  w.put(impl_->detected_orientation);
+}
+
+void ContactDetector::load(ByteReader& r) {
+  const std::size_t n = impl_->object_block.size();
+  r.get_sized(impl_->detected_position, n, "detector.detected_position");
+  r.get_sized(impl_->detected_orientation, n, "detector.detected_orientation");
+}
+
 }  // namespace polydem

@@ -34,6 +34,15 @@ class ContactDetector {
   // New subcontacts start bonded when `bond_new` is set (cohesion/tension at t = 0).
   void detect(const Blocks& blocks, ContactSet& contacts, bool bond_new);
 
+  // Checkpoints: the poses at the last detection (they decide when the next
+  // one runs). Nothing else carries over: the contacts of the detection
+  // before (`previous` inside) are only read during detect(), which swaps the
+  // current set in as the history and rebuilds every array it hands back,
+  // and the FCL tree is refitted to exact boxes at each detection and its
+  // pairs are sorted, so a tree rebuilt after a restart finds the same ones.
+  void save(ByteWriter& w) const;
+  void load(ByteReader& r);
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

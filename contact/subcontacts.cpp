@@ -23,4 +23,98 @@ void Subcontacts::resize(std::size_t n) {
   damping_energy.resize(n);
 }
 
+void ContactSet::save(ByteWriter& w) const {
+  w.put(static_cast<std::uint64_t>(pairs.size()));
+  for (const ContactPair& p : pairs) {
+    w.put(p.a);
+    w.put(p.b);
+    w.put(p.ref_block);
+    w.put(p.ref_face);
+    w.put(p.inc_face);
+    w.put(p.first);
+    w.put(p.count);
+    w.put(p.patch_area);
+  }
+  w.put(sub.pair);
+  w.put(sub.ref_block);
+  w.put(sub.inc_block);
+  w.put(sub.key);
+  w.put(sub.ref_normal_local);
+  w.put(sub.ref_offset_local);
+  w.put(sub.inc_point_local);
+  w.put(sub.area);
+  w.put(sub.shear_force);
+  w.put(sub.bonded);
+  w.put(sub.force);
+  w.put(sub.point);
+  w.put(sub.overlap);
+  w.put(sub.normal_force);
+  w.put(sub.slip_energy);
+  w.put(sub.damping_energy);
+  w.put(gather_offset);
+  w.put(gather_sub);
+  w.put(gather_sign);
+  w.put(retired_slip_energy);
+  w.put(retired_damping_energy);
+  w.put(detections);
+}
+
+void ContactSet::load(ByteReader& r, int blocks) {
+  std::uint64_t np = 0;
+  r.get(np);
+  if (np > r.remaining() / 36) throw StateFormatError("contact pairs: count beyond the data");
+  pairs.resize(static_cast<std::size_t>(np));
+  for (ContactPair& p : pairs) {
+    r.get(p.a);
+    r.get(p.b);
+    r.get(p.ref_block);
+    r.get(p.ref_face);
+    r.get(p.inc_face);
+    r.get(p.first);
+    r.get(p.count);
+    r.get(p.patch_area);
+  }
+  r.get(sub.pair);
+  const std::size_t n = sub.pair.size();
+  r.get_sized(sub.ref_block, n, "subcontacts.ref_block");
+  r.get_sized(sub.inc_block, n, "subcontacts.inc_block");
+  r.get_sized(sub.key, n, "subcontacts.key");
+  r.get_sized(sub.ref_normal_local, n, "subcontacts.ref_normal_local");
+  r.get_sized(sub.ref_offset_local, n, "subcontacts.ref_offset_local");
+  r.get_sized(sub.inc_point_local, n, "subcontacts.inc_point_local");
+  r.get_sized(sub.area, n, "subcontacts.area");
+  r.get_sized(sub.shear_force, n, "subcontacts.shear_force");
+  r.get_sized(sub.bonded, n, "subcontacts.bonded");
+  r.get_sized(sub.force, n, "subcontacts.force");
+  r.get_sized(sub.point, n, "subcontacts.point");
+  r.get_sized(sub.overlap, n, "subcontacts.overlap");
+  r.get_sized(sub.normal_force, n, "subcontacts.normal_force");
+  r.get_sized(sub.slip_energy, n, "subcontacts.slip_energy");
+  r.get_sized(sub.damping_energy, n, "subcontacts.damping_energy");
+  r.get_sized(gather_offset, static_cast<std::size_t>(blocks) + 1, "contacts.gather_offset");
+  r.get_sized(gather_sub, 2 * n, "contacts.gather_sub");
+  r.get_sized(gather_sign, 2 * n, "contacts.gather_sign");
+  r.get(retired_slip_energy);
+  r.get(retired_damping_energy);
+  r.get(detections);
+
+  // Indices in range: a checkpoint that passed its checksum but was written
+  // for another scene must not index out of bounds.
+  auto block_ok = [&](int b) { return b >= 0 && b < blocks; };
+  for (const ContactPair& p : pairs)
+    if (!block_ok(p.a) || !block_ok(p.b) || !block_ok(p.ref_block) || p.first < 0 || p.count < 0 ||
+        static_cast<std::size_t>(p.first) + static_cast<std::size_t>(p.count) > n)
+      throw StateFormatError("contact pair out of range");
+  for (std::size_t s = 0; s < n; ++s)
+    if (sub.pair[s] < 0 || static_cast<std::size_t>(sub.pair[s]) >= pairs.size() || !block_ok(sub.ref_block[s]) ||
+        !block_ok(sub.inc_block[s]))
+      throw StateFormatError("subcontact out of range");
+  if (gather_offset.front() != 0 || static_cast<std::size_t>(gather_offset.back()) != 2 * n)
+    throw StateFormatError("gather lists out of range");
+  for (int i = 0; i < blocks; ++i)
+    if (gather_offset[i] > gather_offset[i + 1]) throw StateFormatError("gather lists out of order");
+  for (int q : gather_sub)
+    if (q < 0 || static_cast<std::size_t>(q) >= n) throw StateFormatError("gather list out of range");
+}
+
 }  // namespace polydem

@@ -19,6 +19,7 @@
 // (see gather.hpp), so results do not depend on the number of threads.
 #pragma once
 
+#include "core/byte_stream.hpp"
 #include "geometry/polyhedron.hpp"
 
 #include <cstdint>
@@ -71,6 +72,12 @@ struct ContactSet {
   // Dissipation of subcontacts that no longer exist (kept for the ledger).
   double retired_slip_energy = 0, retired_damping_energy = 0;
   int detections = 0;
+
+  // Checkpoints: every array above, bit for bit (see core/byte_stream.hpp).
+  // load() checks that the arrays agree in length and that every block and
+  // subcontact index is in range for `blocks` blocks; throws StateFormatError.
+  void save(ByteWriter& w) const;
+  void load(ByteReader& r, int blocks);
 };
 
 }  // namespace polydem

@@ -96,6 +96,10 @@ struct OutputSpec {
   // seconds; 0 = none. Joints (the contact patches) go in a second series.
   double snapshot_interval = 0.0;
   bool snapshot_joints = true;
+  // Checkpoints of the whole run state (DIR/checkpoint.bin, the latest
+  // only) every this many seconds of simulated time; 0 = none. A run can be
+  // continued from one (polydem run --restart DIR) with the same result.
+  double checkpoint_interval = 0.0;
 };
 
 // [assessment] : how a run is judged. A free block whose centroid ends more

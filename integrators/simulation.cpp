@@ -243,6 +243,85 @@ void Simulation::check_health() {
   last_good_step_ = steps_;
 }
 
+namespace {
+
+void save_block_state(ByteWriter& w, const BlockState& s) {
+  w.put(s.position);
+  w.put(s.orientation);
+  w.put(s.rotation);
+  w.put(s.velocity);
+  w.put(s.angular_momentum);
+  w.put(s.angular_velocity);
+  w.put(s.contact_force);
+  w.put(s.contact_torque);
+}
+
+void load_block_state(ByteReader& r, BlockState& s, std::size_t n) {
+  r.get_sized(s.position, n, "block state position");
+  r.get_sized(s.orientation, n, "block state orientation");
+  r.get_sized(s.rotation, n, "block state rotation");
+  r.get_sized(s.velocity, n, "block state velocity");
+  r.get_sized(s.angular_momentum, n, "block state angular_momentum");
+  r.get_sized(s.angular_velocity, n, "block state angular_velocity");
+  r.get_sized(s.contact_force, n, "block state contact_force");
+  r.get_sized(s.contact_torque, n, "block state contact_torque");
+}
+
+}  // namespace
+
+void Simulation::save_state(ByteWriter& w) const {
+  w.put(static_cast<std::int32_t>(blocks_.count));
+  w.put(time_);
+  w.put(steps_);
+  w.put(dt_);
+  w.put(dt_prev_);
+  w.put(static_cast<std::int32_t>(dt_reductions_));
+  save_block_state(w, blocks_.state);
+  w.put(velocity_mid_);
+  w.put(omega_mid_);
+  w.put(position_prev_);
+  w.put(orientation_prev_);
+  w.put(load_work_);
+  w.put(energy_reference_);
+  w.put(mechanical0_);
+  w.put(energy_started_);
+  save_block_state(w, last_good_);
+  w.put(last_good_time_);
+  w.put(last_good_step_);
+  contacts_.save(w);
+  detector_.save(w);
+}
+
+void Simulation::load_state(ByteReader& r) {
+  std::int32_t count = 0;
+  r.get(count);
+  if (count != blocks_.count)
+    throw StateFormatError("the checkpoint has " + std::to_string(count) + " blocks, the scene " +
+                           std::to_string(blocks_.count));
+  const auto n = static_cast<std::size_t>(count);
+  r.get(time_);
+  r.get(steps_);
+  r.get(dt_);
+  r.get(dt_prev_);
+  std::int32_t reductions = 0;
+  r.get(reductions);
+  dt_reductions_ = reductions;
+  load_block_state(r, blocks_.state, n);
+  r.get_sized(velocity_mid_, n, "velocity_mid");
+  r.get_sized(omega_mid_, n, "omega_mid");
+  r.get_sized(position_prev_, n, "position_prev");
+  r.get_sized(orientation_prev_, n, "orientation_prev");
+  r.get_sized(load_work_, n, "load_work");
+  r.get(energy_reference_);
+  r.get(mechanical0_);
+  r.get(energy_started_);
+  load_block_state(r, last_good_, n);
+  r.get(last_good_time_);
+  r.get(last_good_step_);
+  contacts_.load(r, count);
+  detector_.load(r);
+}
+
 double Simulation::largest_opening(int i) const {
   double open = -std::numeric_limits<double>::infinity();
   const auto& off = contacts_.gather_offset;

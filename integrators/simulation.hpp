@@ -94,6 +94,17 @@ class Simulation {
   double last_good_time() const { return last_good_time_; }
   long last_good_step() const { return last_good_step_; }
 
+  // Checkpoints: everything that decides the rest of the run, bit for bit:
+  // time, step count, the step and the one before, the block state, the
+  // mid-step kinematics and load work of the ledger, the guard, the contacts
+  // with their shear history, and the detector's last poses. The scene
+  // itself (shapes, masses, joint law, ground motion, settings) is not
+  // saved: load_state() is called on a Simulation built from the same deck,
+  // and checks that the block and subcontact counts fit. Throws
+  // StateFormatError (core/byte_stream.hpp) on a payload that does not.
+  void save_state(ByteWriter& w) const;
+  void load_state(ByteReader& r);
+
  private:
   void detect_contacts();
   void start_half_step_back();

@@ -43,8 +43,9 @@ constexpr std::string_view kGroundMotionKeys[] = {"kind",           "applied_as"
                                                   "acceleration",   "acceleration_g", "rate",  "rate_g",
                                                   "period",         "record",         "scale",
                                                   "rise_time",      "tower_frequency", "tower_damping"};
-constexpr std::string_view kOutputKeys[] = {"history_interval", "histories",         "energies",
-                                            "walking",          "snapshot_interval", "snapshot_joints"};
+constexpr std::string_view kOutputKeys[] = {"history_interval",  "histories",       "energies",
+                                            "walking",           "snapshot_interval", "snapshot_joints",
+                                            "checkpoint_interval"};
 constexpr std::string_view kAssessmentKeys[] = {"damage_displacement", "collapse_displacement", "stop_on_collapse",
                                                 "monitor_block"};
 constexpr std::string_view kCheckKeys[] = {"kind", "block", "expected", "tolerance"};
@@ -701,6 +702,7 @@ OutputSpec read_output(const Deck& deck, const std::vector<BlockSpec>& blocks) {
   o.walking = r.boolean("walking").value_or(o.walking);
   o.snapshot_interval = r.number("snapshot_interval", o.snapshot_interval, Range::non_negative);
   o.snapshot_joints = r.boolean("snapshot_joints").value_or(o.snapshot_joints);
+  o.checkpoint_interval = r.number("checkpoint_interval", o.checkpoint_interval, Range::non_negative);
   if (const toml::node* n = r.table().get("histories")) {
     const auto* arr = n->as_array();
     if (!arr) r.fail("histories", "must be an array of \"BLOCK.QUANTITY\" strings (got " + describe(*n) + ")");

@@ -1,0 +1,49 @@
+// Checkpoint files: DIR/checkpoint.bin, the whole state of a run so that
+// `polydem run DECK --restart DIR` continues it bitwise identically.
+//
+// Layout (all integers little-endian, fixed width):
+//   offset  size  field
+//        0     8  magic "PDEMCKPT"
+//        8     4  format version (kCheckpointVersion)
+//       12     4  reserved, 0
+//       16     8  deck fingerprint: checksum of the deck text, the --set
+//                 overrides, the ground-motion record's bytes and the
+//                 polydem version (a restart with anything else is refused)
+//       24     8  payload size in bytes
+//       32     8  payload checksum (checksum64, core/byte_stream.hpp)
+//       40     …  payload: run_scene's state (apps/scene_runner.hpp)
+// The file is written with write_file_atomic (temporary, fsync, rename), so
+// a machine that dies mid-write leaves the previous checkpoint; the size and
+// checksum catch any file damaged some other way.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace polydem {
+
+inline constexpr std::uint32_t kCheckpointVersion = 1;
+inline constexpr const char* kCheckpointFile = "checkpoint.bin";
+
+// A checkpoint file that cannot be used; the message says why.
+struct CheckpointError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// The fingerprint of what decides a run besides its state.
+std::uint64_t deck_fingerprint(const std::string& deck_text, const std::vector<std::string>& overrides,
+                               const std::string& record_bytes, const std::string& version);
+
+// Header + payload, ready for write_file_atomic.
+std::string encode_checkpoint(std::uint64_t fingerprint, const std::string& payload);
+
+// Checks magic, version, size, checksum and fingerprint of a checkpoint
+// file's bytes and returns the payload. `path` names the file in messages.
+std::string decode_checkpoint(const std::string& bytes, std::uint64_t fingerprint, const std::string& path);
+
+// Reads a whole file; throws CheckpointError if it cannot.
+std::string read_checkpoint_file(const std::string& path);
+
+}  // namespace polydem

@@ -1,0 +1,380 @@
+// Checkpoint and restart (issue 5): a run killed at a random step and
+// continued from its last checkpoint ends bitwise identical to a run that
+// was never interrupted, and a checkpoint that is not what it claims is
+// refused with a clear message.
+//
+// The scene slides and rocks under a one-sine pulse: a wide block slides on
+// the fixed base (pulse 0.7 g, friction 30°) and a slender pillar rocks on
+// it, so shear-force history, opening joints and re-detections all cross the
+// checkpoint. The killed run is the built binary (fork + exec) with the
+// hidden POLYDEM_KILL_AT_STEP, which raises SIGKILL after that step, as a
+// machine that dies would; the restart goes through run_scene() in-process
+// (to compare the final state bit for bit) and through the binary (to
+// compare the files).
+#include "apps/checkpoint.hpp"
+#include "apps/run_command.hpp"
+#include "apps/scene_runner.hpp"
+#include "io/deck.hpp"
+#include "io/hdf5_results.hpp"
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <random>
+#include <sstream>
+
+namespace polydem {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* const kDeck = R"(# A pillar rocking on a block that slides on a fixed base.
+[simulation]
+end_time = 0.5
+
+[joint]
+normal_stiffness = 98e9
+friction_angle = 30.0
+damping = 2.1e-5
+
+[[block]]
+name = "base"
+shape = "box"
+size = [3.0, 2.0, 0.5]
+center = [0.0, 0.0, -0.25]
+motion = "fixed"
+
+[[block]]
+name = "slab"
+shape = "box"
+size = [1.0, 1.0, 0.3]
+center = [0.0, 0.0, 0.15]
+density = 2600.0
+
+[[block]]
+name = "pillar"
+shape = "box"
+size = [0.3, 0.3, 1.0]
+center = [0.0, 0.0, 0.8]
+density = 2600.0
+
+[ground_motion]
+kind = "sine_pulse"
+applied_as = "body_force"
+direction = [1.0, 0.0, 0.0]
+acceleration_g = 0.7
+period = 0.4
+
+[output]
+history_interval = 0.002
+histories = ["slab.position", "pillar.rotation", "pillar.contact_force"]
+energies = true
+walking = true
+checkpoint_interval = 0.05
+
+[[check]]
+kind = "energy_conservation"
+tolerance = 0.05
+
+[[check]]
+kind = "no_drift"
+block = "pillar"
+tolerance = 10.0
+)";
+
+const std::vector<std::string> kOverrides = {"simulation.end_time=0.4"};
+
+std::string read_bytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void write_bytes(const fs::path& p, const std::string& s) {
+  std::ofstream out(p, std::ios::binary | std::ios::trunc);
+  out << s;
+}
+
+template <class T>
+bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// Runs the built binary with `args`; `kill_at` > 0 sets POLYDEM_KILL_AT_STEP.
+// Returns the wait status.
+int run_binary(const std::vector<std::string>& args, long kill_at = -1) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (kill_at > 0) setenv("POLYDEM_KILL_AT_STEP", std::to_string(kill_at).c_str(), 1);
+    else unsetenv("POLYDEM_KILL_AT_STEP");
+    std::vector<char*> argv;
+    std::string name = "polydem";
+    argv.push_back(name.data());
+    std::vector<std::string> copy = args;
+    for (std::string& a : copy) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    execv(POLYDEM_BINARY, argv.data());
+    _exit(127);
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return status;
+}
+
+std::vector<std::string> run_args(const fs::path& deck, const std::vector<std::string>& overrides,
+                                  const char* threads = "2") {
+  std::vector<std::string> a = {"run", deck.string(), "--quiet", "--threads", threads};
+  for (const std::string& o : overrides) {
+    a.push_back("--set");
+    a.push_back(o);
+  }
+  return a;
+}
+
+// The summary without the lines that describe the machine, not the run.
+std::string summary_without_timing(const std::string& json) {
+  std::istringstream in(json);
+  std::string line, out;
+  while (std::getline(in, line))
+    if (line.find("wall_seconds") == std::string::npos && line.find("per_second") == std::string::npos &&
+        line.find("\"threads\"") == std::string::npos)
+      out += line + "\n";
+  return out;
+}
+
+class Restart : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("polydem_restart_" + std::to_string(getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    deck_ = dir_ / "slide_rock.toml";
+    write_bytes(deck_, kDeck);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::uint64_t fingerprint() const { return deck_fingerprint(kDeck, kOverrides, "", POLYDEM_VERSION); }
+
+  // run_command in-process with stderr captured.
+  int run_in_process(const RunOptions& o) {
+    std::ostringstream captured;
+    auto* old = std::cerr.rdbuf(captured.rdbuf());
+    int code = -1;
+    try {
+      code = run_command(o);
+    } catch (...) {
+      std::cerr.rdbuf(old);
+      throw;
+    }
+    std::cerr.rdbuf(old);
+    err_ = captured.str();
+    return code;
+  }
+
+  fs::path dir_, deck_;
+  std::string err_;
+};
+
+void expect_identical(const RunReport& a, const RunReport& b) {
+  EXPECT_EQ(a.steps, b.steps);
+  EXPECT_TRUE(same_bits(a.end_time, b.end_time));
+  EXPECT_TRUE(same_bits(a.time_step, b.time_step));
+  EXPECT_EQ(a.time_step_reductions, b.time_step_reductions);
+  EXPECT_EQ(a.detections, b.detections);
+  EXPECT_EQ(a.subcontact_updates, b.subcontact_updates);
+  EXPECT_TRUE(same_bits(a.final_position, b.final_position)) << "positions differ";
+  EXPECT_TRUE(same_bits(a.final_velocity, b.final_velocity)) << "velocities differ";
+  ASSERT_EQ(a.final_orientation.size(), b.final_orientation.size());
+  for (std::size_t i = 0; i < a.final_orientation.size(); ++i)
+    EXPECT_EQ(std::memcmp(a.final_orientation[i].coeffs().data(), b.final_orientation[i].coeffs().data(),
+                          4 * sizeof(double)),
+              0)
+        << "orientation of block " << i;
+  for (auto m : {&EnergyLedger::kinetic, &EnergyLedger::gravitational, &EnergyLedger::strain, &EnergyLedger::slip,
+                 &EnergyLedger::damping, &EnergyLedger::load_work, &EnergyLedger::balance})
+    EXPECT_TRUE(same_bits(a.energy.*m, b.energy.*m)) << "energy ledger differs";
+  EXPECT_TRUE(same_bits(a.energy_balance_error, b.energy_balance_error));
+  EXPECT_TRUE(same_bits(a.histories.rows, b.histories.rows)) << "histories differ";
+  EXPECT_TRUE(same_bits(a.energies.rows, b.energies.rows)) << "energy histories differ";
+  EXPECT_TRUE(same_bits(a.walking.max_bed_opening, b.walking.max_bed_opening));
+  EXPECT_TRUE(same_bits(a.walking.max_vertical_opening, b.walking.max_vertical_opening));
+  ASSERT_EQ(a.checks.size(), b.checks.size());
+  for (std::size_t k = 0; k < a.checks.size(); ++k) {
+    EXPECT_TRUE(same_bits(a.checks[k].measured, b.checks[k].measured)) << a.checks[k].name;
+    EXPECT_EQ(a.checks[k].passed, b.checks[k].passed);
+  }
+  EXPECT_EQ(a.status, b.status);
+  EXPECT_TRUE(same_bits(a.assessment.max_displacement, b.assessment.max_displacement));
+  EXPECT_TRUE(same_bits(a.assessment.damage_time, b.assessment.damage_time));
+  EXPECT_EQ(a.assessment.moved_blocks, b.assessment.moved_blocks);
+}
+
+TEST_F(Restart, KilledRunContinuesBitwiseIdentical) {
+  const SceneSpec spec = read_deck(deck_.string(), kOverrides);
+  // The reference: uninterrupted, and without checkpoints (checkpoints must
+  // not change the run either).
+  const RunReport ref = run_scene(spec);
+  ASSERT_GT(ref.steps, 1000);
+  ASSERT_GT(ref.detections, 2) << "the scene should slide enough to re-detect contacts";
+  ASSERT_GT(ref.assessment.max_displacement, 1e-3) << "the slab should slide";
+
+  // Kill points: a random step past the first checkpoint (logged), and the
+  // last step before the end.
+  std::random_device rd;
+  const unsigned seed = rd();
+  std::mt19937 rng(seed);
+  const long first_checkpoint_step = static_cast<long>(0.05 / ref.time_step) + 2;
+  std::uniform_int_distribution<long> pick(first_checkpoint_step, ref.steps - 1);
+  for (const long kill_at : {pick(rng), ref.steps - 1}) {
+    SCOPED_TRACE("killed at step " + std::to_string(kill_at) + " of " + std::to_string(ref.steps) + " (seed " +
+                 std::to_string(seed) + ")");
+    const fs::path out = dir_ / ("killed_" + std::to_string(kill_at));
+    std::vector<std::string> args = run_args(deck_, kOverrides);
+    args.insert(args.end(), {"--out", out.string()});
+    const int status = run_binary(args, kill_at);
+    ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << "status " << status;
+    EXPECT_FALSE(fs::exists(out / "summary.json"));
+    EXPECT_FALSE(fs::exists(out / "results.h5"));
+    ASSERT_TRUE(fs::exists(out / kCheckpointFile));
+
+    // In-process restart: the final state, bit for bit.
+    const std::string state =
+        decode_checkpoint(read_bytes(out / kCheckpointFile), fingerprint(), (out / kCheckpointFile).string());
+    RunControl control;
+    control.restart = &state;
+    const RunReport again = run_scene(spec, control);
+    expect_identical(ref, again);
+  }
+}
+
+TEST_F(Restart, BinaryRestartWritesTheSameResults) {
+  // Uninterrupted binary run with checkpoints.
+  const fs::path whole = dir_ / "whole", killed = dir_ / "killed";
+  std::vector<std::string> a = run_args(deck_, kOverrides);
+  a.insert(a.end(), {"--out", whole.string()});
+  const int st_whole = run_binary(a);
+  ASSERT_TRUE(WIFEXITED(st_whole)) << st_whole;
+  ASSERT_TRUE(fs::exists(whole / kCheckpointFile));
+
+  std::vector<std::string> b = run_args(deck_, kOverrides);
+  b.insert(b.end(), {"--out", killed.string()});
+  ASSERT_TRUE(WIFSIGNALED(run_binary(b, 2500)));
+
+  std::vector<std::string> c = run_args(deck_, kOverrides, "1");  // another thread count: same bits
+  c.insert(c.end(), {"--restart", killed.string()});
+  const int st_restart = run_binary(c);
+  ASSERT_TRUE(WIFEXITED(st_restart));
+  EXPECT_EQ(WEXITSTATUS(st_restart), WEXITSTATUS(st_whole));
+
+  EXPECT_EQ(summary_without_timing(read_bytes(whole / "summary.json")),
+            summary_without_timing(read_bytes(killed / "summary.json")));
+  for (const char* path : {"/histories/time", "/histories/pillar.rotation.y", "/histories/slab.position.x",
+                           "/histories/walking.bed_opening", "/energies/slip", "/energies/balance"}) {
+    EXPECT_TRUE(same_bits(read_vector((whole / "results.h5").string(), path),
+                          read_vector((killed / "results.h5").string(), path)))
+        << path;
+  }
+  EXPECT_EQ(read_string((whole / "results.h5").string(), "/deck"), read_string((killed / "results.h5").string(), "/deck"));
+}
+
+TEST_F(Restart, RefusesAnotherDeckOrOverrides) {
+  const fs::path out = dir_ / "run";
+  std::vector<std::string> a = run_args(deck_, kOverrides);
+  a.insert(a.end(), {"--out", out.string()});
+  ASSERT_TRUE(WIFSIGNALED(run_binary(a, 2000)));
+  ASSERT_TRUE(fs::exists(out / kCheckpointFile));
+
+  RunOptions o;
+  o.deck_path = deck_.string();
+  o.restart_dir = out.string();
+  o.quiet = true;
+  o.overrides = {"simulation.end_time=0.4", "joint.friction_angle=35"};
+  EXPECT_EQ(run_in_process(o), exit_bad_input);
+  EXPECT_NE(err_.find("different deck, --set overrides"), std::string::npos) << err_;
+  o.overrides = {};
+  EXPECT_EQ(run_in_process(o), exit_bad_input);
+  EXPECT_NE(err_.find("different deck"), std::string::npos) << err_;
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+
+  // --out elsewhere with --restart is refused by the command line.
+  std::vector<std::string> b = run_args(deck_, kOverrides);
+  b.insert(b.end(), {"--restart", out.string(), "--out", (dir_ / "elsewhere").string()});
+  const int st = run_binary(b);
+  ASSERT_TRUE(WIFEXITED(st));
+  EXPECT_EQ(WEXITSTATUS(st), exit_bad_input);
+}
+
+TEST_F(Restart, RefusesDamagedCheckpoints) {
+  const fs::path out = dir_ / "run";
+  std::vector<std::string> a = run_args(deck_, kOverrides);
+  a.insert(a.end(), {"--out", out.string()});
+  ASSERT_TRUE(WIFSIGNALED(run_binary(a, 2000)));
+  const fs::path file = out / kCheckpointFile;
+  const std::string good = read_bytes(file);
+  ASSERT_GT(good.size(), 1000u);
+  // A kill during the write leaves a temporary beside it, never a torn
+  // checkpoint.bin (write_file_atomic); whatever is there is complete.
+  EXPECT_NO_THROW(decode_checkpoint(good, fingerprint(), file.string()));
+
+  RunOptions o;
+  o.deck_path = deck_.string();
+  o.restart_dir = out.string();
+  o.quiet = true;
+  o.overrides = kOverrides;
+  struct Damage {
+    std::string bytes;
+    const char* message;
+  };
+  std::string flipped = good;
+  flipped[good.size() / 2] = static_cast<char>(flipped[good.size() / 2] ^ 0x10);
+  std::string bad_version = good;
+  bad_version[8] = 7;
+  const std::vector<Damage> cases = {
+      {good.substr(0, good.size() / 2), "truncated checkpoint"},
+      {good.substr(0, 20), "truncated checkpoint"},
+      {good + "xx", "oversized checkpoint"},
+      {flipped, "checksum does not match"},
+      {bad_version, "format version 7"},
+      {"{\"status\": \"intact\"}\n", "not a polydem checkpoint"},
+      {"", "not a polydem checkpoint"},
+  };
+  for (const Damage& d : cases) {
+    write_bytes(file, d.bytes);
+    EXPECT_EQ(run_in_process(o), exit_bad_input) << d.message;
+    EXPECT_NE(err_.find(d.message), std::string::npos) << err_;
+    EXPECT_NE(err_.find(file.string()), std::string::npos) << err_;
+  }
+  fs::remove(file);
+  EXPECT_EQ(run_in_process(o), exit_bad_input);
+  EXPECT_NE(err_.find("cannot open the checkpoint"), std::string::npos) << err_;
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+
+  // A payload that passes the checksum but was not written for this scene.
+  write_bytes(file, encode_checkpoint(fingerprint(), good.substr(40, 100)));
+  EXPECT_EQ(run_in_process(o), exit_bad_input);
+  EXPECT_NE(err_.find("does not fit this scene"), std::string::npos) << err_;
+}
+
+TEST_F(Restart, NoCheckpointWithoutTheKey) {
+  RunOptions o;
+  o.deck_path = deck_.string();
+  o.out_dir = (dir_ / "plain").string();
+  o.quiet = true;
+  o.overrides = {"simulation.end_time=0.05", "output.checkpoint_interval=0"};
+  const int code = run_in_process(o);
+  EXPECT_TRUE(code == exit_success || code == exit_check_failed) << err_;
+  EXPECT_TRUE(fs::exists(dir_ / "plain" / "summary.json"));
+  EXPECT_FALSE(fs::exists(dir_ / "plain" / kCheckpointFile));
+}
+
+}  // namespace
+}  // namespace polydem
