@@ -43,6 +43,10 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   Json as = Json::object();
   as.set("collapse_mode", a.collapse_mode);
   as.set("collapse_time_s", a.collapse_time >= 0 ? Json(a.collapse_time) : Json());
+  as.set("damage_time_s", a.damage_time >= 0 ? Json(a.damage_time) : Json());
+  // Under a rising load this is the acceleration at which the mechanism formed.
+  as.set("ground_acceleration_at_damage_g",
+         a.damage_time >= 0 ? Json(a.ground_acceleration_at_damage / 9.81) : Json());
   as.set("max_displacement_m", a.max_displacement);
   as.set("max_displacement_block", a.max_displacement_block);
   as.set("max_residual_displacement_m", a.max_residual_displacement);
