@@ -64,44 +64,50 @@ void AssessmentMonitor::observe(const Simulation& sim) {
 void AssessmentMonitor::record_crack(const Simulation& sim) {
   const Blocks& b = sim.blocks();
   result_.moved_blocks.clear();
-  // Lowest moved block per sector of 45° around the vertical axis.
-  constexpr int kSectors = 8;
-  double low_z[kSectors], along[kSectors];
-  for (int k = 0; k < kSectors; ++k) low_z[k] = std::numeric_limits<double>::infinity();
-  Vec3 centre = Vec3::Zero();
-  for (int i = 0; i < b.count; ++i) centre += start_[i];
-  centre /= std::max(1, b.count);
-  for (int i : b.free_blocks) {
-    if (displacement(sim, i).norm() <= spec_.damage_displacement) continue;
-    result_.moved_blocks.push_back(b.props.name[i]);
-    const Vec3 r = start_[i] - centre;
-    const double angle = std::atan2(r.y(), r.x());
-    const int k = std::clamp(static_cast<int>(std::floor((angle + std::numbers::pi) / (2 * std::numbers::pi) * kSectors)), 0,
-                             kSectors - 1);
-    if (start_[i].z() < low_z[k]) {
-      low_z[k] = start_[i].z();
-      along[k] = r.dot(direction_);
-    }
-  }
-  // Least-squares line z = a + slope·s through the sectors' lowest points.
-  double n = 0, ss = 0, sz = 0, sss = 0, ssz = 0;
+  for (int i : b.free_blocks)
+    if (displacement(sim, i).norm() > spec_.damage_displacement) result_.moved_blocks.push_back(b.props.name[i]);
+  // The crack: the joints that have opened by more than half the damage
+  // displacement, each at the mean of its subcontacts. Its angle from
+  // horizontal is that of the principal axis of those points in the
+  // vertical plane of the ground motion (total least squares, so a vertical
+  // crack is as well defined as a horizontal one).
+  const ContactSet& c = sim.contacts();
+  const Vec3 up(0, 0, 1);
+  double n = 0, ms = 0, mz = 0;
+  std::vector<std::pair<double, double>> pts;
   double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin;
-  for (int k = 0; k < kSectors; ++k) {
-    if (!std::isfinite(low_z[k])) continue;
+  for (const ContactPair& p : c.pairs) {
+    if (p.count == 0) continue;
+    double gap = -std::numeric_limits<double>::infinity();
+    Vec3 at = Vec3::Zero();
+    for (int k = p.first; k < p.first + p.count; ++k) {
+      gap = std::max(gap, -c.sub.overlap[k]);
+      at += c.sub.point[k];
+    }
+    if (gap <= 0.5 * spec_.damage_displacement) continue;
+    at /= p.count;
+    const double sx = at.dot(direction_), z = at.dot(up);
+    pts.emplace_back(sx, z);
     n += 1;
-    ss += along[k];
-    sz += low_z[k];
-    sss += along[k] * along[k];
-    ssz += along[k] * low_z[k];
-    zmin = std::min(zmin, low_z[k]);
-    zmax = std::max(zmax, low_z[k]);
+    ms += sx;
+    mz += z;
+    zmin = std::min(zmin, z);
+    zmax = std::max(zmax, z);
   }
-  if (n >= 2 && n * sss - ss * ss > 1e-12) {
-    const double slope = (n * ssz - ss * sz) / (n * sss - ss * ss);
-    result_.crack_angle_deg = std::atan(std::abs(slope)) * 180.0 / std::numbers::pi;
-    result_.crack_low_z = zmin;
-    result_.crack_high_z = zmax;
+  result_.opened_joints = static_cast<int>(pts.size());
+  if (n < 2) return;
+  ms /= n;
+  mz /= n;
+  double css = 0, csz = 0, czz = 0;
+  for (const auto& [sx, z] : pts) {
+    css += (sx - ms) * (sx - ms);
+    csz += (sx - ms) * (z - mz);
+    czz += (z - mz) * (z - mz);
   }
+  const double theta = 0.5 * std::atan2(2 * csz, css - czz);  // principal axis from the s axis
+  result_.crack_angle_deg = std::abs(theta) * 180.0 / std::numbers::pi;
+  result_.crack_low_z = zmin;
+  result_.crack_high_z = zmax;
 }
 
 Assessment AssessmentMonitor::finish(const Simulation& sim) {
@@ -141,6 +147,7 @@ void AssessmentMonitor::save(ByteWriter& w) const {
   w.put(a.max_residual_displacement);
   w.put(a.monitor_block);
   w.put(a.moved_blocks);
+  w.put(static_cast<std::int32_t>(a.opened_joints));
   for (double x : {a.crack_angle_deg, a.crack_low_z, a.crack_high_z}) w.put(x);
 }
 
@@ -159,6 +166,9 @@ void AssessmentMonitor::load(ByteReader& r) {
   r.get(a.max_residual_displacement);
   r.get(a.monitor_block);
   r.get(a.moved_blocks);
+  std::int32_t opened = 0;
+  r.get(opened);
+  a.opened_joints = opened;
   for (double* x : {&a.crack_angle_deg, &a.crack_low_z, &a.crack_high_z}) r.get(*x);
 }
 

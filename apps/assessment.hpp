@@ -22,13 +22,15 @@ struct Assessment {
   std::string max_displacement_block;
   double max_residual_displacement = 0;  // m, at the end
   std::string monitor_block;
-  // The crack: blocks that had moved more than damage_displacement when the
-  // run collapsed (or at the end), and the angle from horizontal of the line
-  // through the lowest moved block of each of eight sectors around the
-  // vertical axis, in the plane of the ground motion (degrees).
+  // When the run collapsed (or at the end if damaged): the blocks that had
+  // moved more than damage_displacement, and the crack — the joints opened by
+  // more than half of it — with the angle from horizontal of its principal
+  // axis in the vertical plane of the ground motion (degrees) and the height
+  // range it spans.
   std::vector<std::string> moved_blocks;
+  int opened_joints = 0;
   double crack_angle_deg = -1;
-  double crack_low_z = 0, crack_high_z = 0;  // m, lowest moved block on the trailing/leading side
+  double crack_low_z = 0, crack_high_z = 0;  // m
 };
 
 class AssessmentMonitor {

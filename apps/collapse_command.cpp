@@ -86,6 +86,7 @@ Json crack_json(const Assessment& a) {
   Json j = Json::object();
   j.set("collapse_mode", a.collapse_mode);
   j.set("moved_blocks", static_cast<int>(a.moved_blocks.size()));
+  j.set("opened_joints", a.opened_joints);
   j.set("crack_angle_deg", a.crack_angle_deg >= 0 ? Json(a.crack_angle_deg) : Json());
   j.set("crack_lowest_z_m", a.crack_angle_deg >= 0 ? Json(a.crack_low_z) : Json());
   j.set("crack_highest_z_m", a.crack_angle_deg >= 0 ? Json(a.crack_high_z) : Json());

@@ -52,6 +52,7 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   as.set("max_residual_displacement_m", a.max_residual_displacement);
   as.set("monitor_block", a.monitor_block);
   as.set("moved_blocks", static_cast<int>(a.moved_blocks.size()));
+  as.set("opened_joints", a.opened_joints);
   as.set("crack_angle_deg", a.crack_angle_deg >= 0 ? Json(a.crack_angle_deg) : Json());
   as.set("crack_lowest_z_m", a.crack_angle_deg >= 0 ? Json(a.crack_low_z) : Json());
   as.set("crack_highest_z_m", a.crack_angle_deg >= 0 ? Json(a.crack_high_z) : Json());
