@@ -62,6 +62,8 @@ class Runner {
     const double a_max = 1.2 * o_.high_g;
     const SceneSpec s = spec({"ground_motion.kind=ramp", fmt::format("ground_motion.rate_g={:.17g}", o_.ramp_rate_g),
                               direction_override(deg), fmt::format("simulation.end_time={:.17g}", a_max / o_.ramp_rate_g),
+                              // a slow ramp starts at rest: it must not stop as "settled"
+                              "simulation.settle_velocity=0",
                               "assessment.stop_on_collapse=true", "output.energies=false", "output.histories=[]"});
     RunControl c;
     c.threads = o_.threads;
