@@ -11,8 +11,11 @@ cd "$(dirname "$0")/.."
 build=build-asan
 mkdir -p "$build"
 t0=$SECONDS
+# -Wno-maybe-uninitialized: with -fsanitize at -O2, g++ 12 warns falsely inside
+# <regex> (std::function in regex_automaton.h, from tests/apps/run_command_test.cpp),
+# which -Werror turns into a build failure; the plain build keeps the warning.
 cmake -S . -B "$build" -DPOLYDEM_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  > "$build/configure.log" 2>&1 || { cat "$build/configure.log"; exit 1; }
+  -DCMAKE_CXX_FLAGS="-Wno-maybe-uninitialized" > "$build/configure.log" 2>&1 || { cat "$build/configure.log"; exit 1; }
 cmake --build "$build" -j "$(nproc)" 2>&1 | tail -n 30
 build_s=$((SECONDS - t0))
 # detect_leaks: LeakSanitizer at exit; halt_on_error + print_stacktrace: the
