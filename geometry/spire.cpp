@@ -314,6 +314,13 @@ void validate_spire(const SpireSpec& s) {
   require(top / s.course_height <= 10000, "course_height", "gives more than 10000 courses");
   require(s.stones_per_face >= 1 && s.stones_per_face <= 64, "stones_per_face",
           "must be in [1, 64] (got " + std::to_string(s.stones_per_face) + ")");
+  // Each setting is sane on its own, but their product can ask for millions
+  // of CGAL-built stones from a three-line deck (found by fuzzing). The
+  // paper's spire has about 330 blocks.
+  const double stones = std::ceil(top / s.course_height) * 8.0 * s.stones_per_face;
+  require(stones <= 5000, "course_height",
+          "with stones_per_face = " + std::to_string(s.stones_per_face) + " gives " + num(stones) +
+              " stones (at most 5000)");
   require(std::isfinite(s.base_thickness) && s.base_thickness >= 0, "base_thickness",
           "must be >= 0 and finite (0 = no base block) (got " + num(s.base_thickness) + ")");
 

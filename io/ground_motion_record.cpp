@@ -84,6 +84,19 @@ NumberParse parse_number(std::string_view token, double& out) {
   return std::isfinite(out) ? NumberParse::Ok : NumberParse::NotFinite;
 }
 
+// Ground accelerations beyond this are not a record but a typo or a unit
+// error; the cap also keeps every difference of two samples finite.
+constexpr double kMaxAccelerationG = 1000.0;
+
+void check_acceleration(const std::string& name, int line, double value_g, double scale) {
+  if (!(std::abs(value_g * scale) <= kMaxAccelerationG)) {
+    std::ostringstream os;
+    os << "acceleration " << value_g << " g (times scale " << scale << ") exceeds " << kMaxAccelerationG
+       << " g: not a ground motion (units?)";
+    throw RecordError(name, line, os.str());
+  }
+}
+
 void check_scale(const std::string& name, double scale) {
   if (!std::isfinite(scale)) throw RecordError(name, 0, "scale factor must be finite");
 }
@@ -239,7 +252,11 @@ GroundMotionRecord parse_at2(const std::string& text, const std::string& name, d
   rec.dt = h.dt;
   rec.source = name;
   const auto n = static_cast<std::size_t>(h.npts);
-  rec.acceleration.reserve(n);
+  if (!std::isfinite(static_cast<double>(h.npts - 1) * h.dt) || static_cast<double>(h.npts - 1) * h.dt > 1e6)
+    throw RecordError(name, 4, "NPTS x DT is not a plausible duration (over 1e6 s)");
+  // Reserve no more than the text can hold: a header cannot make us allocate
+  // gigabytes before a single value is read.
+  rec.acceleration.reserve(std::min(n, text.size() / 2 + 1));
   const double factor = scale * kStandardGravity;
   int last_data_line = 4;
   for (std::size_t i = 4; i < lines.size(); ++i) {
@@ -257,6 +274,7 @@ GroundMotionRecord parse_at2(const std::string& text, const std::string& name, d
           throw RecordError(name, line_no, "NaN/inf value '" + std::string(token) + "'");
         case NumberParse::Ok: break;
       }
+      check_acceleration(name, line_no, v, scale);
       rec.acceleration.push_back(v * factor);
       last_data_line = line_no;
     }
@@ -317,6 +335,9 @@ GroundMotionRecord parse_csv_record(const std::string& text, const std::string& 
          << " s); times must be strictly increasing";
       throw RecordError(name, line_no, os.str());
     }
+    if (!rec.time.empty() && !std::isfinite(v[0] - rec.time.back()))
+      throw RecordError(name, line_no, "time step from the previous row is not finite");
+    check_acceleration(name, line_no, v[1], scale);
     rec.time.push_back(v[0]);
     rec.acceleration.push_back(v[1] * factor);
   }
