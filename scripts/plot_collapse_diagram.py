@@ -9,15 +9,17 @@ The analytical curve (rigid rocking body, eq. 7 and 10, Zhang & Makris 2001)
 comes from `polydem analytic collapse-diagram --body BODY --r_b --H ... --json`
 on a fine grid of T_p: the lower Mode I loop is shaded, its lower edge is the
 minimum overturning amplitude, Mode II is above the upper curve; the dotted
-line is the uplift acceleration tan(alpha). The DEM points come from CSVs of scripts/dem_pulse_diagram.py (columns T_p_s,
+line is the uplift acceleration tan(alpha). The DEM points come from CSVs of
+scripts/dem_pulse_diagram.py (columns T_p_s,
 a_p_damage_g, a_p_collapse_g, mode, transitions), given as positional
 arguments (label "DEM") or as --dem CSV LABEL; the first set has filled
 markers, the second open ones: the lowest damaging amplitude (triangle down),
 the lowest collapsing one (circle: Mode I, square: Mode II) and, from
 `transitions`, the start of Mode II above a Mode I loop (diamond) and the top
-of a Mode I loop that closes before it (x). --hline G LABEL adds a reference line. --restitution adds the analytical
-curve with that coefficient of restitution (dashed) to the eq. 10 one (its
-Mode II boundary is the same: no impact comes before it).
+of a Mode I loop that closes before it (x). --hline G LABEL adds a reference
+line. --restitution adds the analytical curve with that coefficient of
+restitution (dashed) to the eq. 10 one (its Mode II boundary is the same: no
+impact comes before it).
 
 Uses only Debian's python3-numpy and python3-matplotlib.
 """
