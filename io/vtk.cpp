@@ -110,6 +110,33 @@ void put_cell_data(std::string& out, const VtkCellData& data) {
   }
 }
 
+// The parts of an unstructured-grid document that do not depend on the
+// cell type: the header, the points and the cell connectivity and offsets
+// (the caller adds the types and, for polyhedra, the faces), and the end.
+void open_grid(std::string& out, const std::vector<double>& points, const std::vector<long long>& connectivity,
+               const std::vector<long long>& offsets, std::size_t cells) {
+  out += "<?xml version=\"1.0\"?>\n";
+  out += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n";
+  out += "  <UnstructuredGrid>\n";
+  out += "    <Piece NumberOfPoints=\"" + std::to_string(points.size() / 3) + "\" NumberOfCells=\"" +
+         std::to_string(cells) + "\">\n";
+  out += "      <Points>\n";
+  out += "        <DataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  put_values(out, points, 3, put_number);
+  out += "        </DataArray>\n";
+  out += "      </Points>\n";
+  out += "      <Cells>\n";
+  put_int_array(out, "Int64", "connectivity", connectivity);
+  put_int_array(out, "Int64", "offsets", offsets);
+}
+
+void close_grid(std::string& out, const VtkCellData& data) {
+  put_cell_data(out, data);
+  out += "    </Piece>\n";
+  out += "  </UnstructuredGrid>\n";
+  out += "</VTKFile>\n";
+}
+
 }  // namespace
 
 std::string vtu_document(const std::vector<Polyhedron>& blocks, const VtkCellData& data) {
@@ -143,28 +170,13 @@ std::string vtu_document(const std::vector<Polyhedron>& blocks, const VtkCellDat
 
   std::string out;
   out.reserve(64 * (points.size() + faces.size()) + 1024);
-  out += "<?xml version=\"1.0\"?>\n";
-  out += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n";
-  out += "  <UnstructuredGrid>\n";
-  out += "    <Piece NumberOfPoints=\"" + std::to_string(points.size() / 3) + "\" NumberOfCells=\"" +
-         std::to_string(nb) + "\">\n";
-  out += "      <Points>\n";
-  out += "        <DataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  put_values(out, points, 3, put_number);
-  out += "        </DataArray>\n";
-  out += "      </Points>\n";
-  out += "      <Cells>\n";
-  put_int_array(out, "Int64", "connectivity", connectivity);
-  put_int_array(out, "Int64", "offsets", offsets);
+  open_grid(out, points, connectivity, offsets, nb);
   put_int_array(out, "UInt8", "types", std::vector<long long>(nb, kVtkPolyhedron), 20);
   put_int_array(out, "Int64", "faces", faces);
   put_int_array(out, "Int64", "faceoffsets", faceoffsets);
   out += "      </Cells>\n";
 
-  put_cell_data(out, data);
-  out += "    </Piece>\n";
-  out += "  </UnstructuredGrid>\n";
-  out += "</VTKFile>\n";
+  close_grid(out, data);
   return out;
 }
 
@@ -183,25 +195,10 @@ std::string vtu_polygons_document(const std::vector<std::vector<Vec3>>& polygons
     offsets.push_back(static_cast<long long>(connectivity.size()));
   }
   std::string out;
-  out += "<?xml version=\"1.0\"?>\n";
-  out += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n";
-  out += "  <UnstructuredGrid>\n";
-  out += "    <Piece NumberOfPoints=\"" + std::to_string(points.size() / 3) + "\" NumberOfCells=\"" +
-         std::to_string(nc) + "\">\n";
-  out += "      <Points>\n";
-  out += "        <DataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  put_values(out, points, 3, put_number);
-  out += "        </DataArray>\n";
-  out += "      </Points>\n";
-  out += "      <Cells>\n";
-  put_int_array(out, "Int64", "connectivity", connectivity);
-  put_int_array(out, "Int64", "offsets", offsets);
+  open_grid(out, points, connectivity, offsets, nc);
   put_int_array(out, "UInt8", "types", std::vector<long long>(nc, 7), 20);  // VTK_POLYGON
   out += "      </Cells>\n";
-  put_cell_data(out, data);
-  out += "    </Piece>\n";
-  out += "  </UnstructuredGrid>\n";
-  out += "</VTKFile>\n";
+  close_grid(out, data);
   return out;
 }
 
