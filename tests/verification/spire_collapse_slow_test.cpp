@@ -14,7 +14,7 @@ namespace {
 
 TEST(SpireCollapseSlow, FullSpireUnderARamp) {
   const SceneSpec spec = read_deck(std::string(POLYDEM_SOURCE_DIR) + "/examples/spire/collapse_ramp.toml",
-                                   {"output.snapshot_interval=0", "output.histories=[]"});
+                                   {"output.snapshot_interval=0", "output.histories=[]", "assessment.stop_on_collapse=true"});
   RunControl control;
   control.threads = 2;
   const RunReport r = run_scene(spec, control);
