@@ -94,8 +94,7 @@ void Simulation::step() {
   {
     compute_joint_forces_parallel();
 #pragma omp barrier
-    gather_block_forces();
-    update_free_blocks();
+    gather_and_advance();
   }
   move_kinematic_blocks();
   time_ += dt_;
@@ -115,67 +114,80 @@ void Simulation::compute_joint_forces_parallel() {
   compute_pair_forces(law_, blocks_.state, contacts_.pairs, contacts_.sub, dt_, begin, end);
 }
 
-void Simulation::gather_block_forces() {
-  const int n = blocks_.count;
+void Simulation::gather_block(int i) {
   const auto& off = contacts_.gather_offset;
   const auto& idx = contacts_.gather_sub;
   const auto& sign = contacts_.gather_sign;
   const auto& sub = contacts_.sub;
   auto& st = blocks_.state;
-#pragma omp for schedule(static)
-  for (int i = 0; i < n; ++i) {
-    Vec3 f = Vec3::Zero(), m = Vec3::Zero();
-    const Vec3& x = st.position[i];
-    for (int k = off[i]; k < off[i + 1]; ++k) {
-      const int s = idx[k];
-      const Vec3 fk = sign[k] * sub.force[s];
-      f += fk;
-      m += (sub.point[s] - x).cross(fk);
-    }
-    st.contact_force[i] = f;
-    st.contact_torque[i] = m;
+  Vec3 f = Vec3::Zero(), m = Vec3::Zero();
+  const Vec3& x = st.position[i];
+  for (int k = off[i]; k < off[i + 1]; ++k) {
+    const int s = idx[k];
+    const Vec3 fk = sign[k] * sub.force[s];
+    f += fk;
+    m += (sub.point[s] - x).cross(fk);
   }
+  st.contact_force[i] = f;
+  st.contact_torque[i] = m;
 }
 
-void Simulation::update_free_blocks() {
+void Simulation::gather_block_forces() {
+  const int n = blocks_.count;
+#pragma omp for schedule(static)
+  for (int i = 0; i < n; ++i) gather_block(i);
+}
+
+// Central differences for one free block (see the file's header).
+void Simulation::advance_block(int i, const Vec3& a_ground) {
   auto& st = blocks_.state;
   const auto& pr = blocks_.props;
   const double dt = dt_;
   const double dv_dt = 0.5 * (dt_prev_ + dt_);  // span of the velocity update
-  const Vec3 g = sim_.gravity;
+  const Vec3& g = sim_.gravity;
+  const double m = pr.mass[i];
+  const Vec3 load = -m * a_ground;  // inertial force of the moving base frame
+  const Vec3 force = m * g + load + st.contact_force[i];
+  const Vec3 v_old = st.velocity[i];
+  const Vec3 v_new = v_old + (dv_dt * pr.inv_mass[i]) * force;
+  const Vec3 L_new = st.angular_momentum[i] + dv_dt * st.contact_torque[i];
+  const Vec3& inv_I = pr.inv_principal_inertia[i];
+  // ω at the half step: predict the half-step orientation, then evaluate.
+  const Mat3& R0 = st.rotation[i];
+  const Vec3 w0 = R0 * inv_I.cwiseProduct(R0.transpose() * L_new);
+  const Mat3 Rh = (rotation_quaternion(0.5 * dt * w0) * st.orientation[i]).toRotationMatrix();
+  const Vec3 w = Rh * inv_I.cwiseProduct(Rh.transpose() * L_new);
+  const Vec3 w_old = st.angular_velocity[i];
+
+  velocity_mid_[i] = 0.5 * (v_old + v_new);
+  omega_mid_[i] = 0.5 * (w_old + w);
+  position_prev_[i] = st.position[i];
+  orientation_prev_[i] = st.orientation[i];
+  load_work_[i] += dt * load.dot(velocity_mid_[i]);
+
+  st.velocity[i] = v_new;
+  st.angular_momentum[i] = L_new;
+  st.angular_velocity[i] = w;
+  st.position[i] += dt * v_new;
+  st.orientation[i] = (rotation_quaternion(dt * w) * st.orientation[i]).normalized();
+  st.rotation[i] = st.orientation[i].toRotationMatrix();
+}
+
+Vec3 Simulation::ground_body_acceleration() const {
   const bool body_force = motion_.active() && motion_.applied_as == GroundMotionApplication::body_force;
-  const Vec3 a_ground = body_force ? Vec3(motion_.acceleration_at(time_) * motion_.direction) : Vec3::Zero();
-  const int nf = static_cast<int>(blocks_.free_blocks.size());
-  const int* free = blocks_.free_blocks.data();
+  return body_force ? Vec3(motion_.acceleration_at(time_) * motion_.direction) : Vec3::Zero();
+}
+
+// Gather and update fused in one loop over the blocks: a block's update
+// needs only its own gathered force, so one barrier less per step.
+void Simulation::gather_and_advance() {
+  const Vec3 a_ground = ground_body_acceleration();
+  const int n = blocks_.count;
+  const auto& motion = blocks_.props.motion;
 #pragma omp for schedule(static)
-  for (int k = 0; k < nf; ++k) {
-    const int i = free[k];
-    const double m = pr.mass[i];
-    const Vec3 load = -m * a_ground;  // inertial force of the moving base frame
-    const Vec3 force = m * g + load + st.contact_force[i];
-    const Vec3 v_old = st.velocity[i];
-    const Vec3 v_new = v_old + (dv_dt * pr.inv_mass[i]) * force;
-    const Vec3 L_new = st.angular_momentum[i] + dv_dt * st.contact_torque[i];
-    const Vec3& inv_I = pr.inv_principal_inertia[i];
-    // ω at the half step: predict the half-step orientation, then evaluate.
-    const Mat3& R0 = st.rotation[i];
-    const Vec3 w0 = R0 * inv_I.cwiseProduct(R0.transpose() * L_new);
-    const Mat3 Rh = (rotation_quaternion(0.5 * dt * w0) * st.orientation[i]).toRotationMatrix();
-    const Vec3 w = Rh * inv_I.cwiseProduct(Rh.transpose() * L_new);
-    const Vec3 w_old = st.angular_velocity[i];
-
-    velocity_mid_[i] = 0.5 * (v_old + v_new);
-    omega_mid_[i] = 0.5 * (w_old + w);
-    position_prev_[i] = st.position[i];
-    orientation_prev_[i] = st.orientation[i];
-    load_work_[i] += dt * load.dot(velocity_mid_[i]);
-
-    st.velocity[i] = v_new;
-    st.angular_momentum[i] = L_new;
-    st.angular_velocity[i] = w;
-    st.position[i] += dt * v_new;
-    st.orientation[i] = (rotation_quaternion(dt * w) * st.orientation[i]).normalized();
-    st.rotation[i] = st.orientation[i].toRotationMatrix();
+  for (int i = 0; i < n; ++i) {
+    gather_block(i);
+    if (motion[i] == BlockMotion::free) advance_block(i, a_ground);
   }
 }
 

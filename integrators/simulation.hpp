@@ -110,7 +110,10 @@ class Simulation {
   void start_half_step_back();
   void compute_joint_forces_parallel();
   void gather_block_forces();
-  void update_free_blocks();
+  void gather_and_advance();
+  void gather_block(int i);
+  void advance_block(int i, const Vec3& a_ground);
+  Vec3 ground_body_acceleration() const;
   void move_kinematic_blocks();
   void check_health();
 
