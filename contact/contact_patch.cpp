@@ -128,8 +128,10 @@ bool find_patch(const PosedBlock& a, const PosedBlock& b, double margin, int pre
     const Vec3 n = (ref_side == 0 ? mpr_dir : Vec3(-mpr_dir)).normalized();
     const Vec3 point = mpr_pos - (0.5 * mpr_overlap) * n;
     const double off = n.dot(point) + mpr_overlap;
-    const double la = std::cbrt(std::abs(mass_properties(*a.shape).volume));
-    const double lb = std::cbrt(std::abs(mass_properties(*b.shape).volume));
+    // Detection passes the blocks' sizes; computing them here is for callers
+    // that do not (tests), and only on this rare edge-to-edge path.
+    const double la = a.size > 0 ? a.size : std::cbrt(std::abs(mass_properties(*a.shape).volume));
+    const double lb = b.size > 0 ? b.size : std::cbrt(std::abs(mass_properties(*b.shape).volume));
     out.ref_face = -1;
     out.inc_face = -1;
     out.normal = n;

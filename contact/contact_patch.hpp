@@ -32,6 +32,7 @@ struct PosedBlock {
   const Polyhedron* shape;  // body frame
   Mat3 R;
   Vec3 x;
+  double size = 0;  // cube root of the volume (m); 0: computed when needed
 };
 
 struct PatchPoint {

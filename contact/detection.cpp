@@ -26,6 +26,7 @@ struct ContactDetector::Impl {
   std::vector<Quat> detected_orientation;
   ContactSet previous;
   std::vector<int> count;
+  std::vector<char> old_used;
 };
 
 namespace {
@@ -141,8 +142,8 @@ void ContactDetector::detect(const Blocks& b, ContactSet& contacts, bool bond_ne
 #pragma omp parallel for schedule(dynamic, 16) if (nc >= 64)
   for (int k = 0; k < nc; ++k) {
     const auto [i, j] = im.candidates[k];
-    const PosedBlock pa{&b.props.local_shape[i], b.state.rotation[i], b.state.position[i]};
-    const PosedBlock pb{&b.props.local_shape[j], b.state.rotation[j], b.state.position[j]};
+    const PosedBlock pa{&b.props.local_shape[i], b.state.rotation[i], b.state.position[i], b.props.size[i]};
+    const PosedBlock pb{&b.props.local_shape[j], b.state.rotation[j], b.state.position[j], b.props.size[j]};
     int prev_side = -1, prev_face = -1;
     if (const ContactPair* op = find_old_pair(i, j)) {
       prev_side = op->ref_block == i ? 0 : 1;
@@ -161,7 +162,8 @@ void ContactDetector::detect(const Blocks& b, ContactSet& contacts, bool bond_ne
   contacts.retired_slip_energy = old.retired_slip_energy;
   contacts.retired_damping_energy = old.retired_damping_energy;
   contacts.detections = old.detections + 1;
-  std::vector<char> old_used(old.sub.size(), 0);
+  std::vector<char>& old_used = im.old_used;  // reused across detections
+  old_used.assign(old.sub.size(), 0);
   std::size_t s = 0;
   for (int k = 0; k < nc; ++k) {
     if (!im.found[k]) continue;
