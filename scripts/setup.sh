@@ -10,6 +10,8 @@ packages=(
   python3 python3-numpy python3-matplotlib python3-h5py
   # scripts/fuzz.sh: clang++ with libFuzzer (libclang-rt) and clang's OpenMP
   clang libclang-rt-14-dev libomp-dev
+  # polydem sweep across machines: Debian's OpenMPI (mpirun, mpicxx)
+  libopenmpi-dev openmpi-bin
 )
 missing=()
 for p in "${packages[@]}"; do
