@@ -1,4 +1,5 @@
-// A small JSON value for writing summary.json (no parser, no external library).
+// A small JSON value for writing summary.json and reading it back (polydem
+// sweep reads each point's summary.json); no external library.
 //
 // Objects keep their keys in insertion order, so the summary reads the way it
 // was built. Numbers: integers are printed exactly; doubles with the shortest
@@ -20,6 +21,7 @@
 #include <cstddef>
 #include <utility>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace polydem {
@@ -70,6 +72,12 @@ class Json {
   double as_number() const;
   std::int64_t as_integer() const;
   const std::string& as_string() const;
+
+  // Parses JSON text (RFC 8259; numbers without '.', 'e' or 'E' that fit
+  // in 64 bits become integers). Throws std::runtime_error naming `what`
+  // (e.g. the file) and the byte offset of the first error. Nesting deeper
+  // than 256 levels is rejected rather than risking the stack.
+  static Json parse(std::string_view text, const std::string& what = "JSON text");
 
   // Text. indent > 0: pretty-printed with that many spaces per level;
   // indent <= 0: compact on one line.

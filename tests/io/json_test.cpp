@@ -126,5 +126,45 @@ TEST(Json, SummaryLayoutPrettyPrinted) {
   EXPECT_EQ(summary.dump(0).find('\n'), std::string::npos);
 }
 
+TEST(Json, ParsesWhatItWrites) {
+  Json o = Json::object();
+  o.set("status", "collapsed").set("steps", 123456789012LL).set("dt", 9.4e-6).set("nan", std::nan(""));
+  o.set("flag", true).set("none", Json());
+  Json& a = o["list"] = Json::array();
+  a.push_back(1.5).push_back("say \"hi\"\n\t\x01").push_back(Json::object().set("k", -0.0));
+  for (int indent : {0, 2}) {
+    const Json back = Json::parse(o.dump(indent));
+    EXPECT_EQ(back.dump(indent), o.dump(indent));
+    EXPECT_EQ(back.find("steps")->as_integer(), 123456789012LL);
+    EXPECT_EQ(back.find("dt")->as_number(), 9.4e-6);  // bit for bit: shortest round-trip text
+    EXPECT_TRUE(back.find("nan")->is_null());
+    EXPECT_EQ(back.find("list")->at(1).as_string(), "say \"hi\"\n\t\x01");
+  }
+}
+
+TEST(Json, ParsesEscapesAndNumbers) {
+  const Json j = Json::parse(R"( {"u":"\u00e9\u20ac\ud83d\ude00\/","big":1e400,"i":-17,"x":2.5E-3,"z":0} )");
+  EXPECT_EQ(j.find("u")->as_string(), "\xc3\xa9\xe2\x82\xac\xf0\x9f\x98\x80/");
+  EXPECT_TRUE(std::isinf(j.find("big")->as_number()));
+  EXPECT_EQ(j.find("i")->as_integer(), -17);
+  EXPECT_EQ(j.find("x")->as_number(), 2.5e-3);
+  EXPECT_EQ(j.find("z")->type(), Json::Type::Integer);
+  EXPECT_EQ(Json::parse("99999999999999999999").type(), Json::Type::Number);  // beyond 64 bits
+}
+
+TEST(Json, RejectsMalformedTextNamingTheOffset) {
+  for (const char* bad : {"", "{", "[1,]", "{\"a\" 1}", "{\"a\":1,}", "tru", "01", "1.", "-", "1e", "\"abc",
+                          "\"\\x\"", "\"\\ud800\"", "\"\\udc00\"", "[1] 2", "{a:1}", "\"tab\there\"", "nul"}) {
+    try {
+      (void)Json::parse(bad, "summary.json");
+      ADD_FAILURE() << "accepted: " << bad;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("summary.json: invalid JSON at byte"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_THROW((void)Json::parse(std::string(300, '[') + std::string(300, ']')), std::runtime_error);
+  EXPECT_NO_THROW((void)Json::parse(std::string(200, '[') + std::string(200, ']')));
+}
+
 }  // namespace
 }  // namespace polydem
