@@ -3,6 +3,7 @@
 
     polydem collapse DECK --direction 0 --direction 45 --direction 90 --out out/collapse
     scripts/plot_collapse.py out/collapse/collapse.json --out collapse.png
+    scripts/plot_collapse.py out/dir0/collapse.json out/dir90/collapse.json out/ramp/collapse.json
 
 Reads collapse.json: for each entry of `directions`, the azimuth of the ground
 motion (`direction_deg`) and, by method, `bisection.collapse_acceleration_g`
@@ -13,7 +14,14 @@ rate times the time the collapse takes to develop). A direction whose method
 failed (`error`, or a null acceleration) is marked with an x on the axis.
 
 --kind polar draws the accelerations against the azimuth (the default with three
-or more directions), --kind bar groups them per direction.
+or more directions), --kind bar groups them per direction. --hline G LABEL adds
+a reference acceleration (an analytical value): a line on the bar chart, a
+circle on the polar plot.
+
+Several collapse.json files (one search per direction or per method, run one
+after another or on different machines) are merged into one plot: the
+directions of all files, each direction's methods from whichever file has
+them (a later file wins when two have the same direction and method).
 
 Uses only Debian's python3-numpy and python3-matplotlib.
 """
@@ -33,9 +41,23 @@ METHODS = [("bisection", "bisection (constant acceleration)", "tab:blue", "o"),
            ("ramp", "ramp", "tab:orange", "s")]
 
 
-def read(path):
-    with open(path) as f:
-        doc = json.load(f)
+def read(paths):
+    """The first file's document, the lowest acceleration of all, and the merged rows."""
+    docs, by_deg = [], {}
+    for path in paths:
+        with open(path) as f:
+            doc = json.load(f)
+        docs.append(doc)
+        for row in rows_of(doc):
+            by_deg.setdefault(row["deg"], {}).update(row)
+    rows = sorted(by_deg.values(), key=lambda r: r["deg"])
+    if not rows:
+        raise SystemExit(f"{' '.join(paths)}: no directions")
+    lows = [float(d["collapse_acceleration_g"]) for d in docs if d.get("collapse_acceleration_g") is not None]
+    return docs[0], (min(lows) if lows else None), rows
+
+
+def rows_of(doc):
     rows = []
     for d in doc.get("directions", []):
         row = {"deg": float(d["direction_deg"])}
@@ -45,17 +67,37 @@ def read(path):
                 continue
             a = m.get("collapse_acceleration_g")
             row[method] = float(a) if a is not None else math.nan
+            if m.get("rate_g_per_s") is not None:
+                row[method + "_rate"] = float(m["rate_g_per_s"])
             if "bracket_g" in m:
                 row[method + "_bracket"] = [float(b) for b in m["bracket_g"]]
         rows.append(row)
-    if not rows:
-        raise SystemExit(f"{path}: no directions")
-    rows.sort(key=lambda r: r["deg"])
-    return doc, rows
+    return rows
 
 
 def present(rows):
-    return [m for m in METHODS if any(m[0] in r for r in rows)]
+    """The methods of the rows, the ramp's label with its rate when all ramps share one."""
+    out = []
+    for method, label, color, marker in METHODS:
+        if not any(method in r for r in rows):
+            continue
+        rates = {r[method + "_rate"] for r in rows if method + "_rate" in r}
+        if len(rates) == 1:
+            label += f" {rates.pop():g} g/s"
+        out.append((method, label, color, marker))
+    return out
+
+
+def draw_hlines(ax, hlines, polar):
+    """Reference accelerations: a line (bar chart) or a circle (polar)."""
+    styles = ["-.", ":", "--"]
+    for k, (g, label) in enumerate(hlines):
+        style = dict(color="tab:brown" if k % 2 == 0 else "tab:green", ls=styles[k % len(styles)], lw=1.1,
+                     label=f"{label}: {float(g):.3g} g", zorder=3)
+        if polar:
+            ax.plot(np.linspace(0.0, 2.0 * np.pi, 361), np.full(361, float(g)), **style)
+        else:
+            ax.axhline(float(g), **style)
 
 
 def plot_bar(ax, rows):
@@ -76,7 +118,7 @@ def plot_bar(ax, rows):
         if failed.any():
             ax.plot(xs[failed], np.zeros(failed.sum()), "x", color=color, ms=8, mew=2)
     ax.set_xticks(x, [f"{r['deg']:g}\u00b0" for r in rows])
-    ax.set_xlabel("direction of the ground motion (azimuth)")
+    ax.set_xlabel("direction of the ground motion, azimuth [\u00b0]")
     ax.set_ylabel("collapse acceleration [g]")
     ax.set_ylim(0, 1.3 * top)
     ax.grid(True, axis="y", lw=0.4, alpha=0.5)
@@ -117,32 +159,35 @@ def plot_polar(ax, rows):
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("collapse", help="collapse.json written by polydem collapse")
+    ap.add_argument("collapse", nargs="+", help="collapse.json written by polydem collapse (several: merged)")
     ap.add_argument("--kind", choices=["auto", "polar", "bar"], default="auto",
                     help="polar (three or more directions) or bar (default auto)")
-    ap.add_argument("--out", help="PNG to write (default: collapse.png beside collapse.json)")
+    ap.add_argument("--out", help="PNG to write (default: collapse.png beside the first collapse.json)")
     ap.add_argument("--title", help="figure title (default: the deck and the lowest collapse acceleration)")
+    ap.add_argument("--hline", nargs=2, action="append", default=[], metavar=("G", "LABEL"),
+                    help="a reference acceleration in g with its label (repeatable; a circle in polar)")
     ap.add_argument("--dpi", type=int, default=110)
     args = ap.parse_args(argv)
 
-    doc, rows = read(args.collapse)
+    doc, lowest, rows = read(args.collapse)
     kind = args.kind if args.kind != "auto" else ("polar" if len(rows) >= 3 else "bar")
     fig = plt.figure(figsize=(7.0, 5.5))
     ax = fig.add_subplot(projection="polar" if kind == "polar" else None)
     if kind == "polar":
+        draw_hlines(ax, args.hline, True)
         plot_polar(ax, rows)
     else:
+        draw_hlines(ax, args.hline, False)
         plot_bar(ax, rows)
 
-    lowest = doc.get("collapse_acceleration_g")
     title = args.title
     if title is None:
-        title = f"collapse acceleration: {doc.get('deck', args.collapse)}"
+        title = f"collapse acceleration: {doc.get('deck', args.collapse[0])}"
         if lowest is not None:
             title += f"\nlowest {float(lowest):.3f} g"
     fig.suptitle(title, fontsize=11)
     fig.tight_layout()
-    out = args.out or os.path.join(os.path.dirname(os.path.abspath(args.collapse)), "collapse.png")
+    out = args.out or os.path.join(os.path.dirname(os.path.abspath(args.collapse[0])), "collapse.png")
     fig.savefig(out, dpi=args.dpi)
     plt.close(fig)
     print(f"wrote {out} ({len(rows)} directions, {kind})")

@@ -13,7 +13,8 @@ Only ASCII files with VTK_POLYHEDRON (42) or VTK_POLYGON (7) cells are read;
 the XML is parsed with xml.etree, no VTK module is needed.
 
 Each face is drawn as one polygon of a Poly3DCollection with its colour (by
-displacement magnitude in mm, course or block id) shaded by a light that sits
+displacement magnitude in mm, in um when every block moved less than 0.01 mm,
+course or block id) shaded by a light that sits
 above-left of the camera: ambient + diffuse * max(0, n.l) with n the outward
 face normal (Newell's method; polydem writes the faces counter-clockwise seen
 from outside). Faces turned away from the camera are hidden by their own block
@@ -147,8 +148,11 @@ def cell_values(data, color):
     if color == "displacement":
         d = data["displacement"]
         values = 1000.0 * np.linalg.norm(d, axis=1)
+        unit = "mm"
+        if values.size and 0 < values.max() < 0.01:  # a structure that stays put: micrometres
+            values, unit = 1000.0 * values, "\u00b5m"
         top = values.max() if values.size and values.max() > 0 else 1.0
-        return values, plt.get_cmap("viridis"), colors.Normalize(0.0, top), "displacement [mm]"
+        return values, plt.get_cmap("viridis"), colors.Normalize(0.0, top), f"displacement [{unit}]"
     values = np.asarray(data[color], dtype=float).reshape(n)
     if color == "course":
         lo, hi = int(values.min()), int(values.max())
@@ -209,7 +213,7 @@ def tiles(poly, normal, cell):
     return out
 
 
-def render(points, cell_faces, data, color, view, title, out, dpi, size):
+def render(points, cell_faces, data, color, view, title, out, dpi, size, zoom=1.15):
     eye, right, up = view_vectors(*view)
     light = 0.55 * eye + 0.65 * np.array([0.0, 0.0, 1.0]) - 0.5 * right
     light /= np.linalg.norm(light)
@@ -252,7 +256,7 @@ def render(points, cell_faces, data, color, view, title, out, dpi, size):
         raise SystemExit("no faces to draw")
 
     fig = plt.figure(figsize=size, dpi=dpi)
-    ax = fig.add_axes([0.0, 0.0, 0.82, 0.93], projection="3d", proj_type="ortho")
+    ax = fig.add_axes([0.0, 0.05, 0.82, 0.88], projection="3d", proj_type="ortho")  # room below for the x, y labels
     cax = fig.add_axes([0.83, 0.22, 0.022, 0.52])
     ax.computed_zorder = False  # draw the collections in the order added
     if whole:
@@ -266,7 +270,7 @@ def render(points, cell_faces, data, color, view, title, out, dpi, size):
     ax.set_xlim(lo[0], lo[0] + span[0])
     ax.set_ylim(lo[1], lo[1] + span[1])
     ax.set_zlim(lo[2], lo[2] + span[2])
-    ax.set_box_aspect(span, zoom=1.15)
+    ax.set_box_aspect(span, zoom=zoom)
     ax.view_init(elev=view[1], azim=view[0])
     ax.set_xlabel("x [m]", fontsize=8)
     ax.set_ylabel("y [m]", fontsize=8)
@@ -284,7 +288,10 @@ def render(points, cell_faces, data, color, view, title, out, dpi, size):
     if color == "course":
         bar.set_ticks(np.arange(int(norm.vmin + 0.5), int(norm.vmax + 0.5) + 1, max(1, int(norm.vmax - norm.vmin) // 10)))
     fig.suptitle(title, fontsize=11, y=0.97)
-    fig.savefig(out, dpi=dpi, bbox_inches="tight")
+    # mplot3d leaves its axis labels out of the tight box: add them, or they are cut off.
+    fig.savefig(out, dpi=dpi, bbox_inches="tight",
+                bbox_extra_artists=fig.get_default_bbox_extra_artists()
+                + [ax.xaxis.label, ax.yaxis.label, ax.zaxis.label])
     plt.close(fig)
     return len(polys)
 
@@ -298,10 +305,12 @@ def main(argv=None):
     when.add_argument("--last", action="store_true", help="the last snapshot (the default for a .pvd)")
     ap.add_argument("--out", help="PNG to write (default: beside the input, .png)")
     ap.add_argument("--color", choices=["displacement", "course", "block_id"], default="displacement",
-                    help="what the colour shows (default displacement magnitude, mm)")
+                    help="what the colour shows (default displacement magnitude, mm; um below 0.01 mm)")
     ap.add_argument("--view", nargs=2, type=float, metavar=("AZIMUTH", "ELEVATION"), default=(-60.0, 20.0),
                     help="camera azimuth and elevation in degrees (default -60 20)")
     ap.add_argument("--title", help="title, followed by the time when known (default: the file name)")
+    ap.add_argument("--zoom", type=float, default=1.15,
+                    help="size of the drawing in its axes (default 1.15; lower it when tick labels are cut off)")
     ap.add_argument("--dpi", type=int, default=110)
     ap.add_argument("--size", nargs=2, type=float, metavar=("W", "H"), default=(7.0, 5.5),
                     help="figure size in inches (default 7 5.5)")
@@ -320,7 +329,7 @@ def main(argv=None):
     if t is not None:
         title += f"   t = {t:.3f} s"
     out = args.out or os.path.splitext(vtu)[0] + ".png"
-    n = render(points, cell_faces, data, color, tuple(args.view), title, out, args.dpi, tuple(args.size))
+    n = render(points, cell_faces, data, color, tuple(args.view), title, out, args.dpi, tuple(args.size), args.zoom)
     print(f"wrote {out} ({len(cell_faces)} blocks, {n} faces drawn)")
 
 

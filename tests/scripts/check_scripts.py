@@ -4,8 +4,11 @@
     /usr/bin/python3 tests/scripts/check_scripts.py POLYDEM_BINARY SOURCE_DIR
 
 Runs polydem on small cases into a temporary folder (free rocking for 0.3 s with
-snapshots, a constant-acceleration collapse search on the rocking-onset block in
-two directions, the 402-block spire mesh), then every script on the results, and
+snapshots, the rocking-onset block under its ramp for 1 s, a constant-acceleration
+collapse search on the rocking-onset block in two directions, the 402-block spire
+mesh), then every script on the results (with the options the README's gallery
+uses: several runs with their difference, --x ground.acceleration, --vline,
+--length-unit, several collapse.json with --hline, --zoom), and
 checks that each PNG exists, is larger than 10 kB and is not a blank image (the
 standard deviation of its pixels). The spire rendering must take under 20 s.
 No pytest: a failure prints what failed and exits 1.
@@ -66,6 +69,10 @@ def main():
         run([polydem, "collapse", os.path.join(verification, "rocking_onset.toml"), "--out", col, "--quiet",
              "--direction", "0", "--direction", "90", "--low", "0.1", "--high", "0.5", "--tolerance", "0.05",
              "--hold-time", "1.0", "--ramp-rate", "0.3"])
+        onset = os.path.join(tmp, "onset")
+        # Exit 1 is expected: 1 s of the ramp ends before the block starts to rock.
+        run([polydem, "run", os.path.join(verification, "rocking_onset.toml"), "--out", onset, "--quiet",
+             "--set", "simulation.end_time=1.0"], ok_codes=(0, 1))
         mesh = os.path.join(tmp, "spire")
         run([polydem, "mesh", os.path.join(source, "examples", "spire", "spire_geometry.toml"), "--out", mesh])
 
@@ -76,6 +83,16 @@ def main():
         run([PYTHON, os.path.join(scripts, "plot_histories.py"), h5, "--columns", "pillar.rotation.y",
              "pillar.angular_velocity.*", "--relative", "--out", png("histories_some.png")])
         check_png(png("histories_some.png"))
+        onset_h5 = os.path.join(onset, "results.h5")
+        run([PYTHON, os.path.join(scripts, "plot_histories.py"), onset_h5, "--columns", "pillar.rotation.*",
+             "--x", "ground.acceleration", "--vline", "0.05", "a line", "--out", png("histories_x.png")])
+        check_png(png("histories_x.png"))
+        run([PYTHON, os.path.join(scripts, "plot_histories.py"), h5, onset_h5, "--labels", "free", "onset",
+             "--columns", "pillar.rotation.y", "--difference", "--out", png("histories_two.png")])
+        check_png(png("histories_two.png"))
+        run([PYTHON, os.path.join(scripts, "plot_histories.py"), onset_h5, "--columns", "pillar.rotation.y",
+             "ground.*", "--relative", "pillar.*", "--length-unit", "um", "--out", png("histories_rel.png")])
+        check_png(png("histories_rel.png"))
         run([PYTHON, os.path.join(scripts, "plot_energy.py"), h5, "--out", png("energy.png")])
         check_png(png("energy.png"))
         run([PYTHON, os.path.join(scripts, "render_blocks.py"), os.path.join(rock, "vtk", "blocks.pvd"), "--last",
@@ -87,6 +104,9 @@ def main():
         seconds = run([PYTHON, os.path.join(scripts, "render_blocks.py"), os.path.join(mesh, "blocks.vtu"),
                        "--color", "course", "--out", png("spire.png")])
         check_png(png("spire.png"))
+        run([PYTHON, os.path.join(scripts, "render_blocks.py"), os.path.join(mesh, "blocks.vtu"),
+             "--view", "-65", "15", "--size", "6", "6.5", "--zoom", "1.0", "--out", png("spire_zoom.png")])
+        check_png(png("spire_zoom.png"))
         if seconds > 20.0:
             failures.append(f"rendering the 402-block spire took {seconds:.1f} s (limit 20 s)")
         collapse_json = os.path.join(col, "collapse.json")
@@ -95,6 +115,9 @@ def main():
         run([PYTHON, os.path.join(scripts, "plot_collapse.py"), collapse_json, "--kind", "polar",
              "--out", png("collapse_polar.png")])
         check_png(png("collapse_polar.png"))
+        run([PYTHON, os.path.join(scripts, "plot_collapse.py"), collapse_json, collapse_json, "--kind", "bar",
+             "--hline", "0.25", "b/h", "--out", png("collapse_merged.png")])
+        check_png(png("collapse_merged.png"))
 
     if failures:
         print("FAILED:\n  " + "\n  ".join(failures))
