@@ -43,6 +43,7 @@ void AssessmentMonitor::observe(const Simulation& sim) {
   }
   if (monitor_ >= 0) {
     const double u = displacement(sim, monitor_).dot(direction_);
+    result_.monitor_peak_displacement = std::max(result_.monitor_peak_displacement, std::abs(u));
     // A sign counts once the tip has moved a fifth of the damage threshold.
     const double small = 0.2 * spec_.damage_displacement;
     const int sign = u > small ? 1 : (u < -small ? -1 : 0);
@@ -146,6 +147,7 @@ void AssessmentMonitor::save(ByteWriter& w) const {
   w.put(a.max_displacement_block);
   w.put(a.max_residual_displacement);
   w.put(a.monitor_block);
+  w.put(a.monitor_peak_displacement);
   w.put(a.moved_blocks);
   w.put(static_cast<std::int32_t>(a.opened_joints));
   for (double x : {a.crack_angle_deg, a.crack_low_z, a.crack_high_z}) w.put(x);
@@ -165,6 +167,7 @@ void AssessmentMonitor::load(ByteReader& r) {
   r.get(a.max_displacement_block);
   r.get(a.max_residual_displacement);
   r.get(a.monitor_block);
+  r.get(a.monitor_peak_displacement);
   r.get(a.moved_blocks);
   std::int32_t opened = 0;
   r.get(opened);

@@ -22,6 +22,9 @@ struct Assessment {
   std::string max_displacement_block;
   double max_residual_displacement = 0;  // m, at the end
   std::string monitor_block;
+  // m, largest |displacement| of the monitor block along the ground motion
+  // (the peak tip displacement of a spire), sampled as max_displacement is.
+  double monitor_peak_displacement = 0;
   // When the run collapsed (or at the end if damaged): the blocks that had
   // moved more than damage_displacement, and the crack — the joints opened by
   // more than half of it — with the angle from horizontal of its principal

@@ -51,6 +51,7 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   as.set("max_displacement_block", a.max_displacement_block);
   as.set("max_residual_displacement_m", a.max_residual_displacement);
   as.set("monitor_block", a.monitor_block);
+  as.set("monitor_peak_displacement_m", a.monitor_peak_displacement);
   as.set("moved_blocks", static_cast<int>(a.moved_blocks.size()));
   as.set("opened_joints", a.opened_joints);
   as.set("crack_angle_deg", a.crack_angle_deg >= 0 ? Json(a.crack_angle_deg) : Json());

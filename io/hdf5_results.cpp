@@ -192,6 +192,19 @@ void ResultsFile::write_string(const std::string& path, const std::string& text)
   });
 }
 
+void ResultsFile::write_strings(const std::string& path, const std::vector<std::string>& values) {
+  const std::string norm = normalise(path);
+  impl_->guarded(norm, [&] {
+    impl_->prepare_dataset(norm);
+    const H5::StrType st = vlen_utf8();
+    std::vector<const char*> ptrs;
+    for (const auto& v : values) ptrs.push_back(v.c_str());
+    const hsize_t n = ptrs.size();
+    H5::DataSet ds = impl_->file.createDataSet(norm, st, H5::DataSpace(1, &n));
+    if (n > 0) ds.write(ptrs.data(), st);
+  });
+}
+
 void ResultsFile::write_attribute(const std::string& path, const std::string& name, const std::string& value) {
   const std::string norm = normalise(path);
   impl_->guarded(norm, [&] { impl_->with_object(norm, [&](H5::H5Object& o) { write_string_attribute(o, name, value); }); });
@@ -302,6 +315,24 @@ std::string read_string(const std::string& file, const std::string& path) {
     std::string s;
     ds.read(s, ds.getStrType());
     return s;
+  });
+}
+
+std::vector<std::string> read_strings(const std::string& file, const std::string& path) {
+  return read_guarded(file, path, [&](H5::H5File& h, const std::string& norm) {
+    H5::DataSet ds = h.openDataSet(norm);
+    if (ds.getTypeClass() != H5T_STRING || !ds.getStrType().isVariableStr())
+      fail(file, norm, "not a dataset of variable-length strings");
+    const auto n = static_cast<std::size_t>(ds.getSpace().getSimpleExtentNpoints());
+    std::vector<char*> buf(n, nullptr);
+    const H5::StrType st = vlen_utf8();
+    if (n > 0) ds.read(buf.data(), st);
+    std::vector<std::string> out;
+    for (char* p : buf) {
+      out.emplace_back(p ? p : "");
+      if (p) H5free_memory(p);
+    }
+    return out;
   });
 }
 

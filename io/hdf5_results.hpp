@@ -40,6 +40,8 @@ class ResultsFile {
   void write_attribute(const std::string& path, const std::string& name, const std::string& value);
   void write_attribute(const std::string& path, const std::string& name, const char* value);
   void write_attribute(const std::string& path, const std::string& name, double value);
+  // 1-D dataset of variable-length UTF-8 strings (e.g. a status per sweep point).
+  void write_strings(const std::string& path, const std::vector<std::string>& values);
   // 1-D float64 dataset with attribute unit.
   void write_vector(const std::string& path, const std::vector<double>& values, const std::string& unit);
   // 2-D float64 dataset [rows][cols] from row-major data, attribute unit and,
@@ -62,6 +64,7 @@ class ResultsFile {
 std::vector<double> read_vector(const std::string& file, const std::string& path);  // any rank, flattened row-major
 std::vector<std::size_t> read_shape(const std::string& file, const std::string& path);
 std::string read_string(const std::string& file, const std::string& path);
+std::vector<std::string> read_strings(const std::string& file, const std::string& path);  // 1-D string dataset
 std::string read_attribute_string(const std::string& file, const std::string& path, const std::string& name);
 double read_attribute_double(const std::string& file, const std::string& path, const std::string& name);
 std::vector<std::string> read_attribute_strings(const std::string& file, const std::string& path,

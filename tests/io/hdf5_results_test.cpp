@@ -72,6 +72,21 @@ TEST(ResultsFile, RoundTrip) {
   EXPECT_FALSE(object_exists(path, "/histories/missing/deeper"));
 }
 
+TEST(ResultsFile, StringArraysRoundTrip) {
+  ScratchDir dir("h5s");
+  const std::string path = dir.path("sweep.h5");
+  const Names status = {"intact", "collapsed", "", "damaged \xc2\xb0"};
+  {
+    ResultsFile f(path);
+    f.write_strings("/points/status", status);
+    f.write_strings("/points/none", {});
+    f.commit();
+  }
+  EXPECT_EQ(read_strings(path, "/points/status"), status);
+  EXPECT_TRUE(read_strings(path, "/points/none").empty());
+  EXPECT_THROW((void)read_strings(path, "/points/missing"), std::runtime_error);
+}
+
 TEST(ResultsFile, UncommittedRunLeavesNoFile) {
   ScratchDir dir("h5");
   const std::string path = dir.path("results.h5");
