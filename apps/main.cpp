@@ -1,8 +1,9 @@
-// polydem: the command line. Subcommands: run, analytic, mesh.
+// polydem: the command line. Subcommands: run, collapse, sweep, analytic, mesh.
 #include "apps/analytic_command.hpp"
 #include "apps/collapse_command.hpp"
 #include "apps/mesh_command.hpp"
 #include "apps/run_command.hpp"
+#include "apps/sweep_command.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -44,6 +45,24 @@ int main(int argc, char** argv) {
   collapse_cmd->add_option("--set", col.overrides, "Override a deck key (repeatable)");
   collapse_cmd->add_flag("--quiet", col.quiet, "No per-run lines on stderr");
 
+  polydem::SweepOptions sweep;
+  auto* sweep_cmd = app.add_subcommand(
+      "sweep", "Run a deck over a grid of key values (local processes or mpirun), with a boundary search: "
+               "DIR/sweep.csv, boundaries.csv, sweep.h5; resumable");
+  sweep_cmd->add_option("deck", sweep.deck_path, "Deck file (TOML)");
+  sweep_cmd->add_flag("--default", sweep.use_default, "Use the built-in default deck");
+  sweep_cmd->add_option("--out", sweep.out_dir, "Output directory (finished points in DIR/points are reused)")
+      ->capture_default_str();
+  sweep_cmd->add_option("--vary", sweep.vary, "KEY=START:STOP:N or KEY=V1,V2,... (repeatable; full grid)");
+  sweep_cmd->add_option("--search", sweep.search,
+                        "KEY=START:STOP:N: for each --vary point, a coarse scan of N values of KEY, then "
+                        "bisection of every change of class (intact/damaged/Mode I/Mode II) to --resolution");
+  sweep_cmd->add_option("--resolution", sweep.resolution, "Bracket width the boundary search stops at (KEY's unit)");
+  sweep_cmd->add_option("--jobs", sweep.jobs, "Local worker processes (0: cores / threads)")->capture_default_str();
+  sweep_cmd->add_option("--threads", sweep.threads, "OpenMP threads of each run")->capture_default_str();
+  sweep_cmd->add_option("--set", sweep.overrides, "Override a deck key for every point (repeatable)");
+  sweep_cmd->add_flag("--quiet", sweep.quiet, "Only the final table");
+
   auto* analytic_cmd = app.add_subcommand("analytic", "Analytical models of the paper (polydem analytic --help)");
   analytic_cmd->prefix_command();  // everything after `analytic` goes to the model's own parser
   analytic_cmd->set_help_flag();
@@ -61,6 +80,17 @@ int main(int argc, char** argv) {
   }
   if (analytic_cmd->parsed()) return run_analytic_command(analytic_cmd->remaining());
   if (mesh_cmd->parsed()) return polydem::mesh_command(mesh);
+  if (sweep_cmd->parsed()) {
+    if (sweep.deck_path.empty() && !sweep.use_default) {
+      std::cerr << "polydem sweep: error: give a deck file or --default\n";
+      return polydem::exit_bad_input;
+    }
+    if (!sweep.search.empty() && !(sweep.resolution > 0)) {
+      std::cerr << "polydem sweep: error: --search needs --resolution (the bracket width to bisect down to)\n";
+      return polydem::exit_bad_input;
+    }
+    return polydem::sweep_command(sweep);
+  }
   if (collapse_cmd->parsed()) {
     if (col.deck_path.empty() && !col.use_default) {
       std::cerr << "polydem collapse: give a deck file or --default\n";

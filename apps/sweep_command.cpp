@@ -1,0 +1,214 @@
+#include "apps/sweep_command.hpp"
+
+#include "apps/run_command.hpp"
+#include "apps/sweep_points.hpp"
+#include "apps/sweep_search.hpp"
+#include "apps/sweep_table.hpp"
+#include "io/atomic_file.hpp"
+#include "io/deck.hpp"
+#include "io/json.hpp"
+
+#include <fmt/core.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <thread>
+
+namespace polydem {
+namespace {
+
+Json axis_json(const std::string& key, const std::vector<double>& values) {
+  return Json::object().set("key", key).set("values", Json(values));
+}
+
+// Checks the deck with the given points' overrides before anything runs, so
+// a bad key or value stops the sweep at once (exit 2, nothing run).
+void validate(const SweepSetup& setup, const std::vector<SweepPoint>& points) {
+  for (const SweepPoint& p : points) (void)point_directory(setup, p);
+}
+
+}  // namespace
+
+int sweep_command(const SweepOptions& o) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  SweepSetup setup;
+  setup.deck_path = o.deck_path;
+  setup.use_default = o.use_default;
+  setup.overrides = o.overrides;
+  setup.out_dir = o.out_dir;
+  setup.threads = std::max(1, o.threads);
+  setup.quiet = o.quiet;
+  setup.executable = o.executable;
+
+  std::vector<SweepAxis> axes;
+  SearchAxis search;
+  const bool searching = !o.search.empty();
+  std::vector<SweepPoint> grid;
+  SceneSpec base;
+  try {
+    for (const auto& v : o.vary) axes.push_back(parse_axis(v));
+    if (searching) search = parse_search_axis(o.search, o.resolution);
+    if (axes.empty() && !searching) throw std::invalid_argument("give at least one --vary KEY=... or a --search");
+    std::map<std::string, int> seen;
+    for (const auto& a : axes) ++seen[a.key];
+    if (searching) ++seen[search.key];
+    for (const auto& [key, n] : seen)
+      if (n > 1) throw std::invalid_argument("key " + key + " is varied twice");
+    grid = grid_points(axes);
+    if (grid.size() > 1000000) throw std::invalid_argument("more than a million points");
+    base = setup.use_default ? parse_deck(default_deck_text(), "<built-in default deck>", setup.overrides)
+                             : read_deck(setup.deck_path, setup.overrides);
+    if (searching) {
+      std::vector<SweepPoint> ends;
+      for (const SweepPoint& p : grid) {
+        ends.push_back(p.with(search.key, search.start));
+        ends.push_back(p.with(search.key, search.stop));
+      }
+      validate(setup, ends);
+    } else {
+      validate(setup, grid);
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "polydem sweep: error: " << e.what() << "\n";
+    return exit_bad_input;
+  }
+
+  std::unique_ptr<PointRunner> runner;
+  if (started_by_mpirun()) {
+    runner = mpi_runner(setup);
+    if (!runner) {
+      std::cerr << "polydem sweep: error: started by mpirun, but this polydem was built without MPI "
+                   "(install libopenmpi-dev and rebuild, or run without mpirun and use --jobs)\n";
+      return exit_bad_input;
+    }
+  } else {
+    int jobs = o.jobs;
+    if (jobs <= 0) jobs = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / setup.threads);
+    runner = local_runner(setup, jobs);
+  }
+  if (!runner->leader()) {
+    runner->serve();
+    return exit_success;
+  }
+
+  // Every result so far, by point directory; the tables are rewritten from it
+  // after each batch.
+  std::map<std::string, SweepRow> rows;
+  std::vector<std::string> keys;
+  for (const auto& a : axes) keys.push_back(a.key);
+  if (searching) keys.push_back(search.key);
+  SweepTables tables;
+  tables.keys = keys;
+  tables.deck_text = base.deck_text;
+  tables.deck_path = setup.use_default ? std::string("<built-in default deck>") : setup.deck_path;
+  long ran = 0, reused = 0, failed = 0;
+  int batches = 0;
+  auto write_tables = [&]() {
+    tables.rows.clear();
+    for (const auto& [id, row] : rows) tables.rows.push_back(row);
+    write_sweep_tables(setup.out_dir, tables);
+  };
+  if (!o.quiet)
+    std::cerr << fmt::format("polydem sweep: {} {} on {}\n", searching ? "boundary search over" : "grid of",
+                             searching ? fmt::format("{} column{} along {}", grid.size(), grid.size() == 1 ? "" : "s",
+                                                     search.key)
+                                       : fmt::format("{} point{}", grid.size(), grid.size() == 1 ? "" : "s"),
+                             runner->describe());
+  const BatchRunner run_batch = [&](const std::vector<SweepPoint>& batch) {
+    const auto t0 = std::chrono::steady_clock::now();
+    std::vector<PointResult> results = runner->run(batch);
+    ++batches;
+    long batch_reused = 0;
+    for (std::size_t i = 0; i < batch.size(); ++i) {
+      const std::string id = std::filesystem::path(results[i].directory).filename().string();
+      rows[id] = SweepRow{batch[i], results[i], id};
+      if (results[i].reused) ++batch_reused;
+      if (results[i].status == "error" || results[i].status == "unstable") ++failed;
+      if (!o.quiet && !results[i].reused)
+        std::cerr << fmt::format("  {}: {}{}  ({:.1f} s){}\n", batch[i].label(), results[i].status,
+                                 results[i].collapse_mode.empty() ? "" : " (Mode " + results[i].collapse_mode + ")",
+                                 results[i].wall_seconds,
+                                 results[i].message.empty() ? "" : "  " + results[i].message);
+    }
+    reused += batch_reused;
+    ran += static_cast<long>(batch.size()) - batch_reused;
+    write_tables();
+    if (!o.quiet)
+      std::cerr << fmt::format("polydem sweep: batch {}: {} point{}, {} finished before, {:.1f} s\n", batches,
+                               batch.size(), batch.size() == 1 ? "" : "s", batch_reused,
+                               std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    return results;
+  };
+
+  SearchReport report;
+  try {
+    if (searching) {
+      report = boundary_search(grid, search, run_batch);
+      tables.search = &report;
+      tables.axis = &search;
+      write_tables();
+    } else {
+      (void)run_batch(grid);
+    }
+  } catch (const std::exception& e) {
+    runner->finish();
+    std::cerr << "polydem sweep: error: " << e.what() << "\n";
+    return exit_bad_input;
+  }
+  runner->finish();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+
+  Json s = Json::object();
+  s.set("deck", tables.deck_path);
+  Json axes_json = Json::array();
+  for (const auto& a : axes) axes_json.push_back(axis_json(a.key, a.values));
+  s.set("vary", std::move(axes_json));
+  if (searching) {
+    s.set("search", Json::object()
+                        .set("key", search.key)
+                        .set("start", search.start)
+                        .set("stop", search.stop)
+                        .set("coarse_points", search.coarse)
+                        .set("resolution", (search.stop - search.start) / (search.lattice_points() - 1))
+                        .set("rounds", report.rounds)
+                        .set("runs", report.runs)
+                        .set("full_grid_runs", report.full_grid)
+                        .set("runs_saved_fraction",
+                             report.full_grid > 0 ? 1.0 - static_cast<double>(report.runs) / report.full_grid : 0.0));
+  }
+  s.set("runner", runner->describe());
+  s.set("points", static_cast<std::int64_t>(rows.size()));
+  s.set("ran", ran);
+  s.set("finished_before", reused);
+  s.set("unstable_or_failed", failed);
+  double run_seconds = 0;
+  for (const auto& [id, row] : rows) run_seconds += row.result.wall_seconds;
+  s.set("run_seconds_total", run_seconds);
+  s.set("wall_seconds", wall);
+  write_file_atomic(setup.out_dir + "/sweep.json", s.dump(2) + "\n");
+
+  if (searching) {
+    std::cout << fmt::format("{:<40} {:>12} {:>12} {:>5} {:>5}  transitions ({})\n", "column", "damage", "collapse",
+                             "mode", "runs", search.key);
+    for (const ColumnResult& c : report.columns)
+      std::cout << fmt::format("{:<40} {:>12} {:>12} {:>5} {:>5}  {}\n", c.outer.label(),
+                               std::isnan(c.damage_threshold) ? "-" : value_text(c.damage_threshold),
+                               std::isnan(c.collapse_threshold) ? "-" : value_text(c.collapse_threshold),
+                               c.collapse_mode, c.runs.size(), transitions_text(c.transitions));
+    std::cout << fmt::format("{} runs ({} finished before) against {} for the full grid at the same resolution "
+                             "({:.0f} % saved); {:.1f} s\n",
+                             report.runs, reused, report.full_grid,
+                             100.0 * (1.0 - static_cast<double>(report.runs) / report.full_grid), wall);
+  } else {
+    std::cout << fmt::format("{} points: {} run, {} finished before, {} unstable or failed; {:.1f} s\n", rows.size(),
+                             ran, reused, failed, wall);
+  }
+  std::cout << "results in " << setup.out_dir << "/sweep.csv" << (searching ? ", boundaries.csv" : "")
+            << " and sweep.h5\n";
+  return failed > 0 ? exit_instability : exit_success;
+}
+
+}  // namespace polydem

@@ -1,0 +1,38 @@
+// `polydem sweep`: a deck run over a grid of values of its keys, on local
+// worker processes or across MPI ranks, resumable, with a boundary search
+// that finds damage and collapse thresholds in far fewer runs than the full
+// grid (paper Figures 5 and 7: one-sine pulses over a_p and T_p).
+//
+//   polydem sweep examples/spire/tip_pulse.toml --out out/tip
+//       --vary ground_motion.period=0.5:2.0:7
+//       --search ground_motion.acceleration_g=0.2:3.0:15 --resolution 0.01 --jobs 2
+//
+// Without --search the points are the full grid of the --vary axes. With it,
+// each point of the --vary grid is a column along the --search key (see
+// sweep_search.hpp). Finished points are kept in DIR/points and skipped when
+// the same command runs again. Under `mpirun -np N` (polydem built with
+// MPI) the points are spread over the ranks.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace polydem {
+
+struct SweepOptions {
+  std::string deck_path;
+  bool use_default = false;
+  std::string out_dir = "out/sweep";
+  std::vector<std::string> vary;     // KEY=START:STOP:N or KEY=V1,V2,...
+  std::string search;                // KEY=START:STOP:N (coarse scan) or empty
+  double resolution = 0;             // bisection stops at this bracket (with --search)
+  int jobs = 0;                      // local worker processes (0: cores / threads)
+  int threads = 1;                   // OpenMP threads per run
+  std::vector<std::string> overrides;
+  bool quiet = false;
+  std::string executable;            // polydem binary for local workers (tests); default: this one
+};
+
+int sweep_command(const SweepOptions& options);
+
+}  // namespace polydem

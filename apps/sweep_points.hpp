@@ -1,0 +1,101 @@
+// Running the points of a sweep and reading their results back.
+//
+// Every point is an ordinary `polydem run` of the deck with the point's
+// overrides, into DIR/points/<id>/ (summary.json, results.h5, log.txt, and
+// point.json naming the overrides). The id is a checksum of what decides the
+// run — deck text, all overrides, the ground-motion record's bytes and the
+// polydem version — so a resumed sweep finds a point's results only if they
+// are still valid, and an edited deck is run again. A point is finished when
+// its summary.json exists: run_command writes it last and atomically, so a
+// sweep killed at any moment leaves either a complete point or one that is
+// run again from the start.
+#pragma once
+
+#include "apps/sweep_grid.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace polydem {
+
+struct SweepSetup {
+  std::string deck_path;  // empty with use_default
+  bool use_default = false;
+  std::vector<std::string> overrides;  // the user's --set, before each point's own
+  std::string out_dir;                 // DIR: points/ and the tables
+  int threads = 1;                     // OpenMP threads of each run
+  bool quiet = false;
+  std::string executable;  // polydem binary for local worker processes (default /proc/self/exe)
+
+  std::vector<std::string> point_overrides(const SweepPoint& p) const;
+};
+
+// What the sweep keeps of one run (from its summary.json).
+struct PointResult {
+  std::string status;         // intact | damaged | collapsed | unstable | error
+  std::string collapse_mode;  // I | II | "" (not collapsed)
+  double peak_tip_displacement = 0;  // m, the monitor block's largest displacement along the motion
+  double max_displacement = 0;       // m, of any block
+  double residual_displacement = 0;  // m, largest at the end
+  double collapse_time = -1;         // s, -1 when not collapsed
+  double wall_seconds = 0;           // of the run itself
+  long steps = 0;
+  int exit_code = 0;     // of `polydem run` (see run_command.hpp)
+  bool reused = false;   // found finished on disk: a resumed sweep did not run it again
+  std::string message;   // for unstable and error: why
+  std::string directory; // DIR/points/<id>
+
+  // The class a boundary search tells apart: intact, damaged, I, II,
+  // unstable or error.
+  std::string klass() const;
+};
+
+// The point's directory: DIR/points/<16 hex digits>. Throws DeckError-like
+// std::runtime_error if the deck with these overrides is not valid.
+std::string point_directory(const SweepSetup& setup, const SweepPoint& point);
+
+// The result of a finished point, or nullopt-like empty status if its
+// summary.json is missing. A summary.json that cannot be parsed counts as
+// missing (the point is run again).
+PointResult read_point_result(const std::string& dir);
+bool point_finished(const std::string& dir);
+
+// Parses a summary.json text (as run_command writes it) into a result.
+PointResult point_result_from_summary(const std::string& summary_text, const std::string& what);
+
+// Runs batches of points, skipping the finished ones, and returns one result
+// per point in the order given.
+class PointRunner {
+ public:
+  virtual ~PointRunner() = default;
+  virtual std::vector<PointResult> run(const std::vector<SweepPoint>& batch) = 0;
+  // The process that prints, writes the tables and decides what to run next
+  // (rank 0 under MPI, the only process otherwise).
+  virtual bool leader() const { return true; }
+  virtual std::string describe() const = 0;  // e.g. "2 local processes"
+  // Ranks other than the leader: run what the leader hands out until it
+  // calls finish().
+  virtual void serve() {}
+  // The leader, when the sweep is over (releases the other ranks).
+  virtual void finish() {}
+};
+
+// `jobs` worker processes on this machine (each `polydem run`, killed with
+// the sweep if it dies).
+std::unique_ptr<PointRunner> local_runner(const SweepSetup& setup, int jobs);
+
+// One process per MPI rank when polydem was built with MPI and started by
+// mpirun; nullptr otherwise. Rank 0 leads; every rank (0 too) runs its share
+// of each batch in its own process, and rank 0 gathers the summaries and
+// writes them into its points/ (so it has every result even without a shared
+// file system). Ranks other than 0 return from serve() when the sweep ends.
+std::unique_ptr<PointRunner> mpi_runner(const SweepSetup& setup);
+bool started_by_mpirun();
+
+// Runs one point in this process (MPI ranks) and returns its result.
+PointResult run_point_here(const SweepSetup& setup, const SweepPoint& point, const std::string& dir);
+// Empties the point's directory and writes its point.json (before a run).
+void prepare_point_directory(const std::string& dir, const SweepPoint& point, const SweepSetup& setup);
+
+}  // namespace polydem
