@@ -286,7 +286,8 @@ def render(points, cell_faces, data, color, view, title, out, dpi, size, zoom=1.
     bar.set_label(label, fontsize=9)
     bar.ax.tick_params(labelsize=8)
     if color == "course":
-        bar.set_ticks(np.arange(int(norm.vmin + 0.5), int(norm.vmax + 0.5) + 1, max(1, int(norm.vmax - norm.vmin) // 10)))
+        lo, hi = int(round(norm.vmin + 0.5)), int(round(norm.vmax - 0.5))  # the first and the last course
+        bar.set_ticks(np.arange(lo, hi + 1, max(1, (hi - lo + 1) // 10)))
     fig.suptitle(title, fontsize=11, y=0.97)
     # mplot3d leaves its axis labels out of the tight box: add them, or they are cut off.
     fig.savefig(out, dpi=dpi, bbox_inches="tight",
