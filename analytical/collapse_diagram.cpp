@@ -34,19 +34,28 @@ CollapseColumn collapse_column(const RockingBody& body, double T_p, const Collap
     a[i] = lo + (opt.a_max_g - lo) * i / (n - 1);
     m[i] = outcome(a[i]);
   }
-  for (int i = 0; i + 1 < n; ++i) {
-    if (m[i] == m[i + 1]) continue;
-    double l = a[i], h = a[i + 1];
-    CollapseMode ml = m[i], mh = m[i + 1];
+  // Bisects [l, h] (outcomes ml ≠ mh) to the tolerance. A midpoint with a
+  // third outcome splits the interval and both halves are bisected, so a
+  // coarse interval holding two changes (e.g. Mode I → safe → Mode II, a
+  // Mode I loop closing just below the Mode II boundary) keeps both.
+  auto bisect = [&](auto&& self, double l, CollapseMode ml, double h, CollapseMode mh) -> void {
     while (h - l > opt.tolerance_g) {
       const double mid = 0.5 * (l + h);
       const CollapseMode mm = outcome(mid);
-      // Keep the half that still changes outcome, preferring the lower one:
-      // the lowest transition is the one a collapse curve is drawn from.
-      if (mm != ml) { h = mid; mh = mm; } else { l = mid; }
+      if (mm == ml) {
+        l = mid;
+      } else if (mm == mh) {
+        h = mid;
+      } else {
+        self(self, l, ml, mid, mm);
+        self(self, mid, mm, h, mh);
+        return;
+      }
     }
     col.transitions.push_back({0.5 * (l + h), ml, mh});
-  }
+  };
+  for (int i = 0; i + 1 < n; ++i)
+    if (m[i] != m[i + 1]) bisect(bisect, a[i], m[i], a[i + 1], m[i + 1]);
   // Summaries from the scan plus transitions.
   if (m[0] != CollapseMode::none) {
     col.min_collapse_g = lo;

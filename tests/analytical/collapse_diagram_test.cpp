@@ -65,3 +65,26 @@ TEST(CollapseDiagram, TipIsMoreVulnerableThanWholeSpire) {
   o.tolerance_g = 1e-3;
   EXPECT_LT(pa::collapse_column(tip, 1.0, o).min_collapse_g, pa::collapse_column(kShell, 1.0, o).min_collapse_g);
 }
+
+TEST(CollapseDiagram, TwoChangesInOneCoarseIntervalAreBothKept) {
+  // The spire's 3.4 m tip at T_p = 0.65 s: the Mode I loop closes at 1.96 g
+  // and Mode II starts a few hundredths higher, inside one coarse interval
+  // of 0.046 g. Bisecting toward the lower change only used to lose the
+  // entry into Mode II (its boundary fell back to the uplift, 0.506 g).
+  const auto tip = pa::solid_cone(0.4301, 3.4, 1.0, 9.81);
+  pa::CollapseScanOptions o;
+  o.coarse_points = 100;
+  o.a_max_g = 5.12;
+  o.tolerance_g = 1e-3;
+  const auto col = pa::collapse_column(tip, 0.65, o);
+  ASSERT_EQ(col.transitions.size(), 3u);
+  EXPECT_EQ(col.transitions[1].below, pa::CollapseMode::mode_1);
+  EXPECT_EQ(col.transitions[1].above, pa::CollapseMode::none);
+  EXPECT_EQ(col.transitions[2].above, pa::CollapseMode::mode_2);
+  EXPECT_GT(col.mode2_boundary_g, col.transitions[1].a_g);
+  EXPECT_LT(col.mode2_boundary_g - col.transitions[1].a_g, 0.05);
+  for (const auto& t : col.transitions) {
+    EXPECT_EQ(pa::pulse_response(tip, t.a_g - o.tolerance_g, 0.65, o).mode, t.below);
+    EXPECT_EQ(pa::pulse_response(tip, t.a_g + o.tolerance_g, 0.65, o).mode, t.above);
+  }
+}
