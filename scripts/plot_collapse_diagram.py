@@ -10,8 +10,8 @@ comes from `polydem analytic collapse-diagram --body BODY --r_b --H ... --json`
 on a fine grid of T_p: the lower Mode I loop is shaded, its lower edge is the
 minimum overturning amplitude, Mode II is above the upper curve; the dotted
 line is the uplift acceleration tan(alpha). The DEM points come from CSVs of
-scripts/dem_pulse_diagram.py (columns T_p_s,
-a_p_damage_g, a_p_collapse_g, mode, transitions), given as positional
+`polydem sweep ... --search ground_motion.acceleration_g=...` (its
+boundaries.csv, or the sweep's directory), given as positional
 arguments (label "DEM") or as --dem CSV LABEL; the first set has filled
 markers, the second open ones: the lowest damaging amplitude (triangle down),
 the lowest collapsing one (circle: Mode I, square: Mode II) and, from
@@ -27,6 +27,7 @@ Uses only Debian's python3-numpy and python3-matplotlib.
 import argparse
 import csv
 import json
+import os
 import subprocess
 
 import numpy as np
@@ -48,10 +49,23 @@ def analytic(args, restitution=None):
     return json.loads(out)
 
 
+# polydem sweep's boundaries.csv names its columns after the deck keys.
+SWEEP_COLUMNS = {"ground_motion.period": "T_p_s",
+                 "damage_ground_motion.acceleration_g": "a_p_damage_g",
+                 "collapse_ground_motion.acceleration_g": "a_p_collapse_g",
+                 "collapse_mode": "mode"}
+
+
 def read_dem(path):
+    """Thresholds per T_p from a polydem sweep boundaries.csv (or a directory
+    holding one), or from a CSV with columns T_p_s, a_p_damage_g,
+    a_p_collapse_g, mode, transitions."""
+    if os.path.isdir(path):
+        path = os.path.join(path, "boundaries.csv")
     rows = []
     with open(path) as f:
         for r in csv.DictReader(f):
+            r = {SWEEP_COLUMNS.get(k, k): v for k, v in r.items()}
             def num(key):
                 v = r.get(key, "")
                 return float(v) if v not in ("", None) else np.nan
@@ -123,7 +137,7 @@ def draw_dem(ax, rows, label, color, dcolor, ms, fill, ymax):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("csv", nargs="*", help="CSV(s) of scripts/dem_pulse_diagram.py")
+    ap.add_argument("csv", nargs="*", help="boundaries.csv of polydem sweep (or its directory)")
     ap.add_argument("--dem", nargs=2, action="append", default=[], metavar=("CSV", "LABEL"),
                     help="a CSV with its legend label (repeatable; second set: open markers)")
     ap.add_argument("--hline", nargs=2, action="append", default=[], metavar=("G", "LABEL"),
