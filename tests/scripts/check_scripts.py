@@ -10,7 +10,8 @@ mesh), then every script on the results (with the options the README's gallery
 uses: several runs with their difference, --x ground.acceleration, --vline,
 --length-unit, several collapse.json with --hline, --zoom), and
 checks that each PNG exists, is larger than 10 kB and is not a blank image (the
-standard deviation of its pixels). The spire rendering must take under 20 s.
+standard deviation of its pixels). A small polydem sweep boundary search on the
+spire's tip feeds plot_pulse_figures.py and plot_collapse_diagram.py. The spire rendering must take under 20 s.
 No pytest: a failure prints what failed and exits 1.
 """
 
@@ -118,6 +119,19 @@ def main():
         run([PYTHON, os.path.join(scripts, "plot_collapse.py"), collapse_json, collapse_json, "--kind", "bar",
              "--hline", "0.25", "b/h", "--out", png("collapse_merged.png")])
         check_png(png("collapse_merged.png"))
+
+        # polydem sweep's boundaries.csv: a small boundary search on the tip
+        # (two periods, 0.1 g), drawn as Figures 5/7(b) and as a collapse diagram.
+        sweep = os.path.join(tmp, "sweep")
+        run([polydem, "sweep", os.path.join(source, "examples", "spire", "tip_pulse.toml"), "--out", sweep,
+             "--quiet", "--jobs", "2", "--vary", "ground_motion.period=0.75,1.5",
+             "--search", "ground_motion.acceleration_g=0.3:2.1:4", "--resolution", "0.1"])
+        run([PYTHON, os.path.join(scripts, "plot_pulse_figures.py"), "--spire", sweep, "--tip", sweep,
+             "--polydem", polydem, "--out", png("pulse_figures.png")])
+        check_png(png("pulse_figures.png"))
+        run([PYTHON, os.path.join(scripts, "plot_collapse_diagram.py"), sweep, "--polydem", polydem,
+             "--body", "cone", "--r_b", "0.4301", "--H", "3.4", "--a_max", "2.5", "--out", png("sweep_diagram.png")])
+        check_png(png("sweep_diagram.png"))
 
     if failures:
         print("FAILED:\n  " + "\n  ".join(failures))
