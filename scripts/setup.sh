@@ -8,8 +8,10 @@ packages=(
   libtomlplusplus-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-matplotlib python3-h5py
-  # scripts/fuzz.sh: clang++ with libFuzzer (libclang-rt) and clang's OpenMP
-  clang libclang-rt-14-dev libomp-dev
+  # scripts/fuzz.sh (run by .ci/run): clang++ with libFuzzer (libclang-rt) and
+  # clang's OpenMP; llvm for llvm-symbolizer, without which a finding's stack
+  # is bare addresses (only recommended by clang, so not pulled in here)
+  clang libclang-rt-14-dev libomp-dev llvm
   # polydem sweep across machines: Debian's OpenMPI (mpirun, mpicxx)
   libopenmpi-dev openmpi-bin
 )
