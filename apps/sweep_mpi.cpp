@@ -17,8 +17,6 @@
 #include <fmt/core.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace polydem {
 namespace {
@@ -51,13 +49,6 @@ std::vector<std::string> gather(const std::string& mine, int rank, int size) {
   return out;
 }
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 class MpiRunner final : public PointRunner {
  public:
   explicit MpiRunner(const SweepSetup& setup) : setup_(setup) {
@@ -81,26 +72,17 @@ class MpiRunner final : public PointRunner {
   }
 
   std::vector<PointResult> run(const std::vector<SweepPoint>& batch) override {
-    std::vector<PointResult> results(batch.size());
-    std::vector<std::string> dirs(batch.size());
-    std::vector<std::size_t> pending;
+    BatchStart b = start_batch(setup_, batch);
+    std::vector<PointResult>& results = b.results;
+    const std::vector<std::string>& dirs = b.dirs;
+    const std::vector<std::size_t>& pending = b.pending;
     Json work = Json::array();
-    for (std::size_t i = 0; i < batch.size(); ++i) {
-      dirs[i] = point_directory(setup_, batch[i]);
-      results[i] = read_point_result(dirs[i]);
-      if (!results[i].status.empty()) {
-        results[i].reused = true;
-        continue;
-      }
-      pending.push_back(i);
+    for (std::size_t i : pending) {
       Json values = Json::array();
       for (const auto& [key, value] : batch[i].values) values.push_back(Json::array().push_back(key).push_back(value));
       work.push_back(Json::object().set("dir", dirs[i]).set("values", std::move(values)));
     }
-    if (pending.empty()) {
-      for (std::size_t i = 0; i < batch.size(); ++i) results[i].directory = dirs[i];
-      return results;
-    }
+    if (pending.empty()) return results;
     Json message = Json::object().set("work", std::move(work));
     std::string text = message.dump(0);
     broadcast(text);
@@ -119,11 +101,13 @@ class MpiRunner final : public PointRunner {
           failed.status = "error";
           failed.exit_code = code;
           failed.message = item.at(3).as_string();
+          failed.directory = dirs[i];
           results[i] = failed;
           continue;
         }
         results[i] = point_result_from_summary(summary, dirs[i] + "/summary.json");
         results[i].exit_code = code;
+        results[i].directory = dirs[i];
         // Another machine's rank wrote its copy there; this one keeps the
         // result for a resumed sweep.
         if (!std::filesystem::exists(dirs[i] + "/summary.json")) {
@@ -132,7 +116,6 @@ class MpiRunner final : public PointRunner {
         }
       }
     }
-    for (std::size_t i = 0; i < batch.size(); ++i) results[i].directory = dirs[i];
     return results;
   }
 
@@ -166,7 +149,7 @@ class MpiRunner final : public PointRunner {
         p.values.emplace_back(values.at(v).at(0).as_string(), values.at(v).at(1).as_number());
       const std::string dir = item.find("dir")->as_string();
       const PointResult r = run_point_here(setup_, p, dir);
-      const std::string summary = r.status == "error" ? std::string() : read_text(dir + "/summary.json");
+      const std::string summary = r.status == "error" ? std::string() : read_file_text(dir + "/summary.json");
       reply.push_back(Json::array()
                           .push_back(static_cast<std::int64_t>(k))
                           .push_back(r.exit_code)

@@ -32,13 +32,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 double number_or(const Json* j, double fallback) {
   return (j && (j->type() == Json::Type::Number || j->type() == Json::Type::Integer)) ? j->as_number() : fallback;
 }
@@ -65,6 +58,29 @@ PointResult failed_point(int exit_code, const std::string& message) {
 
 }  // namespace
 
+std::string read_file_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+BatchStart start_batch(const SweepSetup& setup, const std::vector<SweepPoint>& batch) {
+  BatchStart b;
+  b.dirs.resize(batch.size());
+  b.results.resize(batch.size());
+  for (std::size_t i = 0; i < batch.size(); ++i) {
+    b.dirs[i] = point_directory(setup, batch[i]);
+    b.results[i] = read_point_result(b.dirs[i]);
+    if (b.results[i].status.empty())
+      b.pending.push_back(i);
+    else
+      b.results[i].reused = true;
+    b.results[i].directory = b.dirs[i];
+  }
+  return b;
+}
+
 std::vector<std::string> SweepSetup::point_overrides(const SweepPoint& p) const {
   std::vector<std::string> all = overrides;
   const auto own = p.overrides();
@@ -82,7 +98,7 @@ std::string point_directory(const SweepSetup& setup, const SweepPoint& point) {
   const SceneSpec spec = setup.use_default ? parse_deck(default_deck_text(), "<built-in default deck>", overrides)
                                            : read_deck(setup.deck_path, overrides);
   std::string record;
-  if (spec.ground_motion.kind == GroundMotionKind::record) record = read_text(spec.ground_motion.record_path);
+  if (spec.ground_motion.kind == GroundMotionKind::record) record = read_file_text(spec.ground_motion.record_path);
   const std::uint64_t id = deck_fingerprint(spec.deck_text, overrides, record, POLYDEM_VERSION);
   return (fs::path(setup.out_dir) / "points" / fmt::format("{:016x}", id)).string();
 }
@@ -113,7 +129,7 @@ PointResult read_point_result(const std::string& dir) {
   const std::string path = dir + "/summary.json";
   if (!fs::exists(path)) return {};
   try {
-    return point_result_from_summary(read_text(path), path);
+    return point_result_from_summary(read_file_text(path), path);
   } catch (const std::exception&) {
     return {};  // damaged: run the point again
   }
@@ -169,17 +185,10 @@ class LocalRunner final : public PointRunner {
   }
 
   std::vector<PointResult> run(const std::vector<SweepPoint>& batch) override {
-    std::vector<PointResult> results(batch.size());
-    std::vector<std::string> dirs(batch.size());
-    std::vector<std::size_t> pending;
-    for (std::size_t i = 0; i < batch.size(); ++i) {
-      dirs[i] = point_directory(setup_, batch[i]);
-      results[i] = read_point_result(dirs[i]);
-      if (results[i].status.empty())
-        pending.push_back(i);
-      else
-        results[i].reused = true;
-    }
+    BatchStart b = start_batch(setup_, batch);
+    std::vector<PointResult>& results = b.results;
+    const std::vector<std::string>& dirs = b.dirs;
+    const std::vector<std::size_t>& pending = b.pending;
     std::map<pid_t, std::size_t> running;
     std::size_t next = 0;
     while (next < pending.size() || !running.empty()) {
@@ -200,7 +209,7 @@ class LocalRunner final : public PointRunner {
       const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
       results[i] = read_point_result(dirs[i]);
       if (results[i].status.empty())
-        results[i] = failed_point(code, last_line(read_text(dirs[i] + "/log.txt")));
+        results[i] = failed_point(code, last_line(read_file_text(dirs[i] + "/log.txt")));
       else
         results[i].exit_code = code;
     }

@@ -64,6 +64,18 @@ bool point_finished(const std::string& dir);
 // Parses a summary.json text (as run_command writes it) into a result.
 PointResult point_result_from_summary(const std::string& summary_text, const std::string& what);
 
+// A batch before it runs: each point's directory, the results of the points
+// already finished on disk (marked reused), and the indices still to run.
+struct BatchStart {
+  std::vector<std::string> dirs;
+  std::vector<PointResult> results;
+  std::vector<std::size_t> pending;
+};
+BatchStart start_batch(const SweepSetup& setup, const std::vector<SweepPoint>& batch);
+
+// A whole file as text ("" if it cannot be read).
+std::string read_file_text(const std::string& path);
+
 // Runs batches of points, skipping the finished ones, and returns one result
 // per point in the order given.
 class PointRunner {
