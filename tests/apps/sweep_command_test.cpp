@@ -225,6 +225,13 @@ TEST_F(Sweep, UnderMpirunTheRanksShareThePointsAndWriteOneTable) {
   // whatever cores there are.
   setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
   setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  // Under scripts/sanitize.sh the ranks are AddressSanitizer builds: OpenMPI
+  // leaves its dlopen()ed components' allocations at MPI_Finalize (about
+  // 120 kB, in frames LeakSanitizer cannot name, so no suppression can
+  // match them). Leak checking is off for the ranks only; every other
+  // AddressSanitizer and UBSan check stays on.
+  const char* asan = std::getenv("ASAN_OPTIONS");
+  setenv("ASAN_OPTIONS", (std::string(asan ? asan : "") + (asan && *asan ? ":" : "") + "detect_leaks=0").c_str(), 1);
   std::vector<std::string> args{"-np", "2", "--oversubscribe", POLYDEM_BINARY};
   auto sweep = grid_args(mpi);
   args.insert(args.end(), sweep.begin(), sweep.end());
