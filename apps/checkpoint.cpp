@@ -7,6 +7,10 @@
 #include <fstream>
 #include <sstream>
 
+#ifndef POLYDEM_VERSION
+#define POLYDEM_VERSION "0.1.0"
+#endif
+
 namespace polydem {
 
 namespace {
@@ -25,6 +29,17 @@ std::uint64_t deck_fingerprint(const std::string& deck_text, const std::vector<s
   w.put(record_bytes);
   w.put(version);
   return checksum64(all);
+}
+
+std::uint64_t run_fingerprint(const SceneSpec& spec, const std::vector<std::string>& overrides) {
+  std::string record_bytes;
+  if (spec.ground_motion.kind == GroundMotionKind::record) {
+    std::ifstream in(spec.ground_motion.record_path, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    record_bytes = ss.str();
+  }
+  return deck_fingerprint(spec.deck_text, overrides, record_bytes, POLYDEM_VERSION);
 }
 
 std::string encode_checkpoint(std::uint64_t fingerprint, const std::string& payload) {

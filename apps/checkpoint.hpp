@@ -17,6 +17,8 @@
 // checksum catch any file damaged some other way.
 #pragma once
 
+#include "core/scene_spec.hpp"
+
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -36,6 +38,9 @@ struct CheckpointError : std::runtime_error {
 // The fingerprint of what decides a run besides its state.
 std::uint64_t deck_fingerprint(const std::string& deck_text, const std::vector<std::string>& overrides,
                                const std::string& record_bytes, const std::string& version);
+// The same for a parsed deck and this polydem: reads the ground-motion
+// record's bytes when the deck has one (checkpoints; sweep point ids).
+std::uint64_t run_fingerprint(const SceneSpec& spec, const std::vector<std::string>& overrides);
 
 // Header + payload, ready for write_file_atomic.
 std::string encode_checkpoint(std::uint64_t fingerprint, const std::string& payload);

@@ -253,14 +253,7 @@ int run_command(const RunOptions& o) {
   std::string restart_state;
   std::uint64_t fingerprint = 0;
   if (spec.output.checkpoint_interval > 0 || !o.restart_dir.empty()) {
-    std::string record_bytes;
-    if (spec.ground_motion.kind == GroundMotionKind::record) {
-      std::ifstream in(spec.ground_motion.record_path, std::ios::binary);
-      std::ostringstream ss;
-      ss << in.rdbuf();
-      record_bytes = ss.str();
-    }
-    fingerprint = deck_fingerprint(spec.deck_text, o.overrides, record_bytes, POLYDEM_VERSION);
+    fingerprint = run_fingerprint(spec, o.overrides);
   }
   if (!o.restart_dir.empty()) {
     try {

@@ -22,10 +22,6 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#ifndef POLYDEM_VERSION
-#define POLYDEM_VERSION "0.1.0"
-#endif
-
 namespace polydem {
 
 namespace fs = std::filesystem;
@@ -97,9 +93,7 @@ std::string point_directory(const SweepSetup& setup, const SweepPoint& point) {
   const auto overrides = setup.point_overrides(point);
   const SceneSpec spec = setup.use_default ? parse_deck(default_deck_text(), "<built-in default deck>", overrides)
                                            : read_deck(setup.deck_path, overrides);
-  std::string record;
-  if (spec.ground_motion.kind == GroundMotionKind::record) record = read_file_text(spec.ground_motion.record_path);
-  const std::uint64_t id = deck_fingerprint(spec.deck_text, overrides, record, POLYDEM_VERSION);
+  const std::uint64_t id = run_fingerprint(spec, overrides);
   return (fs::path(setup.out_dir) / "points" / fmt::format("{:016x}", id)).string();
 }
 

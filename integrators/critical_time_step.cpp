@@ -36,6 +36,16 @@ double block_omega_squared(const Blocks& b, int i, const Mat6& K) {
   return std::max(0.0, eig.eigenvalues().maxCoeff());
 }
 
+// A joint between two free blocks can vibrate up to √2 faster than the
+// block on a fixed neighbour (see the header): ω = √(2 ω_b²).
+void keep_highest(CriticalStep& out, const Blocks& b, int i, const Mat6& K) {
+  const double w = std::sqrt(2.0 * block_omega_squared(b, i, K));
+  if (w > out.omega_max) {
+    out.omega_max = w;
+    out.governing_block = i;
+  }
+}
+
 void finish(CriticalStep& out, const JointSpec& joint, double safety_factor) {
   if (out.omega_max <= 0) return;
   const double xi = 0.5 * joint.damping * out.omega_max;
@@ -64,11 +74,7 @@ CriticalStep critical_time_step_from_contacts(const Blocks& b, const ContactSet&
       const Mat3 D = sub.area[s] * (kn * n * n.transpose() + ks * (Mat3::Identity() - n * n.transpose()));
       add_point(K, D, r, 1.0);
     }
-    const double w = std::sqrt(2.0 * block_omega_squared(b, i, K));
-    if (w > out.omega_max) {
-      out.omega_max = w;
-      out.governing_block = i;
-    }
+    keep_highest(out, b, i, K);
   }
   finish(out, joint, safety_factor);
   return out;
@@ -107,11 +113,7 @@ CriticalStep critical_time_step(const Blocks& b, const JointSpec& joint, double 
         K += part;
       }
     }
-    const double w = std::sqrt(2.0 * block_omega_squared(b, i, K));
-    if (w > out.omega_max) {
-      out.omega_max = w;
-      out.governing_block = i;
-    }
+    keep_highest(out, b, i, K);
   }
   finish(out, joint, safety_factor);
   return out;
