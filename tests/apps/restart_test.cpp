@@ -17,6 +17,8 @@
 #include "io/deck.hpp"
 #include "io/hdf5_results.hpp"
 
+#include "tests/test_util.hpp"
+
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -33,6 +35,7 @@ namespace polydem {
 namespace {
 
 namespace fs = std::filesystem;
+using test::read_text;
 
 const char* const kDeck = R"(# A pillar rocking on a block that slides on a fixed base.
 [simulation]
@@ -89,13 +92,6 @@ tolerance = 10.0
 )";
 
 const std::vector<std::string> kOverrides = {"simulation.end_time=0.4"};
-
-std::string read_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 void write_bytes(const fs::path& p, const std::string& s) {
   std::ofstream out(p, std::ios::binary | std::ios::trunc);
@@ -248,7 +244,7 @@ TEST_F(Restart, KilledRunContinuesBitwiseIdentical) {
 
     // In-process restart: the final state, bit for bit.
     const std::string state =
-        decode_checkpoint(read_bytes(out / kCheckpointFile), fingerprint(), (out / kCheckpointFile).string());
+        decode_checkpoint(read_text(out / kCheckpointFile), fingerprint(), (out / kCheckpointFile).string());
     RunControl control;
     control.restart = &state;
     const RunReport again = run_scene(spec, control);
@@ -275,8 +271,8 @@ TEST_F(Restart, BinaryRestartWritesTheSameResults) {
   ASSERT_TRUE(WIFEXITED(st_restart));
   EXPECT_EQ(WEXITSTATUS(st_restart), WEXITSTATUS(st_whole));
 
-  EXPECT_EQ(summary_without_timing(read_bytes(whole / "summary.json")),
-            summary_without_timing(read_bytes(killed / "summary.json")));
+  EXPECT_EQ(summary_without_timing(read_text(whole / "summary.json")),
+            summary_without_timing(read_text(killed / "summary.json")));
   for (const char* path : {"/histories/time", "/histories/pillar.rotation.y", "/histories/slab.position.x",
                            "/histories/walking.bed_opening", "/energies/slip", "/energies/balance"}) {
     EXPECT_TRUE(same_bits(read_vector((whole / "results.h5").string(), path),
@@ -319,7 +315,7 @@ TEST_F(Restart, RefusesDamagedCheckpoints) {
   a.insert(a.end(), {"--out", out.string()});
   ASSERT_TRUE(WIFSIGNALED(run_binary(a, 2000)));
   const fs::path file = out / kCheckpointFile;
-  const std::string good = read_bytes(file);
+  const std::string good = read_text(file);
   ASSERT_GT(good.size(), 1000u);
   // A kill during the write leaves a temporary beside it, never a torn
   // checkpoint.bin (write_file_atomic); whatever is there is complete.

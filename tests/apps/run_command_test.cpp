@@ -7,6 +7,8 @@
 // steps), so every run takes milliseconds.
 #include "apps/run_command.hpp"
 
+#include "tests/test_util.hpp"
+
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -22,6 +24,7 @@ namespace polydem {
 namespace {
 
 namespace fs = std::filesystem;
+using test::read_text;
 
 const char* const kDeck = R"(# A stone cube resting on a fixed base.
 [simulation]
@@ -64,13 +67,6 @@ std::string replace_once(std::string text, const std::string& what, const std::s
   EXPECT_NE(at, std::string::npos) << what;
   if (at != std::string::npos) text.replace(at, what.size(), with);
   return text;
-}
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 // Number that follows `"key": ` in JSON text (first occurrence from `from`).

@@ -7,6 +7,8 @@
 #include "io/hdf5_results.hpp"
 #include "io/json.hpp"
 
+#include "tests/test_util.hpp"
+
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -22,15 +24,9 @@ namespace polydem {
 namespace {
 
 namespace fs = std::filesystem;
+using test::read_text;
 
 const std::string kTipDeck = std::string(POLYDEM_SOURCE_DIR) + "/examples/spire/tip_pulse.toml";
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 // Forks the binary with `args`, stdout/stderr to `log`; returns the pid.
 pid_t start_binary(const std::vector<std::string>& args, const fs::path& log, const char* program = POLYDEM_BINARY) {

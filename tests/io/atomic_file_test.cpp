@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "tests/io/io_test_util.hpp"
+#include "tests/test_util.hpp"
 
 namespace polydem {
 namespace {

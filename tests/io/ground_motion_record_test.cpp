@@ -6,7 +6,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "tests/io/io_test_util.hpp"
+#include "tests/test_util.hpp"
 
 namespace polydem {
 namespace {

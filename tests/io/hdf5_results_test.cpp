@@ -7,7 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "tests/io/io_test_util.hpp"
+#include "tests/test_util.hpp"
 
 namespace polydem {
 namespace {

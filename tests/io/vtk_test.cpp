@@ -8,7 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "tests/io/io_test_util.hpp"
+#include "tests/test_util.hpp"
 
 namespace polydem {
 namespace {

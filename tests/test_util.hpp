@@ -1,4 +1,4 @@
-// Helpers shared by the io tests: a scratch directory removed at the end of
+// Helpers shared by the tests: a scratch directory removed at the end of
 // each test, and whole-file reads.
 #pragma once
 
