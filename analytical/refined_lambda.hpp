@@ -48,6 +48,7 @@
 #include <string>
 #include <vector>
 
+#include "analytical/constants.hpp"
 #include "geometry/spire.hpp"
 
 namespace polydem::analytical {
@@ -84,7 +85,7 @@ struct Mechanism {
 };
 
 struct RefinedLambdaOptions {
-  double g = 9.81;                         // only scales the moments
+  double g = standard_gravity;                        // only scales the moments
   std::vector<LoadDirection> directions;   // empty: spire_load_directions()
 };
 
@@ -104,10 +105,10 @@ RefinedLambdaResult refined_lambda(const SpireModel& model, double density, cons
 // One plane crack: the part above the plane of angle beta [rad] through the
 // pivot of `direction` (family plane or plane_cover).
 Mechanism plane_crack_mechanism(const SpireModel& model, double density, const LoadDirection& direction,
-                                double beta, CrackFamily family = CrackFamily::plane, double g = 9.81);
+                                double beta, CrackFamily family = CrackFamily::plane, double g = standard_gravity);
 
 // One stepped crack with trailing course n.
 Mechanism stepped_crack_mechanism(const SpireModel& model, double density, const LoadDirection& direction,
-                                  int trailing_course, double g = 9.81);
+                                  int trailing_course, double g = standard_gravity);
 
 }  // namespace polydem::analytical

@@ -1,4 +1,5 @@
 #include "apps/collapse_command.hpp"
+#include "core/units.hpp"
 
 #include "apps/run_command.hpp"
 #include "apps/scene_runner.hpp"
@@ -17,7 +18,6 @@ namespace polydem {
 
 namespace {
 
-constexpr double kG = 9.81;  // the g of acceleration_g (io/deck.cpp)
 
 struct Trial {
   double acceleration_g = 0;
@@ -69,7 +69,7 @@ class Runner {
     c.threads = o_.threads;
     const RunReport r = run_scene(s, c);
     ++runs_;
-    Trial t{r.assessment.damage_time >= 0 ? r.assessment.ground_acceleration_at_damage / kG : NAN,
+    Trial t{r.assessment.damage_time >= 0 ? r.assessment.ground_acceleration_at_damage / kGravity : NAN,
             r.assessment.status == "collapsed", r.wall_seconds, r.assessment};
     if (!o_.quiet)
       std::cerr << fmt::format("  direction {:6.1f} deg  ramp {:.3f} g/s: mechanism at {:.4f} g  {}  {:.1f} s\n", deg,

@@ -1,4 +1,5 @@
 #include "apps/dem_frequency.hpp"
+#include "core/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -112,7 +113,7 @@ DemFrequencyResult measure_dem_frequency(SceneSpec scene, const DemFrequencyOpti
   DemFrequencyResult res;
   res.tip = spire_tip_block(scene);
   if (res.tip.empty()) throw std::runtime_error("dem-frequency: no free block to monitor");
-  const double g = scene.simulation.gravity.norm() > 0 ? scene.simulation.gravity.norm() : 9.81;
+  const double g = scene.simulation.gravity.norm() > 0 ? scene.simulation.gravity.norm() : kGravity;
 
   // The beam estimate.
   const SpireSpec& sp = *scene.spire;

@@ -1,4 +1,5 @@
 #include "apps/run_command.hpp"
+#include "core/units.hpp"
 
 #include "apps/checkpoint.hpp"
 #include "apps/scene_runner.hpp"
@@ -46,7 +47,7 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   as.set("damage_time_s", a.damage_time >= 0 ? Json(a.damage_time) : Json());
   // Under a rising load this is the acceleration at which the mechanism formed.
   as.set("ground_acceleration_at_damage_g",
-         a.damage_time >= 0 ? Json(a.ground_acceleration_at_damage / 9.81) : Json());
+         a.damage_time >= 0 ? Json(a.ground_acceleration_at_damage / kGravity) : Json());
   as.set("max_displacement_m", a.max_displacement);
   as.set("max_displacement_block", a.max_displacement_block);
   as.set("max_residual_displacement_m", a.max_residual_displacement);

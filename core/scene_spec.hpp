@@ -8,6 +8,7 @@
 
 #include "geometry/polyhedron.hpp"
 #include "geometry/spire.hpp"
+#include "core/units.hpp"
 
 #include <limits>
 #include <optional>
@@ -21,7 +22,7 @@ struct SimulationSpec {
   double end_time = 1.0;          // s, > 0
   double time_step = 0.0;         // s; 0 = automatic. A deck may only lower the automatic step.
   double safety_factor = 0.8;     // fraction of the critical step, in (0, 1]
-  Vec3 gravity{0.0, 0.0, -9.81};  // m/s²
+  Vec3 gravity{0.0, 0.0, -kGravity};  // m/s²
   double contact_margin = 0.0;    // m; 0 = automatic (2 % of the smallest block's size)
   int threads = 0;                // 0 = OpenMP default
   double overlap_tolerance = 1e-6;  // m; blocks overlapping more than this at t = 0 are an error

@@ -7,6 +7,7 @@
 //   6. the public entry points.
 // Every check is always on: a deck that passes here is trusted downstream.
 #include "io/deck.hpp"
+#include "core/units.hpp"
 
 #include <toml++/toml.h>
 
@@ -29,7 +30,6 @@ namespace {
 
 // ---------------------------------------------------------------- 1. schema
 
-constexpr double kStandardGravity = 9.81;  // m/s²: the g of acceleration_g and rate_g
 
 constexpr std::string_view kSimulationKeys[] = {
     "end_time",          "time_step",       "safety_factor", "gravity",    "contact_margin", "threads",
@@ -629,7 +629,7 @@ std::optional<double> si_or_g(const TableReader& r, std::string_view si_key, std
   const auto g = r.number(g_key);
   if (si && g)
     r.fail(g_key, "give either '" + std::string(si_key) + "' or '" + std::string(g_key) + "', not both");
-  if (g) return *g * kStandardGravity;
+  if (g) return *g * kGravity;
   return si;
 }
 

@@ -257,7 +257,7 @@ GroundMotionRecord parse_at2(const std::string& text, const std::string& name, d
   // Reserve no more than the text can hold: a header cannot make us allocate
   // gigabytes before a single value is read.
   rec.acceleration.reserve(std::min(n, text.size() / 2 + 1));
-  const double factor = scale * kStandardGravity;
+  const double factor = scale * kRecordG;
   int last_data_line = 4;
   for (std::size_t i = 4; i < lines.size(); ++i) {
     const int line_no = static_cast<int>(i) + 1;
@@ -293,7 +293,7 @@ GroundMotionRecord parse_csv_record(const std::string& text, const std::string& 
   const auto lines = split_lines(text);
   GroundMotionRecord rec;
   rec.source = name;
-  const double factor = scale * kStandardGravity;
+  const double factor = scale * kRecordG;
   bool first_content = true;
   int last_line = 1;
   for (std::size_t i = 0; i < lines.size(); ++i) {

@@ -3,12 +3,14 @@
 // described in docs/records.md.
 //
 // Units: both formats hold acceleration in units of standard gravity g; it is
-// converted with kStandardGravity = 9.80665 m/s² (the conventional value,
+// converted with kRecordG = 9.80665 m/s² (core/units.hpp) (the conventional value,
 // CGPM 1901, the one PEER and most strong-motion agencies use), times the
 // caller's `scale` (e.g. 2.0 to double the record).
 //
 // Every input error throws RecordError with "FILE:LINE: what".
 #pragma once
+
+#include "core/units.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -16,8 +18,6 @@
 
 namespace polydem {
 
-// Standard gravity used to turn records in g into m/s².
-inline constexpr double kStandardGravity = 9.80665;  // m/s²
 
 struct GroundMotionRecord {
   std::vector<double> time;          // s, strictly increasing

@@ -49,11 +49,11 @@ TEST(GroundMotionRecord, ReadsElCentro) {
   EXPECT_DOUBLE_EQ(r.time.front(), 0.0);
   EXPECT_NEAR(r.time.back(), 1559 * 0.02, 1e-12);
   EXPECT_EQ(r.source, kElCentro);
-  EXPECT_NEAR(peak_acceleration(r) / kStandardGravity, 0.319, 0.001);
+  EXPECT_NEAR(peak_acceleration(r) / kRecordG, 0.319, 0.001);
   // Second value of the file is 6.3e-3 g.
-  EXPECT_NEAR(r.acceleration[1], 6.3e-3 * kStandardGravity, 1e-15);
+  EXPECT_NEAR(r.acceleration[1], 6.3e-3 * kRecordG, 1e-15);
   const GroundMotionRecord twice = read_record(kElCentro, 2.0);
-  EXPECT_NEAR(peak_acceleration(twice) / kStandardGravity, 0.638, 0.002);
+  EXPECT_NEAR(peak_acceleration(twice) / kRecordG, 0.638, 0.002);
 }
 
 TEST(GroundMotionRecord, ExtensionIsCaseInsensitive) {
@@ -72,13 +72,13 @@ TEST(GroundMotionRecord, At2HeaderStyles) {
     const auto r = parse_at2(at2(line4, data), "t.AT2");
     ASSERT_EQ(r.acceleration.size(), 5u);
     EXPECT_DOUBLE_EQ(r.dt, 0.01);
-    EXPECT_DOUBLE_EQ(r.acceleration[4], -0.5 * kStandardGravity);
+    EXPECT_DOUBLE_EQ(r.acceleration[4], -0.5 * kRecordG);
     EXPECT_DOUBLE_EQ(r.time[4], 0.04);
   }
   // Fortran exponents, '+' signs and CRLF line ends.
   const auto r = parse_at2(at2("NPTS= 3, DT= 0.5 SEC", "+1.0D-01 -2.5E-01\r\n.5\r\n"), "t.AT2", 2.0);
-  EXPECT_DOUBLE_EQ(r.acceleration[0], 0.2 * kStandardGravity);
-  EXPECT_DOUBLE_EQ(r.acceleration[2], 1.0 * kStandardGravity);
+  EXPECT_DOUBLE_EQ(r.acceleration[0], 0.2 * kRecordG);
+  EXPECT_DOUBLE_EQ(r.acceleration[2], 1.0 * kRecordG);
 }
 
 TEST(GroundMotionRecord, At2ErrorsNameFileAndLine) {
@@ -114,7 +114,7 @@ TEST(GroundMotionRecord, CsvWithHeaderAndNonUniformSteps) {
       "# generated record\ntime_s,acceleration_g\n0.0, 0.0\n0.01,0.1\n0.03,-0.2\n\n0.035,0.0\n", "r.csv", 0.5);
   ASSERT_EQ(r.time.size(), 4u);
   EXPECT_NEAR(r.dt, 0.005, 1e-15);  // 0.035 - 0.03 in binary
-  EXPECT_DOUBLE_EQ(r.acceleration[2], -0.1 * kStandardGravity);
+  EXPECT_DOUBLE_EQ(r.acceleration[2], -0.1 * kRecordG);
   EXPECT_EQ(r.source, "r.csv");
 }
 
@@ -125,7 +125,7 @@ TEST(GroundMotionRecord, CsvHeaderVariantsAndWhitespace) {
     const auto r = parse_csv_record(header + "0 0.1\n0.02 0.2\n0.04 0.3\n", "w.csv");
     ASSERT_EQ(r.time.size(), 3u);
     EXPECT_DOUBLE_EQ(r.dt, 0.02);
-    EXPECT_DOUBLE_EQ(r.acceleration[1], 0.2 * kStandardGravity);
+    EXPECT_DOUBLE_EQ(r.acceleration[1], 0.2 * kRecordG);
   }
 }
 
