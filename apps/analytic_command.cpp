@@ -15,7 +15,7 @@
 
 #include "analytical/analytical.hpp"
 #include "analytical/refined_lambda.hpp"
-#include "apps/dem_frequency.hpp"
+#include "studies/dem_frequency.hpp"
 #include "io/deck.hpp"
 
 namespace pa = polydem::analytical;

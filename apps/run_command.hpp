@@ -29,7 +29,5 @@ struct RunOptions {
 
 int run_command(const RunOptions& options);
 
-// The built-in default deck (the main job), as TOML text.
-const std::string& default_deck_text();
 
 }  // namespace polydem

@@ -2,8 +2,8 @@
 
 #include "apps/run_command.hpp"
 #include "apps/sweep_points.hpp"
-#include "apps/sweep_search.hpp"
-#include "apps/sweep_table.hpp"
+#include "studies/sweep_search.hpp"
+#include "io/sweep_tables.hpp"
 #include "io/atomic_file.hpp"
 #include "io/deck.hpp"
 #include "io/json.hpp"
@@ -59,7 +59,7 @@ int sweep_command(const SweepOptions& o) {
       if (n > 1) throw std::invalid_argument("key " + key + " is varied twice");
     grid = grid_points(axes);
     if (grid.size() > 1000000) throw std::invalid_argument("more than a million points");
-    base = setup.use_default ? parse_deck(default_deck_text(), "<built-in default deck>", setup.overrides)
+    base = setup.use_default ? parse_deck(default_deck_text(), kDefaultDeckName, setup.overrides)
                              : read_deck(setup.deck_path, setup.overrides);
     if (searching) {
       std::vector<SweepPoint> ends;
@@ -103,7 +103,7 @@ int sweep_command(const SweepOptions& o) {
   SweepTables tables;
   tables.keys = keys;
   tables.deck_text = base.deck_text;
-  tables.deck_path = setup.use_default ? std::string("<built-in default deck>") : setup.deck_path;
+  tables.deck_path = setup.use_default ? std::string(kDefaultDeckName) : setup.deck_path;
   long ran = 0, reused = 0, failed = 0;
   int batches = 0;
   auto write_tables = [&]() {

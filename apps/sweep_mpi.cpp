@@ -12,6 +12,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/json.hpp"
+#include "io/summary.hpp"
 
 #include <mpi.h>
 #include <fmt/core.h>

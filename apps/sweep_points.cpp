@@ -1,10 +1,11 @@
 #include "apps/sweep_points.hpp"
 
-#include "apps/checkpoint.hpp"
+#include "io/checkpoint.hpp"
 #include "apps/run_command.hpp"
 #include "io/atomic_file.hpp"
 #include "io/deck.hpp"
 #include "io/json.hpp"
+#include "io/summary.hpp"
 
 #include <fmt/core.h>
 
@@ -28,13 +29,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-double number_or(const Json* j, double fallback) {
-  return (j && (j->type() == Json::Type::Number || j->type() == Json::Type::Integer)) ? j->as_number() : fallback;
-}
-
-std::string string_or(const Json* j, const std::string& fallback) {
-  return (j && j->type() == Json::Type::String) ? j->as_string() : fallback;
-}
 
 // The last non-empty line of a worker's log: what it said before it failed.
 std::string last_line(const std::string& text) {
@@ -53,13 +47,6 @@ PointResult failed_point(int exit_code, const std::string& message) {
 }
 
 }  // namespace
-
-std::string read_file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 BatchStart start_batch(const SweepSetup& setup, const std::vector<SweepPoint>& batch) {
   BatchStart b;
@@ -84,50 +71,15 @@ std::vector<std::string> SweepSetup::point_overrides(const SweepPoint& p) const 
   return all;
 }
 
-std::string PointResult::klass() const {
-  if (status == "collapsed") return collapse_mode.empty() ? "collapsed" : collapse_mode;
-  return status;
-}
-
 std::string point_directory(const SweepSetup& setup, const SweepPoint& point) {
   const auto overrides = setup.point_overrides(point);
-  const SceneSpec spec = setup.use_default ? parse_deck(default_deck_text(), "<built-in default deck>", overrides)
+  const SceneSpec spec = setup.use_default ? parse_deck(default_deck_text(), kDefaultDeckName, overrides)
                                            : read_deck(setup.deck_path, overrides);
   const std::uint64_t id = run_fingerprint(spec, overrides);
   return (fs::path(setup.out_dir) / "points" / fmt::format("{:016x}", id)).string();
 }
 
-PointResult point_result_from_summary(const std::string& text, const std::string& what) {
-  const Json s = Json::parse(text, what);
-  PointResult r;
-  r.status = string_or(s.find("status"), "");
-  if (r.status.empty()) throw std::runtime_error(what + ": no status");
-  if (s.find("instability")) {
-    r.status = "unstable";
-    r.message = string_or(s.find("instability"), "");
-    r.exit_code = exit_instability;
-  }
-  if (const Json* a = s.find("assessment")) {
-    r.collapse_mode = string_or(a->find("collapse_mode"), "");
-    r.peak_tip_displacement = number_or(a->find("monitor_peak_displacement_m"), 0);
-    r.max_displacement = number_or(a->find("max_displacement_m"), 0);
-    r.residual_displacement = number_or(a->find("max_residual_displacement_m"), 0);
-    r.collapse_time = number_or(a->find("collapse_time_s"), -1);
-  }
-  r.wall_seconds = number_or(s.find("wall_seconds"), 0);
-  r.steps = static_cast<long>(number_or(s.find("steps"), 0));
-  return r;
-}
 
-PointResult read_point_result(const std::string& dir) {
-  const std::string path = dir + "/summary.json";
-  if (!fs::exists(path)) return {};
-  try {
-    return point_result_from_summary(read_file_text(path), path);
-  } catch (const std::exception&) {
-    return {};  // damaged: run the point again
-  }
-}
 
 bool point_finished(const std::string& dir) { return !read_point_result(dir).status.empty(); }
 
@@ -142,7 +94,7 @@ void prepare_point_directory(const std::string& dir, const SweepPoint& point, co
   Json all = Json::array();
   for (const auto& o : setup.point_overrides(point)) all.push_back(o);
   p.set("overrides", std::move(all));
-  p.set("deck", setup.use_default ? std::string("<built-in default deck>") : setup.deck_path);
+  p.set("deck", setup.use_default ? std::string(kDefaultDeckName) : setup.deck_path);
   write_file_atomic(dir + "/point.json", p.dump(2) + "\n");
 }
 

@@ -11,7 +11,8 @@
 // run again from the start.
 #pragma once
 
-#include "apps/sweep_grid.hpp"
+#include "studies/point_result.hpp"
+#include "studies/sweep_grid.hpp"
 
 #include <memory>
 #include <string>
@@ -31,25 +32,6 @@ struct SweepSetup {
   std::vector<std::string> point_overrides(const SweepPoint& p) const;
 };
 
-// What the sweep keeps of one run (from its summary.json).
-struct PointResult {
-  std::string status;         // intact | damaged | collapsed | unstable | error
-  std::string collapse_mode;  // I | II | "" (not collapsed)
-  double peak_tip_displacement = 0;  // m, the monitor block's largest displacement along the motion
-  double max_displacement = 0;       // m, of any block
-  double residual_displacement = 0;  // m, largest at the end
-  double collapse_time = -1;         // s, -1 when not collapsed
-  double wall_seconds = 0;           // of the run itself
-  long steps = 0;
-  int exit_code = 0;     // of `polydem run` (see run_command.hpp)
-  bool reused = false;   // found finished on disk: a resumed sweep did not run it again
-  std::string message;   // for unstable and error: why
-  std::string directory; // DIR/points/<id>
-
-  // The class a boundary search tells apart: intact, damaged, I, II,
-  // unstable or error.
-  std::string klass() const;
-};
 
 // The point's directory: DIR/points/<16 hex digits>. Throws DeckError-like
 // std::runtime_error if the deck with these overrides is not valid.
@@ -73,8 +55,6 @@ struct BatchStart {
 };
 BatchStart start_batch(const SweepSetup& setup, const std::vector<SweepPoint>& batch);
 
-// A whole file as text ("" if it cannot be read).
-std::string read_file_text(const std::string& path);
 
 // Runs batches of points, skipping the finished ones, and returns one result
 // per point in the order given.

@@ -14,7 +14,7 @@
 // stdout and CSV at --csv (default benchmarks/results/error_vs_time.csv).
 //
 //   polydem_error_vs_time [--csv PATH] [--quick] [--no-csv] [--engine LABEL]
-#include "apps/scene_runner.hpp"
+#include "run/run_scene.hpp"
 #include "benchmarks/bench_util.hpp"
 #include "io/atomic_file.hpp"
 #include "io/deck.hpp"

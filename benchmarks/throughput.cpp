@@ -22,7 +22,7 @@
 // load average before each configuration are printed with the table.
 //
 //   polydem_throughput [--csv PATH] [--repeat N] [--quick] [--no-csv] [--engine LABEL]
-#include "apps/scene_runner.hpp"
+#include "run/run_scene.hpp"
 #include "benchmarks/bench_util.hpp"
 #include "io/atomic_file.hpp"
 #include "io/deck.hpp"

@@ -72,6 +72,9 @@ struct GroundMotionSpec {
   double rate = 0.0;              // m/s³: ramp a = rate·(t - start_time)
   double period = 1.0;            // s: one-sine pulse a_p·sin(2π(t-t0)/T_p) for 0 ≤ t-t0 ≤ T_p
   std::string record_path;        // record file (PEER .AT2 or two-column CSV), resolved relative to the deck
+  // The record's samples, read with the deck (kind = record only): time (s)
+  // and acceleration (m/s², before `scale`). A run never opens a file.
+  std::vector<double> record_time, record_acceleration;
   double scale = 1.0;             // record multiplier
   // The supporting tower's fundamental mode as a linear filter (paper 3.4):
   // the record drives a damped oscillator of this frequency and its absolute

@@ -1,5 +1,9 @@
 #include "io/atomic_file.hpp"
 
+#include <sstream>
+
+#include <fstream>
+
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
@@ -117,6 +121,13 @@ void TempPath::commit() {
 void TempPath::discard() noexcept {
   if (!committed_ && !temp_.empty()) ::unlink(temp_.c_str());  // ENOENT is fine
   temp_.clear();
+}
+
+std::string read_file_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
 }
 
 }  // namespace polydem

@@ -52,4 +52,7 @@ class TempPath {
 // The temporary name used for `final_path` by this process: unique per call.
 std::string temporary_name_for(const std::string& final_path);
 
+// A whole file as bytes ("" if it cannot be read).
+std::string read_file_text(const std::string& path);
+
 }  // namespace polydem

@@ -7,6 +7,7 @@
 //   6. the public entry points.
 // Every check is always on: a deck that passes here is trusted downstream.
 #include "io/deck.hpp"
+#include "io/ground_motion_record.hpp"
 #include "core/units.hpp"
 
 #include <toml++/toml.h>
@@ -691,6 +692,13 @@ GroundMotionSpec read_ground_motion(const Deck& deck) {
     if (g.kind == GroundMotionKind::record && !std::filesystem::is_regular_file(g.record_path, ec))
       r.fail("record", "file not found: " + g.record_path + " (relative paths are relative to the deck's directory)");
   }
+  // The record is read with the deck, so that a run never opens a file (its
+  // errors name the record's own file and line).
+  if (g.kind == GroundMotionKind::record) {
+    GroundMotionRecord rec = read_record(g.record_path, 1.0);
+    g.record_time = std::move(rec.time);
+    g.record_acceleration = std::move(rec.acceleration);
+  }
   return g;
 }
 
@@ -932,6 +940,28 @@ SceneSpec read_deck(const std::string& path, const std::vector<std::string>& ove
   text << in.rdbuf();
   if (in.bad()) throw DeckError(path + ": cannot read deck file");
   return parse_deck(text.str(), path, overrides);
+}
+
+int deck_line_of(const std::string& text, const std::string& key) {
+  const std::string last = key.substr(key.rfind('.') == std::string::npos ? 0 : key.rfind('.') + 1);
+  std::istringstream in(text);
+  std::string line;
+  int n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    const auto first = line.find_first_not_of(" \t");
+    if (first == std::string::npos) continue;
+    if (line.compare(first, last.size(), last) == 0) {
+      const auto rest = line.find_first_not_of(" \t", first + last.size());
+      if (rest != std::string::npos && line[rest] == '=') return n;
+    }
+  }
+  return 0;
+}
+
+std::string locate_scene_error(const SceneError& e, const SceneSpec& spec) {
+  const int line = e.deck_line > 0 ? e.deck_line : deck_line_of(spec.deck_text, e.key);
+  return spec.deck_path + (line > 0 ? ":" + std::to_string(line) + ": " : std::string(": --set ")) + e.what();
 }
 
 std::vector<std::string> deck_keys() {

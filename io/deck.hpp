@@ -20,6 +20,7 @@
 #pragma once
 
 #include "core/scene_spec.hpp"
+#include "run/scene_error.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -46,6 +47,20 @@ SceneSpec read_deck(const std::string& path, const std::vector<std::string>& ove
 // validation. Throws DeckError.
 SceneSpec parse_deck(const std::string& text, const std::string& path_for_messages,
                      const std::vector<std::string>& overrides = {});
+
+// Finds the line of `key` (its last part, e.g. "time_step") in the deck
+// text; 0 if absent (the value came from an override).
+int deck_line_of(const std::string& deck_text, const std::string& key);
+
+// The message of an error found when the scene was set up (run/), located
+// in the deck: "FILE:LINE: key '...': what", or "FILE: --set key '...'" when
+// the value came from an override.
+std::string locate_scene_error(const SceneError& error, const SceneSpec& spec);
+
+// The built-in default deck (the main job: the spire under a rising
+// acceleration), as TOML text: examples/default.toml, compiled in.
+const std::string& default_deck_text();
+inline constexpr const char* kDefaultDeckName = "<built-in default deck>";
 
 // Every key the reader accepts, as "section.key" with arrays of tables
 // unindexed ("simulation.end_time", "block.shape", "check.kind").

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "apps/analytic_command.hpp"
-#include "apps/dem_frequency.hpp"
+#include "studies/dem_frequency.hpp"
 #include "io/deck.hpp"
 
 TEST(DemFrequency, FourierPeakAndZeroCrossingsOfADecayingSine) {

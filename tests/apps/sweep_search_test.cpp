@@ -2,9 +2,9 @@
 // a user types, the Cartesian product, and the search on a made-up response
 // whose thresholds are known, including a Mode I loop that closes before
 // Mode II (the case a plain bisection of "collapsed or not" would miss).
-#include "apps/sweep_grid.hpp"
-#include "apps/sweep_search.hpp"
-#include "apps/sweep_table.hpp"
+#include "studies/sweep_grid.hpp"
+#include "studies/sweep_search.hpp"
+#include "io/sweep_tables.hpp"
 
 #include <gtest/gtest.h>
 

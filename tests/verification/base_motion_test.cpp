@@ -1,6 +1,6 @@
 // Verification 7: a kinematic base moving with the ground and the equivalent
 // inertial body force on a fixed base give the same rocking history.
-#include "apps/scene_runner.hpp"
+#include "run/run_scene.hpp"
 #include "io/deck.hpp"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // Verification 6: the same deck gives bitwise-identical results on 1 and 2
 // threads. The scene is large enough (a 200-stone wall) for every parallel
 // loop of the step to run in parallel.
-#include "apps/scene_runner.hpp"
+#include "run/run_scene.hpp"
 #include "io/deck.hpp"
 
 #include <gtest/gtest.h>

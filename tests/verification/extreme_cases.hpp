@@ -12,7 +12,7 @@
 // Each run prints one row of the table in README.md / docs/robustness.md.
 #pragma once
 
-#include "apps/scene_runner.hpp"
+#include "run/run_scene.hpp"
 #include "core/blocks.hpp"
 #include "integrators/critical_time_step.hpp"
 #include "io/deck.hpp"

@@ -4,7 +4,7 @@
 // the ramp's lag and the finite joint stiffness raise it). Slow label: a few
 // minutes on 2 cores.
 #include "analytical/refined_lambda.hpp"
-#include "apps/scene_runner.hpp"
+#include "run/run_scene.hpp"
 #include "io/deck.hpp"
 
 #include <gtest/gtest.h>

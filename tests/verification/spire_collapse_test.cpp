@@ -10,7 +10,7 @@
 // joint elasticity (measured on the full spire: 0.171 limit analysis, 0.188 to
 // 0.195 DEM bisection over directions).
 #include "analytical/refined_lambda.hpp"
-#include "apps/scene_runner.hpp"
+#include "run/run_scene.hpp"
 #include "io/deck.hpp"
 
 #include <gtest/gtest.h>

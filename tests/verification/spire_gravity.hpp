@@ -5,7 +5,7 @@
 // inclined joint under it, only vertical ones) falls freely: 0.1 m in 0.15 s.
 #pragma once
 
-#include "apps/scene_runner.hpp"
+#include "run/run_scene.hpp"
 #include "core/blocks.hpp"
 #include "io/deck.hpp"
 

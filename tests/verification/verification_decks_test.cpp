@@ -1,7 +1,7 @@
 // Runs every verification deck in examples/verification/ and requires each of
 // its checks (exact or analytical results, tolerances stated in the deck) to
 // pass. The decks are what a user runs; this test is what keeps them honest.
-#include "apps/scene_runner.hpp"
+#include "run/run_scene.hpp"
 #include "io/deck.hpp"
 
 #include <gtest/gtest.h>

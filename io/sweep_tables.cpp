@@ -1,4 +1,4 @@
-#include "apps/sweep_table.hpp"
+#include "io/sweep_tables.hpp"
 
 #include "io/atomic_file.hpp"
 #include "io/hdf5_results.hpp"

@@ -1,6 +1,5 @@
-#include "apps/sweep_grid.hpp"
+#include "studies/sweep_grid.hpp"
 
-#include "io/json.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -34,7 +33,12 @@ std::vector<std::string> split(const std::string& s, char sep) {
 
 }  // namespace
 
-std::string value_text(double x) { return json_number(x); }
+std::string value_text(double x) {
+  if (!std::isfinite(x)) return "null";
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, x);  // shortest round trip
+  return std::string(buf, r.ptr);
+}
 
 double lattice_value(double start, double stop, long i, long n) {
   if (n <= 1 || i == 0) return start;

@@ -15,11 +15,21 @@
 // rocking) or the ground-motion direction (onset).
 #pragma once
 
-#include "apps/scene_runner.hpp"
+#include "core/byte_stream.hpp"
+#include "core/scene_spec.hpp"
+#include "integrators/simulation.hpp"
 
 #include <memory>
 
 namespace polydem {
+
+struct CheckResult {
+  std::string name;
+  std::string unit;
+  double measured = 0, expected = 0, tolerance = 0;
+  bool passed = false;
+  std::string note;
+};
 
 class CheckMonitor {
  public:
@@ -34,7 +44,7 @@ class CheckMonitor {
   virtual void load(ByteReader& r) = 0;
 };
 
-// Throws std::runtime_error naming the deck line for a check that cannot be
+// Throws SceneError naming the check's deck line for a check that cannot be
 // evaluated on this scene (unknown block, block not free, ...).
 std::unique_ptr<CheckMonitor> make_check(const CheckSpec& check, const SceneSpec& spec, const Simulation& sim);
 

@@ -1,4 +1,4 @@
-#include "apps/sweep_search.hpp"
+#include "studies/sweep_search.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "apps/checkpoint.hpp"
+#include "io/checkpoint.hpp"
 
 #include "core/byte_stream.hpp"
 

@@ -1,4 +1,6 @@
-#include "apps/checks.hpp"
+#include "run/checks.hpp"
+
+#include "run/scene_error.hpp"
 
 #include "analytical/free_rocking.hpp"
 #include "analytical/rocking_body.hpp"
@@ -14,9 +16,7 @@ namespace polydem {
 namespace {
 
 [[noreturn]] void fail(const SceneSpec& spec, const CheckSpec& c, const std::string& what) {
-  std::ostringstream m;
-  m << spec.deck_path << ":" << c.deck_line << ": key 'check.kind' (" << c.kind << "): " << what;
-  throw std::runtime_error(m.str());
+  throw SceneError("check.kind", "(" + c.kind + ")", c.deck_line, what);
 }
 
 CheckResult result(const CheckSpec& c, std::string unit, double measured, double expected, bool relative,

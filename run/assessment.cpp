@@ -1,4 +1,4 @@
-#include "apps/assessment.hpp"
+#include "run/assessment.hpp"
 
 #include <cmath>
 #include <numbers>

@@ -8,8 +8,9 @@
 // interrupted sweep leaves tables of what had finished.
 #pragma once
 
-#include "apps/sweep_points.hpp"
-#include "apps/sweep_search.hpp"
+#include "studies/point_result.hpp"
+#include "studies/sweep_grid.hpp"
+#include "studies/sweep_search.hpp"
 
 #include <string>
 #include <vector>

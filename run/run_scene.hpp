@@ -1,9 +1,27 @@
-// Runs one scene from its deck: builds the blocks, chooses the time step,
-// steps to the end time, records what the deck asks for, and evaluates the
-// deck's verification checks. No files here: run_command writes them.
+// One run of a scene, as a library that knows no file: setup (run/setup.hpp),
+// the time loop, the end. The deck reader (io/) makes the SceneSpec; the
+// command line (apps/) writes what comes back.
+//
+//   run_scene(spec):
+//     1. setup        blocks, margin, time step, ground motion, first
+//                     detection, overlap check               (run/setup.hpp)
+//     2. monitors     the assessment, the deck's [[check]]s, the recorder
+//     3. the loop     step; observe; record, snapshot, checkpoint when due
+//                     (run/schedule.hpp); stop on collapse, on settling, or
+//                     when the guard finds the run unstable
+//     4. the end      the final record, the walking openings, the
+//                     assessment and the checks, the profile
+//
+// Errors: SceneError (run/scene_error.hpp) for input found bad only now
+// (overlapping blocks, a time step above the critical one, a check that does
+// not fit the scene), naming the deck key; StateFormatError for a restart
+// state that does not fit. A run the guard stops returns with `unstable` set,
+// the histories so far and the last good state as the final state.
 #pragma once
 
-#include "apps/assessment.hpp"
+#include "run/assessment.hpp"
+#include "run/checks.hpp"
+#include "run/recorder.hpp"
 #include "core/scene_spec.hpp"
 #include "integrators/simulation.hpp"
 
@@ -13,29 +31,22 @@
 
 namespace polydem {
 
-struct CheckResult {
-  std::string name;
-  std::string unit;
-  double measured = 0, expected = 0, tolerance = 0;
-  bool passed = false;
-  std::string note;
-};
-
-// A table of histories: one row per record time, columns named with units.
-struct HistoryTable {
-  std::vector<std::string> columns;
-  std::vector<std::string> units;
-  std::vector<double> rows;  // row-major
-  std::size_t row_count() const { return columns.empty() ? 0 : rows.size() / columns.size(); }
+// Where a run's wall time went, stage by stage (as Box2D's b2Profile): the
+// stages of the step (integrators/simulation.hpp) and the run's own output
+// (histories, monitors, snapshots, checkpoints, progress). Seconds summed
+// over the run; `total` is the whole run including setup.
+struct RunProfile {
+  double setup = 0, detection = 0, patch = 0, joint_law = 0, gather_update = 0, guard = 0, output = 0, total = 0;
+  long steps = 0;
 };
 
 struct RunReport {
-  std::string status;  // "intact", "damaged" or "collapsed" (see assessment)
-  bool settled = false;
+  std::string status;  // "intact", "damaged" or "collapsed" (see assessment), "unstable"
+  bool settled = false;      // stopped early: every block at rest (simulation.settle_*)
   bool unstable = false;     // stopped by the guard (see Simulation::check_health)
   std::string instability;   // the guard's message
   double last_good_time = 0;  // s
-  std::vector<Polyhedron> final_shapes;  // the last good state's blocks (unstable runs only)  // stopped early: every block at rest (simulation.settle_*)
+  std::vector<Polyhedron> final_shapes;  // the last good state's blocks (unstable runs only)
   Assessment assessment;
   long steps = 0;
   double end_time = 0;
@@ -57,17 +68,11 @@ struct RunReport {
   EnergyLedger energy;
   double energy_balance_error = 0;  // max |balance − balance(0)| / reference energy
   double energy_reference = 0;      // J
-  // Walking (output.walking): largest opening of bed joints (normal within
-  // 45° of vertical) and of vertical joints, at the end and the largest seen.
-  struct Walking {
-    double bed_opening = 0, vertical_opening = 0;          // m, at the end
-    double max_bed_opening = 0, max_vertical_opening = 0;  // m, during the run
-    std::string bed_joint, vertical_joint;                 // "blockA|blockB" at the end
-  };
   Walking walking;
   HistoryTable histories;
   HistoryTable energies;
   std::vector<CheckResult> checks;
+  RunProfile profile;
   // Final state of every block (for restart-free comparisons and tests).
   std::vector<Vec3> final_position, final_velocity;
   std::vector<Quat> final_orientation;
@@ -84,9 +89,9 @@ struct RunControl {
   // when the deck asks for snapshots).
   std::function<void(const Simulation&, double time)> snapshot;
   // Checkpoints (only when the deck sets output.checkpoint_interval): called
-  // with the whole run state at each multiple of the interval; run_command
-  // frames it and writes DIR/checkpoint.bin. `save_extra`/`load_extra` add
-  // the caller's own state to it (run_command: the snapshot series).
+  // with the whole run state at each multiple of the interval; the caller
+  // frames it and writes it (io/checkpoint.hpp). `save_extra`/`load_extra`
+  // add the caller's own state to it (the command line: the snapshot series).
   std::function<void(const std::string& state)> checkpoint;
   std::function<void(ByteWriter&)> save_extra;
   std::function<void(ByteReader&)> load_extra;
@@ -99,20 +104,14 @@ struct RunControl {
   long kill_at_step = -1;
 };
 
-// Checkpoints hold the Simulation's state (Simulation::save_state), the
-// assessment and check monitors, and the runner's own: histories recorded so
-// far, next record/snapshot/checkpoint times, energy-balance tracking,
-// settle tracking, subcontact updates. Taken between two steps after all of
-// a step's bookkeeping, so a restart continues with the next step exactly as
-// the uninterrupted run would.
-//
-// Throws DeckError-like std::runtime_error for input found bad only now
-// (overlapping blocks, time step above the critical one). A run the guard
-// stops returns with `unstable` set, the histories so far and the last good
-// state as the final state.
+// The run state a checkpoint holds, in this order: the Simulation's state
+// (Simulation::save_state), the assessment, the check monitors, the run's
+// own (histories and energies recorded so far, walking maxima, subcontact
+// updates, checkpoints written, next record/snapshot/checkpoint times,
+// energy-balance tracking, settle tracking, wall time), then the caller's
+// extra section. Taken between two steps after all of a step's bookkeeping,
+// so a restart continues with the next step exactly as the uninterrupted run
+// would.
 RunReport run_scene(const SceneSpec& spec, const RunControl& control = {});
-
-// Finds the line of `key` (e.g. "time_step") in the deck text; 0 if absent.
-int deck_line_of(const std::string& deck_text, const std::string& key);
 
 }  // namespace polydem

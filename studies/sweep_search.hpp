@@ -18,8 +18,8 @@
 // of every column, so local processes or MPI ranks stay busy.
 #pragma once
 
-#include "apps/sweep_grid.hpp"
-#include "apps/sweep_points.hpp"
+#include "studies/sweep_grid.hpp"
+#include "studies/point_result.hpp"
 
 #include <functional>
 #include <string>

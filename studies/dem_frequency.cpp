@@ -1,4 +1,4 @@
-#include "apps/dem_frequency.hpp"
+#include "studies/dem_frequency.hpp"
 #include "core/units.hpp"
 
 #include <algorithm>
@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "analytical/beam_modes.hpp"
-#include "apps/scene_runner.hpp"
+#include "run/run_scene.hpp"
 
 namespace polydem {
 

@@ -1,0 +1,95 @@
+#include "io/snapshots.hpp"
+
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <limits>
+
+namespace polydem {
+
+SnapshotWriter::SnapshotWriter(std::string dir, bool joints) : dir_(std::move(dir)), joints_(joints) {
+  std::filesystem::create_directories(dir_);
+}
+
+void SnapshotWriter::write(const Simulation& sim, double time) {
+  const Blocks& b = sim.blocks();
+  std::vector<Polyhedron> shapes;
+  std::vector<int> id, course;
+  std::vector<Vec3> disp, vel;
+  for (int i = 0; i < b.count; ++i) {
+    shapes.push_back(world_shape(b, i));
+    id.push_back(i);
+    course.push_back(b.props.course[i]);
+    disp.push_back(b.state.position[i] - b.initial_position[i]);
+    vel.push_back(b.state.velocity[i]);
+  }
+  VtkCellData data;
+  data.add_ints("block_id", id).add_ints("course", course).add_vectors("displacement", disp).add_vectors("velocity",
+                                                                                                         vel);
+  const std::string name = fmt::format("blocks_{:05d}.vtu", count_);
+  write_vtu(dir_ + "/" + name, shapes, data);
+  blocks_.push_back({time, name});
+  if (joints_) {
+    const ContactSet& c = sim.contacts();
+    std::vector<std::vector<Vec3>> polys;
+    std::vector<double> fn, fs, opening, slip;
+    for (const ContactPair& p : c.pairs) {
+      if (p.count == 0) continue;
+      std::vector<Vec3> poly;
+      double n = 0, t = 0, open = -std::numeric_limits<double>::infinity(), e = 0;
+      for (int s = p.first; s < p.first + p.count; ++s) {
+        poly.push_back(c.sub.point[s]);
+        n += c.sub.normal_force[s];
+        t += c.sub.shear_force[s].norm();
+        open = std::max(open, -c.sub.overlap[s]);
+        e += c.sub.slip_energy[s];
+      }
+      polys.push_back(std::move(poly));
+      fn.push_back(n);
+      fs.push_back(t);
+      opening.push_back(open);
+      slip.push_back(e);
+    }
+    VtkCellData jd;
+    jd.add_scalars("normal_force", fn).add_scalars("shear_force", fs).add_scalars("opening", opening).add_scalars(
+        "slip_energy", slip);
+    const std::string jname = fmt::format("joints_{:05d}.vtu", count_);
+    write_vtu_polygons(dir_ + "/" + jname, polys, jd);
+    joints_series_.push_back({time, jname});
+  }
+  ++count_;
+}
+
+void SnapshotWriter::finish() {
+  if (!blocks_.empty()) write_pvd(dir_ + "/blocks.pvd", blocks_);
+  if (!joints_series_.empty()) write_pvd(dir_ + "/joints.pvd", joints_series_);
+}
+
+void SnapshotWriter::save(ByteWriter& w) const {
+  w.put(static_cast<std::int32_t>(count_));
+  for (const auto* series : {&blocks_, &joints_series_}) {
+    w.put(static_cast<std::uint64_t>(series->size()));
+    for (const PvdEntry& e : *series) {
+      w.put(e.time);
+      w.put(e.file);
+    }
+  }
+}
+
+void SnapshotWriter::load(ByteReader& r) {
+  std::int32_t count = 0;
+  r.get(count);
+  count_ = count;
+  for (auto* series : {&blocks_, &joints_series_}) {
+    std::uint64_t n = 0;
+    r.get(n);
+    if (n > r.remaining()) throw StateFormatError("snapshot series: count beyond the data");
+    series->resize(static_cast<std::size_t>(n));
+    for (PvdEntry& e : *series) {
+      r.get(e.time);
+      r.get(e.file);
+    }
+  }
+}
+
+}  // namespace polydem

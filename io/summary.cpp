@@ -1,0 +1,195 @@
+#include "io/summary.hpp"
+
+#include "core/units.hpp"
+#include "io/atomic_file.hpp"
+#include "io/hdf5_results.hpp"
+
+#include <filesystem>
+
+#ifndef POLYDEM_VERSION
+#define POLYDEM_VERSION "0.1.0"
+#endif
+
+namespace polydem {
+
+namespace {
+
+double number_or(const Json* j, double fallback) {
+  return (j && (j->type() == Json::Type::Number || j->type() == Json::Type::Integer)) ? j->as_number() : fallback;
+}
+
+std::string string_or(const Json* j, const std::string& fallback) {
+  return (j && j->type() == Json::Type::String) ? j->as_string() : fallback;
+}
+
+void write_table(ResultsFile& f, const std::string& group, const HistoryTable& t) {
+  const std::size_t rows = t.row_count(), cols = t.columns.size();
+  for (std::size_t c = 0; c < cols; ++c) {
+    std::vector<double> col(rows);
+    for (std::size_t r = 0; r < rows; ++r) col[r] = t.rows[r * cols + c];
+    f.write_vector(group + "/" + t.columns[c], col, t.units[c]);
+  }
+}
+
+}  // namespace
+
+Json profile_json(const RunProfile& p) {
+  Json j = Json::object();
+  const double total = p.total > 0 ? p.total : 1.0;
+  for (const auto& [name, seconds] : {std::pair<const char*, double>{"setup", p.setup},
+                                      {"detection", p.detection},
+                                      {"patch", p.patch},
+                                      {"joint_law", p.joint_law},
+                                      {"gather_update", p.gather_update},
+                                      {"guard", p.guard},
+                                      {"output", p.output}}) {
+    Json stage = Json::object();
+    stage.set("seconds", seconds);
+    stage.set("fraction", seconds / total);
+    j.set(name, std::move(stage));
+  }
+  j.set("total_seconds", p.total);
+  j.set("steps", p.steps);
+  j.set("microseconds_per_step", p.steps > 0 ? 1e6 * (p.total - p.setup) / p.steps : 0.0);
+  return j;
+}
+
+Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
+  Json s = Json::object();
+  s.set("polydem_version", POLYDEM_VERSION);
+  s.set("deck", spec.deck_path);
+  s.set("status", r.status);
+  if (r.unstable) {
+    s.set("instability", r.instability);
+    s.set("last_good_time_s", r.last_good_time);
+  }
+  s.set("settled", r.settled);
+  const Assessment& a = r.assessment;
+  Json as = Json::object();
+  as.set("collapse_mode", a.collapse_mode);
+  as.set("collapse_time_s", a.collapse_time >= 0 ? Json(a.collapse_time) : Json());
+  as.set("damage_time_s", a.damage_time >= 0 ? Json(a.damage_time) : Json());
+  // Under a rising load this is the acceleration at which the mechanism formed.
+  as.set("ground_acceleration_at_damage_g",
+         a.damage_time >= 0 ? Json(a.ground_acceleration_at_damage / kGravity) : Json());
+  as.set("max_displacement_m", a.max_displacement);
+  as.set("max_displacement_block", a.max_displacement_block);
+  as.set("max_residual_displacement_m", a.max_residual_displacement);
+  as.set("monitor_block", a.monitor_block);
+  as.set("monitor_peak_displacement_m", a.monitor_peak_displacement);
+  as.set("moved_blocks", static_cast<int>(a.moved_blocks.size()));
+  as.set("opened_joints", a.opened_joints);
+  as.set("crack_angle_deg", a.crack_angle_deg >= 0 ? Json(a.crack_angle_deg) : Json());
+  as.set("crack_lowest_z_m", a.crack_angle_deg >= 0 ? Json(a.crack_low_z) : Json());
+  as.set("crack_highest_z_m", a.crack_angle_deg >= 0 ? Json(a.crack_high_z) : Json());
+  s.set("assessment", std::move(as));
+  if (!r.walking.bed_joint.empty() || !r.walking.vertical_joint.empty()) {
+    Json w = Json::object();
+    w.set("residual_bed_opening_m", r.walking.bed_opening);
+    w.set("residual_bed_joint", r.walking.bed_joint);
+    w.set("residual_vertical_opening_m", r.walking.vertical_opening);
+    w.set("residual_vertical_joint", r.walking.vertical_joint);
+    w.set("max_bed_opening_m", r.walking.max_bed_opening);
+    w.set("max_vertical_opening_m", r.walking.max_vertical_opening);
+    s.set("walking", std::move(w));
+  }
+  s.set("checks_passed", r.all_checks_passed());
+  s.set("end_time_s", r.end_time);
+  s.set("steps", r.steps);
+  s.set("time_step_s", r.time_step);
+  s.set("initial_time_step_s", r.initial_time_step);
+  s.set("time_step_reductions", r.time_step_reductions);
+  s.set("critical_time_step_s", r.critical.critical);
+  s.set("highest_frequency_rad_s", r.critical.omega_max);
+  s.set("damping_ratio_at_highest_frequency", r.critical.damping_ratio);
+  s.set("contact_margin_m", r.margin);
+  s.set("blocks", r.blocks);
+  s.set("free_blocks", r.free_blocks);
+  s.set("contact_detections", r.detections);
+  s.set("subcontact_updates", r.subcontact_updates);
+  if (r.checkpoints > 0) {
+    Json c = Json::object();
+    c.set("written", r.checkpoints);
+    c.set("state_bytes", r.checkpoint_bytes);
+    c.set("wall_seconds", r.checkpoint_wall_seconds);
+    s.set("checkpoints", std::move(c));
+  }
+  s.set("threads", threads);
+  s.set("wall_seconds", r.wall_seconds);
+  s.set("subcontact_updates_per_second", r.wall_seconds > 0 ? r.subcontact_updates / r.wall_seconds : 0.0);
+  s.set("profile", profile_json(r.profile));
+  Json e = Json::object();
+  e.set("kinetic_J", r.energy.kinetic);
+  e.set("gravitational_J", r.energy.gravitational);
+  e.set("strain_J", r.energy.strain);
+  e.set("slip_dissipation_J", r.energy.slip);
+  e.set("damping_dissipation_J", r.energy.damping);
+  e.set("load_work_J", r.energy.load_work);
+  e.set("balance_J", r.energy.balance);
+  e.set("reference_J", r.energy_reference);
+  s.set("energy", std::move(e));
+  s.set("energy_balance_error", r.energy_balance_error);
+  Json checks = Json::array();
+  for (const CheckResult& c : r.checks) {
+    Json j = Json::object();
+    j.set("name", c.name);
+    j.set("measured", c.measured);
+    j.set("expected", c.expected);
+    j.set("tolerance", c.tolerance);
+    j.set("unit", c.unit);
+    j.set("passed", c.passed);
+    j.set("note", c.note);
+    checks.push_back(std::move(j));
+  }
+  s.set("checks", std::move(checks));
+  return s;
+}
+
+void write_summary(const std::string& dir, const SceneSpec& spec, const RunReport& report, int threads) {
+  std::filesystem::create_directories(dir);
+  write_file_atomic(dir + "/summary.json", summary_json(spec, report, threads).dump(2) + "\n");
+}
+
+PointResult point_result_from_summary(const std::string& text, const std::string& what) {
+  const Json s = Json::parse(text, what);
+  PointResult r;
+  r.status = string_or(s.find("status"), "");
+  if (r.status.empty()) throw std::runtime_error(what + ": no status");
+  if (s.find("instability")) {
+    r.status = "unstable";
+    r.message = string_or(s.find("instability"), "");
+    r.exit_code = 3;  // polydem run's exit code for an unstable run
+  }
+  if (const Json* a = s.find("assessment")) {
+    r.collapse_mode = string_or(a->find("collapse_mode"), "");
+    r.peak_tip_displacement = number_or(a->find("monitor_peak_displacement_m"), 0);
+    r.max_displacement = number_or(a->find("max_displacement_m"), 0);
+    r.residual_displacement = number_or(a->find("max_residual_displacement_m"), 0);
+    r.collapse_time = number_or(a->find("collapse_time_s"), -1);
+  }
+  r.wall_seconds = number_or(s.find("wall_seconds"), 0);
+  r.steps = static_cast<long>(number_or(s.find("steps"), 0));
+  return r;
+}
+
+PointResult read_point_result(const std::string& dir) {
+  const std::string path = dir + "/summary.json";
+  if (!std::filesystem::exists(path)) return {};
+  try {
+    return point_result_from_summary(read_file_text(path), path);
+  } catch (const std::exception&) {
+    return {};  // damaged: run the point again
+  }
+}
+
+void write_results_h5(const std::string& path, const SceneSpec& spec, const RunReport& report) {
+  ResultsFile h5(path);
+  h5.write_string("/deck", spec.deck_text);
+  h5.write_attribute("/deck", "path", spec.deck_path);
+  h5.write_attribute("/deck", "polydem_version", POLYDEM_VERSION);
+  if (report.histories.columns.size() > 1) write_table(h5, "/histories", report.histories);
+  if (!report.energies.columns.empty()) write_table(h5, "/energies", report.energies);
+  h5.commit();
+}
+
+}  // namespace polydem

@@ -1,0 +1,73 @@
+// The recorder: what a run writes down as it goes, at the deck's
+// output.history_interval.
+//
+//   histories  one row per record time: the deck's block channels (position,
+//              velocity, rotation, angular velocity, contact force; x y z),
+//              the walking openings and the ground acceleration
+//   energies   the energy ledger (kinetic, gravitational, strain, slip,
+//              damping, load work, balance) and the balance error: the
+//              largest drift of the balance from its first value over the
+//              largest energy in play
+//   walking    the largest opening of bed joints (normal within 45° of "up")
+//              and of vertical joints, over the run and at the end
+//
+// Records are taken at the force time (time() − dt()), where the leapfrog's
+// velocities and forces belong together. Plain data: run_scene writes its
+// fields into checkpoints in a fixed order.
+#pragma once
+
+#include "core/scene_spec.hpp"
+#include "integrators/simulation.hpp"
+
+#include <string>
+#include <vector>
+
+namespace polydem {
+
+// A table of histories: one row per record time, columns named with units.
+struct HistoryTable {
+  std::vector<std::string> columns;
+  std::vector<std::string> units;
+  std::vector<double> rows;  // row-major
+  std::size_t row_count() const { return columns.empty() ? 0 : rows.size() / columns.size(); }
+};
+
+// Walking (output.walking): largest opening of bed joints and of vertical
+// joints, at the end and the largest seen.
+struct Walking {
+  double bed_opening = 0, vertical_opening = 0;          // m, at the end
+  double max_bed_opening = 0, max_vertical_opening = 0;  // m, during the run
+  std::string bed_joint, vertical_joint;                 // "blockA|blockB" at the end
+};
+
+// One recorded quantity of one block.
+struct Channel {
+  int block;
+  std::string quantity;
+};
+
+struct Recorder {
+  // Sets up the columns the deck asks for and reserves the rows.
+  Recorder(const SceneSpec& spec, const Simulation& sim);
+
+  // One row of histories and energies at the force time.
+  void record(const Simulation& sim);
+  // The walking openings at the end of the run.
+  void finish_walking(const Simulation& sim);
+  // Relative energy-balance error so far, and the reference energy (J).
+  double balance_error() const { return reference > 0 ? worst / reference : 0.0; }
+  // After a restart has refilled the rows: room for the rest of the run.
+  void reserve_rows();
+
+  std::vector<Channel> channels;
+  bool walking = false, energies_on = false, ground_channel = false, any_history = false;
+  Vec3 up = Vec3(0, 0, 1);
+  long expected_rows = 0;
+  HistoryTable histories, energies;
+  Walking walk;
+  // Energy balance tracking.
+  double balance0 = 0, reference = 0, worst = 0;
+  bool first_energy = true;
+};
+
+}  // namespace polydem

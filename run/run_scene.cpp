@@ -1,0 +1,239 @@
+#include "run/run_scene.hpp"
+
+#include "run/schedule.hpp"
+#include "run/setup.hpp"
+
+#include <omp.h>
+
+#include <csignal>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace polydem {
+
+bool RunReport::all_checks_passed() const {
+  return std::all_of(checks.begin(), checks.end(), [](const CheckResult& c) { return c.passed; });
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+constexpr std::uint32_t kRunnerTag = 0x52554e52;  // "RUNR"
+
+// What the loop keeps besides the Simulation, the monitors and the recorder.
+struct LoopState {
+  Periodic records, snapshots, checkpoints;
+  double quiet_since = -1;  // s, since when every free block has been slower than settle_velocity
+  double wall_before = 0;   // s, spent before a restart
+};
+
+// The run's own section of a checkpoint (see run_scene.hpp for the order).
+void save_loop(ByteWriter& w, const RunReport& rep, const Recorder& rec, const LoopState& s, double wall_now) {
+  w.put(kRunnerTag);
+  w.put(rec.histories.rows);
+  w.put(rec.energies.rows);
+  w.put(rec.walk.max_bed_opening);
+  w.put(rec.walk.max_vertical_opening);
+  w.put(rep.subcontact_updates);
+  w.put(static_cast<std::int32_t>(rep.checkpoints + 1));  // counting the one being written
+  w.put(rep.checkpoint_wall_seconds);
+  for (double x : {s.records.next, rec.balance0, rec.reference, rec.worst, s.snapshots.next, s.quiet_since,
+                   s.checkpoints.next})
+    w.put(x);
+  w.put(rec.first_energy);
+  w.put(s.wall_before + wall_now);
+}
+
+void load_loop(ByteReader& r, RunReport& rep, Recorder& rec, LoopState& s, std::size_t state_bytes) {
+  std::uint32_t tag = 0;
+  r.get(tag);
+  if (tag != kRunnerTag) throw StateFormatError("runner section missing");
+  r.get(rec.histories.rows);
+  r.get(rec.energies.rows);
+  if (rec.histories.rows.size() % std::max<std::size_t>(1, rec.histories.columns.size()) != 0 ||
+      (!rec.energies.columns.empty() && rec.energies.rows.size() % rec.energies.columns.size() != 0))
+    throw StateFormatError("history rows do not fit the deck's columns");
+  r.get(rec.walk.max_bed_opening);
+  r.get(rec.walk.max_vertical_opening);
+  r.get(rep.subcontact_updates);
+  std::int32_t written = 0;
+  r.get(written);
+  rep.checkpoints = written;
+  rep.checkpoint_bytes = static_cast<long>(state_bytes);  // the last one written
+  r.get(rep.checkpoint_wall_seconds);
+  for (double* x : {&s.records.next, &rec.balance0, &rec.reference, &rec.worst, &s.snapshots.next, &s.quiet_since,
+                    &s.checkpoints.next})
+    r.get(*x);
+  r.get(rec.first_energy);
+  r.get(s.wall_before);
+}
+
+// True when every free block has been slower than settle_velocity for
+// settle_time (simulation.settle_*; never when settle_velocity is 0).
+bool settled(const SceneSpec& spec, const Simulation& sim, double& quiet_since) {
+  if (!(spec.simulation.settle_velocity > 0)) return false;
+  double vmax = 0;
+  for (int i : sim.blocks().free_blocks) vmax = std::max(vmax, sim.blocks().state.velocity[i].norm());
+  if (vmax >= spec.simulation.settle_velocity) {
+    quiet_since = -1;
+    return false;
+  }
+  if (quiet_since < 0) quiet_since = sim.time();
+  return sim.time() - quiet_since >= spec.simulation.settle_time;
+}
+
+}  // namespace
+
+RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
+  const auto wall_start = Clock::now();
+  if (control.threads > 0) omp_set_num_threads(control.threads);
+  RunReport rep;
+
+  // 1. Setup.
+  RunSetup setup;
+  const std::unique_ptr<Simulation> simulation = build_simulation(spec, setup);
+  Simulation& sim = *simulation;
+  sim.set_parallel_threshold(control.parallel_threshold);
+  rep.blocks = sim.blocks().count;
+  rep.free_blocks = static_cast<int>(sim.blocks().free_blocks.size());
+  rep.margin = setup.margin;
+  rep.critical = setup.critical;
+  rep.time_step = setup.time_step;
+  rep.initial_time_step = sim.dt();
+
+  // 2. Monitors and the recorder.
+  AssessmentMonitor assessment(spec.assessment, sim);
+  std::vector<std::unique_ptr<CheckMonitor>> monitors;
+  for (const CheckSpec& c : spec.checks) monitors.push_back(make_check(c, spec, sim));
+  Recorder recorder(spec, sim);
+
+  const double end = spec.simulation.end_time;
+  LoopState loop;
+  loop.records = Periodic::every(spec.output.history_interval, 0.0, end);
+  loop.snapshots = Periodic::every(spec.output.snapshot_interval, 0.0, end,
+                                   spec.output.snapshot_interval > 0 && static_cast<bool>(control.snapshot));
+  loop.checkpoints = Periodic::every(spec.output.checkpoint_interval, spec.output.checkpoint_interval, end,
+                                     spec.output.checkpoint_interval > 0 && static_cast<bool>(control.checkpoint));
+
+  std::string checkpoint_buffer;  // reused: one allocation for the run
+  auto write_checkpoint = [&]() {
+    const auto t0 = Clock::now();
+    checkpoint_buffer.clear();
+    ByteWriter w(checkpoint_buffer);
+    sim.save_state(w);
+    assessment.save(w);
+    w.put(static_cast<std::uint64_t>(monitors.size()));
+    for (const auto& m : monitors) m->save(w);
+    save_loop(w, rep, recorder, loop, seconds_since(wall_start));
+    w.put(static_cast<bool>(control.save_extra));
+    if (control.save_extra) control.save_extra(w);
+    control.checkpoint(checkpoint_buffer);
+    ++rep.checkpoints;
+    rep.checkpoint_bytes = static_cast<long>(checkpoint_buffer.size());
+    rep.checkpoint_wall_seconds += seconds_since(t0);
+  };
+
+  if (control.restart) {
+    ByteReader r(*control.restart);
+    sim.load_state(r);
+    assessment.load(r);
+    std::uint64_t count = 0;
+    r.get(count);
+    if (count != monitors.size())
+      throw StateFormatError("the checkpoint has " + std::to_string(count) + " checks, the deck " +
+                             std::to_string(monitors.size()));
+    for (auto& m : monitors) m->load(r);
+    load_loop(r, rep, recorder, loop, control.restart->size());
+    bool extra = false;
+    r.get(extra);
+    if (extra != static_cast<bool>(control.load_extra))
+      throw StateFormatError("the caller's section does not fit (snapshots on one side only)");
+    if (extra) control.load_extra(r);
+    if (!r.at_end()) throw StateFormatError(std::to_string(r.remaining()) + " bytes left over");
+    recorder.reserve_rows();
+  } else if (loop.snapshots.enabled) {
+    control.snapshot(sim, 0.0);
+    loop.snapshots.advance();
+  }
+  rep.profile.setup = seconds_since(wall_start);
+
+  // 3. The loop.
+  double output_seconds = 0;
+  try {
+    while (sim.time() < end - 0.5 * sim.dt()) {
+      sim.step();
+      const auto t_output = Clock::now();
+      rep.subcontact_updates += static_cast<long>(sim.contacts().sub.size());
+      for (auto& m : monitors) m->observe(sim);
+      assessment.observe(sim);
+      if (spec.assessment.stop_on_collapse && assessment.collapsed()) break;
+      if (loop.records.due(sim.time() - sim.dt())) {
+        recorder.record(sim);
+        loop.records.advance();
+      }
+      if (control.progress && sim.steps() % control.progress_every == 0) control.progress(sim);
+      if (loop.snapshots.due(sim.time())) {
+        control.snapshot(sim, sim.time());
+        loop.snapshots.advance();
+      }
+      if (settled(spec, sim, loop.quiet_since)) {
+        rep.settled = true;
+        break;
+      }
+      if (loop.checkpoints.due(sim.time())) {
+        loop.checkpoints.skip_past(sim.time());
+        write_checkpoint();
+      }
+      if (sim.steps() == control.kill_at_step) std::raise(SIGKILL);
+      output_seconds += seconds_since(t_output);
+    }
+  } catch (const InstabilityError& e) {
+    // Stop, but keep what was computed: the histories so far and the state
+    // of the last passed check.
+    rep.unstable = true;
+    rep.instability = e.what();
+  }
+
+  // 4. The end.
+  const auto t_end = Clock::now();
+  if (recorder.energies_on && !rep.unstable) recorder.record(sim);  // the final state is always in the ledger
+  if (loop.snapshots.passed_last(sim.time())) control.snapshot(sim, sim.time());
+  recorder.finish_walking(sim);
+  rep.walking = recorder.walk;
+  rep.histories = std::move(recorder.histories);
+  rep.energies = std::move(recorder.energies);
+  rep.assessment = assessment.finish(sim);
+  rep.status = rep.assessment.status;
+  rep.steps = sim.steps();
+  rep.time_step = sim.dt();
+  rep.time_step_reductions = sim.time_step_reductions();
+  rep.end_time = sim.time();
+  rep.detections = sim.contacts().detections;
+  rep.energy = sim.energies();
+  rep.energy_reference = recorder.reference;
+  rep.energy_balance_error = recorder.balance_error();
+  for (auto& m : monitors) rep.checks.push_back(m->finish(sim));
+  const BlockState& final_state = rep.unstable ? sim.last_good_state() : sim.blocks().state;
+  rep.final_position = final_state.position;
+  rep.final_velocity = final_state.velocity;
+  rep.final_orientation = final_state.orientation;
+  if (rep.unstable) {
+    rep.status = "unstable";
+    rep.last_good_time = sim.last_good_time();
+    for (int i = 0; i < sim.blocks().count; ++i)
+      rep.final_shapes.push_back(transformed(sim.blocks().props.local_shape[i], final_state.rotation[i],
+                                             final_state.position[i]));
+  }
+  output_seconds += seconds_since(t_end);
+  rep.wall_seconds = loop.wall_before + seconds_since(wall_start);
+  rep.profile.output = output_seconds;
+  rep.profile.steps = sim.steps();
+  rep.profile.total = seconds_since(wall_start);
+  return rep;
+}
+
+}  // namespace polydem

@@ -1,0 +1,71 @@
+#include "run/setup.hpp"
+
+#include "run/scene_error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace polydem {
+
+double automatic_margin(const Blocks& b) {
+  double smallest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < b.count; ++i)
+    if (b.props.motion[i] != BlockMotion::fixed) smallest = std::min(smallest, b.props.size[i]);
+  if (!std::isfinite(smallest))
+    for (int i = 0; i < b.count; ++i) smallest = std::min(smallest, b.props.size[i]);
+  return 0.02 * smallest;
+}
+
+RunSetup choose_margin_and_step(const SceneSpec& spec, const Blocks& blocks) {
+  RunSetup s;
+  s.margin = spec.simulation.contact_margin > 0 ? spec.simulation.contact_margin : automatic_margin(blocks);
+  // Time step: automatic, or the deck's if it is smaller.
+  s.critical = critical_time_step(blocks, spec.joint, spec.simulation.safety_factor);
+  double dt = s.critical.chosen;
+  if (spec.simulation.time_step > 0) {
+    if (s.critical.chosen > 0 && spec.simulation.time_step > s.critical.chosen) {
+      std::ostringstream m;
+      m << spec.simulation.time_step << " s exceeds the stable step " << s.critical.chosen << " s (critical "
+        << s.critical.critical << " s times safety factor " << spec.simulation.safety_factor
+        << "); a deck may only lower it";
+      throw SceneError("simulation.time_step", "", 0, m.str());
+    }
+    dt = spec.simulation.time_step;
+  }
+  if (dt <= 0) dt = spec.simulation.end_time / 1000.0;  // nothing moves: any step will do
+  s.time_step = dt;
+  return s;
+}
+
+void check_initial_overlaps(const SceneSpec& spec, const Simulation& sim) {
+  const ContactSet& cs = sim.contacts();
+  for (std::size_t s = 0; s < cs.sub.size(); ++s) {
+    if (cs.sub.overlap[s] <= spec.simulation.overlap_tolerance) continue;
+    const int r = cs.sub.ref_block[s], c = cs.sub.inc_block[s];
+    const auto& pr = sim.blocks().props;
+    const int line = std::max(pr.deck_line[r], pr.deck_line[c]);
+    const std::string& late = pr.deck_line[r] >= pr.deck_line[c] ? pr.name[r] : pr.name[c];
+    const std::string& other = late == pr.name[r] ? pr.name[c] : pr.name[r];
+    std::ostringstream m;
+    m << "overlaps block '" << other << "' by " << cs.sub.overlap[s]
+      << " m at the start (tolerance simulation.overlap_tolerance = " << spec.simulation.overlap_tolerance << " m)";
+    throw SceneError("block", "('" + late + "')", line, m.str());
+  }
+}
+
+std::unique_ptr<Simulation> build_simulation(const SceneSpec& spec, RunSetup& setup) {
+  Blocks blocks = build_blocks(spec.blocks);
+  setup = choose_margin_and_step(spec, blocks);
+  GroundMotion motion = spec.ground_motion.kind == GroundMotionKind::record
+                            ? make_ground_motion(spec.ground_motion, spec.ground_motion.record_time,
+                                                 spec.ground_motion.record_acceleration)
+                            : make_ground_motion(spec.ground_motion);
+  auto sim = std::make_unique<Simulation>(std::move(blocks), spec.simulation, spec.joint, std::move(motion),
+                                          setup.margin, setup.time_step);
+  check_initial_overlaps(spec, *sim);
+  return sim;
+}
+
+}  // namespace polydem

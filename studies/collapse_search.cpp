@@ -1,0 +1,105 @@
+#include "studies/collapse_search.hpp"
+
+#include "core/units.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace polydem {
+
+namespace {
+
+Vec3 horizontal_direction(double deg) {
+  const double a = deg * std::numbers::pi / 180.0;
+  return Vec3(std::cos(a), std::sin(a), 0.0).normalized();  // as the deck reader stores a direction
+}
+
+// What every trial turns off: histories, the ledger; it stops at collapse.
+void trial_output(SceneSpec& s) {
+  s.assessment.stop_on_collapse = true;
+  s.output.energies = false;
+  s.output.histories.clear();
+}
+
+CollapseTrial run_trial(const SceneSpec& s, double deg, double a_g, const CollapseSearchOptions& o) {
+  RunControl c;
+  c.threads = o.threads;
+  const RunReport r = run_scene(s, c);
+  CollapseTrial t;
+  t.direction_deg = deg;
+  t.acceleration_g = a_g;
+  t.collapsed = r.assessment.status == "collapsed";
+  t.steps = r.steps;
+  t.wall_seconds = r.wall_seconds;
+  t.assessment = r.assessment;
+  return t;
+}
+
+}  // namespace
+
+SceneSpec constant_acceleration_scene(SceneSpec s, double deg, double a_g, double rise_time, double hold_time) {
+  s.ground_motion.kind = GroundMotionKind::constant;
+  s.ground_motion.acceleration = a_g * kGravity;
+  s.ground_motion.rise_time = rise_time;
+  s.ground_motion.direction = horizontal_direction(deg);
+  s.simulation.end_time = rise_time + hold_time;
+  trial_output(s);
+  return s;
+}
+
+SceneSpec ramp_scene(SceneSpec s, double deg, double rate_g, double a_max_g) {
+  s.ground_motion.kind = GroundMotionKind::ramp;
+  s.ground_motion.rate = rate_g * kGravity;
+  s.ground_motion.direction = horizontal_direction(deg);
+  s.simulation.end_time = a_max_g / rate_g;
+  s.simulation.settle_velocity = 0;  // a slow ramp starts at rest: it must not stop as "settled"
+  trial_output(s);
+  return s;
+}
+
+BisectionResult bisect_collapse(const SceneSpec& scene, double deg, const CollapseSearchOptions& o,
+                                const TrialObserver& observe) {
+  BisectionResult b;
+  auto trial = [&](double a_g) {
+    CollapseTrial t = run_trial(constant_acceleration_scene(scene, deg, a_g, o.rise_time, o.hold_time), deg, a_g, o);
+    ++b.runs;
+    b.wall_seconds += t.wall_seconds;
+    if (observe) observe("constant", t);
+    return t;
+  };
+  CollapseTrial lo = trial(o.low_g);
+  CollapseTrial hi = trial(o.high_g);
+  if (lo.collapsed || !hi.collapsed) {
+    b.error = fmt::format("the bracket [{}, {}] g does not contain the collapse acceleration "
+                          "(collapsed at low: {}, at high: {})",
+                          o.low_g, o.high_g, lo.collapsed, hi.collapsed);
+    return b;
+  }
+  b.last_collapse = hi;
+  while (hi.acceleration_g - lo.acceleration_g > o.tolerance_g) {
+    CollapseTrial mid = trial(0.5 * (lo.acceleration_g + hi.acceleration_g));
+    if (mid.collapsed) {
+      hi = mid;
+      b.last_collapse = mid;
+    } else {
+      lo = mid;
+    }
+  }
+  b.low_g = lo.acceleration_g;
+  b.high_g = hi.acceleration_g;
+  b.collapse_g = 0.5 * (lo.acceleration_g + hi.acceleration_g);
+  return b;
+}
+
+CollapseTrial ramp_collapse(const SceneSpec& scene, double deg, const CollapseSearchOptions& o,
+                            const TrialObserver& observe) {
+  const SceneSpec s = ramp_scene(scene, deg, o.ramp_rate_g, 1.2 * o.high_g);
+  CollapseTrial t = run_trial(s, deg, NAN, o);
+  t.acceleration_g = t.assessment.damage_time >= 0 ? t.assessment.ground_acceleration_at_damage / kGravity : NAN;
+  if (observe) observe("ramp", t);
+  return t;
+}
+
+}  // namespace polydem

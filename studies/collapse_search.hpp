@@ -1,0 +1,62 @@
+// The collapse acceleration of a scene under a constant horizontal
+// acceleration (paper section 3.2), found two ways for a direction:
+//   bisection - runs at constant accelerations (rising over rise_time, then
+//               held for hold_time or until the structure collapses),
+//               halving the bracket until it is narrower than the tolerance;
+//   ramp      - one run under a slowly rising acceleration; the collapse
+//               acceleration is the one at which a block first moves the
+//               damage displacement (the mechanism has formed).
+// Each trial is the caller's scene with its ground motion, end time and
+// output edited field by field (no deck text is parsed again): the
+// histories and the energy ledger are off and the run stops at collapse.
+#pragma once
+
+#include "run/run_scene.hpp"
+
+#include <functional>
+#include <string>
+
+namespace polydem {
+
+struct CollapseSearchOptions {
+  double low_g = 0.05, high_g = 0.5;  // initial bracket
+  double tolerance_g = 0.005;         // bracket width at which bisection stops
+  double rise_time = 0.5;             // s
+  double hold_time = 2.5;             // s after the rise
+  double ramp_rate_g = 0.1;           // g/s; the ramp runs up to 1.2·high_g
+  int threads = 0;
+};
+
+struct CollapseTrial {
+  double direction_deg = 0;
+  double acceleration_g = 0;  // constant: the trial's; ramp: at the mechanism (NaN: none)
+  bool collapsed = false;
+  long steps = 0;
+  double wall_seconds = 0;
+  Assessment assessment;
+};
+
+// Called after every trial run (progress output); may be empty.
+using TrialObserver = std::function<void(const char* method, const CollapseTrial&)>;
+
+struct BisectionResult {
+  std::string error;                  // the bracket does not contain the collapse acceleration
+  double collapse_g = 0;              // the bracket's midpoint at the end
+  double low_g = 0, high_g = 0;       // the final bracket
+  CollapseTrial last_collapse;        // the run at high_g (its crack)
+  int runs = 0;
+  double wall_seconds = 0;            // Σ of the runs
+};
+
+// The scene under a constant acceleration a_g (in g) along azimuth `deg`
+// (degrees from x), rising over rise_time and held for hold_time.
+SceneSpec constant_acceleration_scene(SceneSpec scene, double deg, double a_g, double rise_time, double hold_time);
+// The scene under a ramp of rate_g (g/s) along `deg`, up to a_max_g.
+SceneSpec ramp_scene(SceneSpec scene, double deg, double rate_g, double a_max_g);
+
+BisectionResult bisect_collapse(const SceneSpec& scene, double deg, const CollapseSearchOptions& options,
+                                const TrialObserver& observe = {});
+CollapseTrial ramp_collapse(const SceneSpec& scene, double deg, const CollapseSearchOptions& options,
+                            const TrialObserver& observe = {});
+
+}  // namespace polydem

@@ -1,0 +1,34 @@
+// What a study keeps of one run: its class (intact, damaged, Mode I or II
+// collapse, unstable, error) and the few figures the tables show. io/summary
+// reads it from a run's summary.json; studies/sweep_search tells classes
+// apart with it.
+#pragma once
+
+#include <string>
+
+namespace polydem {
+
+// What the sweep keeps of one run (io/summary.hpp reads it from summary.json).
+struct PointResult {
+  std::string status;         // intact | damaged | collapsed | unstable | error
+  std::string collapse_mode;  // I | II | "" (not collapsed)
+  double peak_tip_displacement = 0;  // m, the monitor block's largest displacement along the motion
+  double max_displacement = 0;       // m, of any block
+  double residual_displacement = 0;  // m, largest at the end
+  double collapse_time = -1;         // s, -1 when not collapsed
+  double wall_seconds = 0;           // of the run itself
+  long steps = 0;
+  int exit_code = 0;     // of `polydem run` (0 ok, 1 check failed, 2 bad input, 3 unstable)
+  bool reused = false;   // found finished on disk: a resumed sweep did not run it again
+  std::string message;   // for unstable and error: why
+  std::string directory; // DIR/points/<id>
+
+  // The class a boundary search tells apart: intact, damaged, I, II,
+  // unstable or error.
+  std::string klass() const {
+    if (status == "collapsed") return collapse_mode.empty() ? "collapsed" : collapse_mode;
+    return status;
+  }
+};
+
+}  // namespace polydem
