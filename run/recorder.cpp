@@ -37,26 +37,19 @@ const char* unit_of(const std::string& q) {
   return "-";
 }
 
-// The largest opening of the joints between blocks, split into bed joints
-// (normal within 45° of vertical) and vertical joints. A joint's opening is
-// the largest gap among its subcontacts (negative when it is closed).
+// The largest opening of the joints of the initial mesh, split into bed
+// joints and vertical joints (by their normal at t = 0).
 struct Openings {
   double bed = 0, vertical = 0;
-  int bed_pair = -1, vertical_pair = -1;
+  int bed_joint = -1, vertical_joint = -1;
 };
-Openings joint_openings(const Simulation& sim, const Vec3& up) {
+Openings joint_openings(const Simulation& sim, const JointMesh& mesh) {
   Openings o;
-  const ContactSet& c = sim.contacts();
-  const auto& st = sim.blocks().state;
-  for (std::size_t q = 0; q < c.pairs.size(); ++q) {
-    const ContactPair& p = c.pairs[q];
-    if (p.count == 0) continue;
-    double gap = -std::numeric_limits<double>::infinity();
-    for (int s = p.first; s < p.first + p.count; ++s) gap = std::max(gap, -c.sub.overlap[s]);
-    const Vec3 n = st.rotation[p.ref_block] * c.sub.ref_normal_local[p.first];
-    const bool bed = std::abs(n.dot(up)) > std::sqrt(0.5);
-    double& best = bed ? o.bed : o.vertical;
-    int& which = bed ? o.bed_pair : o.vertical_pair;
+  for (std::size_t q = 0; q < mesh.joints.size(); ++q) {
+    const InitialJoint& j = mesh.joints[q];
+    const double gap = mesh.opening(sim, j);
+    double& best = j.bed ? o.bed : o.vertical;
+    int& which = j.bed ? o.bed_joint : o.vertical_joint;
     if (gap > best) {
       best = gap;
       which = static_cast<int>(q);
@@ -66,6 +59,42 @@ Openings joint_openings(const Simulation& sim, const Vec3& up) {
 }
 
 }  // namespace
+
+JointMesh JointMesh::from_contacts(const Simulation& sim, const Vec3& up, double tolerance) {
+  JointMesh m;
+  const ContactSet& c = sim.contacts();
+  const auto& st = sim.blocks().state;
+  for (const ContactPair& p : c.pairs) {
+    if (p.count == 0) continue;
+    bool touching = false;
+    for (int s = p.first; s < p.first + p.count; ++s) touching = touching || c.sub.overlap[s] >= -tolerance;
+    if (!touching) continue;  // a gap within the contact margin is not a joint
+    InitialJoint j;
+    j.a = p.a;
+    j.b = p.b;
+    j.ref = p.ref_block;
+    j.inc = p.ref_block == p.a ? p.b : p.a;
+    j.normal_local = c.sub.ref_normal_local[p.first];
+    j.offset_local = c.sub.ref_offset_local[p.first];
+    j.bed = std::abs((st.rotation[j.ref] * j.normal_local).dot(up)) > std::sqrt(0.5);
+    j.first = static_cast<int>(m.corners.size());
+    for (int s = p.first; s < p.first + p.count; ++s) m.corners.push_back(c.sub.inc_point_local[s]);
+    j.count = p.count;
+    m.joints.push_back(j);
+  }
+  return m;
+}
+
+double JointMesh::opening(const Simulation& sim, const InitialJoint& j) const {
+  const Mat3 Rr = sim.orientation_at_force_time(j.ref).toRotationMatrix();
+  const Mat3 Rc = sim.orientation_at_force_time(j.inc).toRotationMatrix();
+  const Vec3 xr = sim.position_at_force_time(j.ref);
+  const Vec3 xc = sim.position_at_force_time(j.inc);
+  const Vec3 n = Rr * j.normal_local;
+  double gap = -std::numeric_limits<double>::infinity();
+  for (int k = j.first; k < j.first + j.count; ++k) gap = std::max(gap, n.dot(xc + Rc * corners[k] - xr) - j.offset_local);
+  return gap;
+}
 
 Recorder::Recorder(const SceneSpec& spec, const Simulation& sim) {
   histories.columns.push_back("time");
@@ -84,6 +113,7 @@ Recorder::Recorder(const SceneSpec& spec, const Simulation& sim) {
   up = spec.simulation.gravity.norm() > 0 ? Vec3(-spec.simulation.gravity.normalized()) : Vec3(0, 0, 1);
   ground_channel = sim.ground_motion().active() && (!channels.empty() || walking);
   if (walking) {
+    mesh = JointMesh::from_contacts(sim, up, spec.simulation.overlap_tolerance);
     for (const char* c : {"walking.bed_opening", "walking.vertical_opening"}) {
       histories.columns.push_back(c);
       histories.units.push_back("m");
@@ -115,7 +145,7 @@ void Recorder::record(const Simulation& sim) {
     histories.rows.push_back(t);
     for (const Channel& c : channels) append_channel(sim, c, histories.rows);
     if (walking) {
-      const Openings o = joint_openings(sim, up);
+      const Openings o = joint_openings(sim, mesh);
       histories.rows.push_back(o.bed);
       histories.rows.push_back(o.vertical);
       walk.max_bed_opening = std::max(walk.max_bed_opening, o.bed);
@@ -139,16 +169,16 @@ void Recorder::record(const Simulation& sim) {
 
 void Recorder::finish_walking(const Simulation& sim) {
   if (!walking) return;
-  const Openings o = joint_openings(sim, up);
+  const Openings o = joint_openings(sim, mesh);
   auto name = [&](int q) {
     if (q < 0) return std::string();
-    const ContactPair& p = sim.contacts().pairs[q];
-    return sim.blocks().props.name[p.a] + "|" + sim.blocks().props.name[p.b];
+    const InitialJoint& j = mesh.joints[q];
+    return sim.blocks().props.name[j.a] + "|" + sim.blocks().props.name[j.b];
   };
   walk.bed_opening = o.bed;
   walk.vertical_opening = o.vertical;
-  walk.bed_joint = name(o.bed_pair);
-  walk.vertical_joint = name(o.vertical_pair);
+  walk.bed_joint = name(o.bed_joint);
+  walk.vertical_joint = name(o.vertical_joint);
 }
 
 }  // namespace polydem
