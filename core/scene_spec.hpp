@@ -124,7 +124,7 @@ struct AssessmentSpec {
 // [[check]] : a verification check evaluated after the run.
 // kind: "resting_weight" | "no_drift" | "slide_acceleration" | "stick" |
 //       "rocking_onset" | "housner_restitution" | "rocking_first_impact" |
-//       "energy_conservation" | "energy_no_growth"
+//       "energy_conservation" | "energy_no_growth" | "pulse_peak_rotation"
 // `expected` NaN means polydem computes the theoretical value itself.
 struct CheckSpec {
   std::string kind;

@@ -80,7 +80,7 @@ constexpr std::string_view kCheckKinds[] = {"resting_weight",      "no_drift",
                                             "slide_acceleration",  "stick",
                                             "rocking_onset",       "housner_restitution",
                                             "rocking_first_impact", "energy_conservation",
-                                            "energy_no_growth"};
+                                            "energy_no_growth",    "pulse_peak_rotation"};
 
 // Values parsed from a --set override carry this as their source path.
 constexpr std::string_view kOverrideSource = "--set";

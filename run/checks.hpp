@@ -9,6 +9,7 @@
 //   rocking_first_impact time from release to first impact, exact eq. 7    (s, relative tol)
 //   energy_conservation  max |energy balance drift| / reference energy     (-, absolute tol)
 //   energy_no_growth     max growth of mechanical energy beyond the load work / reference (-, absolute tol)
+//   pulse_peak_rotation  peak rotation under a one-sine pulse against the rigid rocking body, eq. 7/10 (rad, relative tol)
 // The slope is the base plane z = const under a gravity vector tilted by θ
 // (the deck tilts gravity, which is exact and keeps the base axis-aligned).
 // Rocking checks take the rocking plane from the block's initial tilt (free

@@ -31,7 +31,8 @@ TEST_P(VerificationDeck, ChecksPass) {
 INSTANTIATE_TEST_SUITE_P(Decks, VerificationDeck,
                          ::testing::Values("resting_block.toml", "slope_slide.toml", "slope_stick.toml",
                                            "rocking_onset.toml", "free_rocking.toml", "energy_conservation.toml",
-                                           "stack_of_ten.toml", "dry_stone_wall.toml"),
+                                           "stack_of_ten.toml", "dry_stone_wall.toml",
+                                           "pulse_rocking_body_force.toml", "pulse_rocking_kinematic.toml"),
                          [](const auto& info) {
                            std::string n = info.param;
                            return n.substr(0, n.find('.'));
@@ -50,6 +51,13 @@ TEST(VerificationChecks, CanFail) {
   spec.checks[0].expected = 1.01 * 25506.0;  // 1 % more than m g
   r = run_scene(spec);
   EXPECT_FALSE(r.checks[0].passed);
+
+  // Friction below tan(alpha) = 0.25: the pillar slides instead of rocking,
+  // and its rotation no longer follows the rigid rocking body.
+  spec = read_deck(deck("pulse_rocking_body_force.toml"), {"joint.friction_angle=10"});
+  r = run_scene(spec);
+  ASSERT_EQ(r.checks.size(), 1u);
+  EXPECT_FALSE(r.checks[0].passed) << "measured " << r.checks[0].measured << " expected " << r.checks[0].expected;
 }
 
 }  // namespace
