@@ -117,7 +117,7 @@ struct AssessmentSpec {
   double damage_displacement = 0.005;  // m
   double collapse_displacement = 0.1;  // m
   bool stop_on_collapse = false;
-  std::string monitor_block;           // empty: the highest free block
+  std::string monitor_block;           // empty: the highest free block against gravity
   int deck_line = 0;
 };
 

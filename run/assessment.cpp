@@ -5,7 +5,8 @@
 
 namespace polydem {
 
-AssessmentMonitor::AssessmentMonitor(const AssessmentSpec& spec, const Simulation& sim) : spec_(spec) {
+AssessmentMonitor::AssessmentMonitor(const AssessmentSpec& spec, const Simulation& sim, const Vec3& gravity)
+    : spec_(spec), up_(gravity.norm() > 0 ? Vec3(-gravity.normalized()) : Vec3(0, 0, 1)) {
   const Blocks& b = sim.blocks();
   direction_ = sim.ground_motion().active() ? sim.ground_motion().direction : Vec3(1, 0, 0);
   start_ = b.state.position;
@@ -15,10 +16,11 @@ AssessmentMonitor::AssessmentMonitor(const AssessmentSpec& spec, const Simulatio
   }
   if (!spec.monitor_block.empty()) monitor_ = b.find(spec.monitor_block);
   if (monitor_ < 0) {
+    // The highest free block, "up" being against gravity.
     double top = -std::numeric_limits<double>::infinity();
     for (int i : b.free_blocks)
-      if (b.state.position[i].z() > top) {
-        top = b.state.position[i].z();
+      if (b.state.position[i].dot(up_) > top) {
+        top = b.state.position[i].dot(up_);
         monitor_ = i;
       }
   }
@@ -73,7 +75,7 @@ void AssessmentMonitor::record_crack(const Simulation& sim) {
   // vertical plane of the ground motion (total least squares, so a vertical
   // crack is as well defined as a horizontal one).
   const ContactSet& c = sim.contacts();
-  const Vec3 up(0, 0, 1);
+  const Vec3& up = up_;
   double n = 0, ms = 0, mz = 0;
   std::vector<std::pair<double, double>> pts;
   double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin;

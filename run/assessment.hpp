@@ -38,7 +38,9 @@ struct Assessment {
 
 class AssessmentMonitor {
  public:
-  AssessmentMonitor(const AssessmentSpec& spec, const Simulation& sim);
+  // `gravity` gives "up" (the monitor block is the highest free block
+  // against it; the crack's heights are measured along it).
+  AssessmentMonitor(const AssessmentSpec& spec, const Simulation& sim, const Vec3& gravity);
   void observe(const Simulation& sim);  // cheap: samples every 16th step
   bool collapsed() const { return collapsed_; }
   Assessment finish(const Simulation& sim);
@@ -52,6 +54,7 @@ class AssessmentMonitor {
   void record_crack(const Simulation& sim);
 
   AssessmentSpec spec_;
+  Vec3 up_;
   Vec3 direction_;
   int monitor_ = -1;
   int reference_ = -1;  // a kinematic base block: displacements are relative to it

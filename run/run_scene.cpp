@@ -106,7 +106,7 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
   rep.initial_time_step = sim.dt();
 
   // 2. Monitors and the recorder.
-  AssessmentMonitor assessment(spec.assessment, sim);
+  AssessmentMonitor assessment(spec.assessment, sim, spec.simulation.gravity);
   std::vector<std::unique_ptr<CheckMonitor>> monitors;
   for (const CheckSpec& c : spec.checks) monitors.push_back(make_check(c, spec, sim));
   Recorder recorder(spec, sim);
