@@ -1,12 +1,15 @@
 // The deck reader. Layout of this file, top to bottom:
-//   1. the schema (which keys each section accepts; deck_keys() lists it),
-//   2. where an error is (file:line, or the --set override it came from),
-//   3. TableReader: typed, range-checked access to one TOML table,
+//   1. the schema (which keys each section accepts; deck_keys() lists it,
+//      with the generators' sections of io/generators.hpp),
 //   4. one reader per section, filling one struct of core/scene_spec.hpp,
 //   5. overrides (applied to the parsed table before any validation),
 //   6. the public entry points.
+// Where an error is (2.) and the typed table reader (3.) are in
+// io/deck_reader.hpp, shared with the generators' section readers.
 // Every check is always on: a deck that passes here is trusted downstream.
 #include "io/deck.hpp"
+#include "io/deck_reader.hpp"
+#include "io/generators.hpp"
 #include "io/ground_motion_record.hpp"
 #include "core/units.hpp"
 
@@ -29,6 +32,8 @@
 namespace polydem {
 namespace {
 
+using namespace deck_reader;
+
 // ---------------------------------------------------------------- 1. schema
 
 
@@ -50,13 +55,6 @@ constexpr std::string_view kOutputKeys[] = {"history_interval",  "histories",   
 constexpr std::string_view kAssessmentKeys[] = {"damage_displacement", "collapse_displacement", "stop_on_collapse",
                                                 "monitor_block"};
 constexpr std::string_view kCheckKeys[] = {"kind", "block", "expected", "tolerance"};
-constexpr std::string_view kSpireKeys[] = {
-    "height",           "base_inradius",         "wall_thickness",      "wall_thickness_top",
-    "course_height",    "tip_height",            "stones_per_face",     "joint_pattern",
-    "window_faces",     "window_sill",           "window_width",        "window_head",
-    "window_head_shape", "window_arch_segments", "base_thickness",      "base_motion",
-    "density",          "stone_youngs_modulus",  "mortar_youngs_modulus", "mortar_thickness",
-    "shear_stiffness_ratio"};
 
 struct SectionSchema {
   std::string_view name;
@@ -68,7 +66,6 @@ constexpr SectionSchema kSections[] = {
     {"block", true, kBlockKeys},            {"ground_motion", false, kGroundMotionKeys},
     {"output", false, kOutputKeys},         {"check", true, kCheckKeys},
     {"assessment", false, kAssessmentKeys},
-    {"spire", false, kSpireKeys},
 };
 
 // Keys that define a block's shape, by shape.
@@ -82,254 +79,8 @@ constexpr std::string_view kCheckKinds[] = {"resting_weight",      "no_drift",
                                             "rocking_first_impact", "energy_conservation",
                                             "energy_no_growth",    "pulse_peak_rotation"};
 
-// Values parsed from a --set override carry this as their source path.
-constexpr std::string_view kOverrideSource = "--set";
-
-std::string format_number(double v) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
-
-std::string in_quotes(std::string_view s) { return "\"" + std::string(s) + "\""; }
-
-std::string join_quoted(std::span<const std::string_view> items) {
-  std::string out;
-  for (const auto& s : items) out += (out.empty() ? "" : ", ") + in_quotes(s);
-  return out;
-}
-
-std::string join(std::span<const std::string_view> items) {
-  std::string out;
-  for (const auto& s : items) out += (out.empty() ? "" : ", ") + std::string(s);
-  return out;
-}
-
-bool contains(std::span<const std::string_view> items, std::string_view s) {
-  return std::find(items.begin(), items.end(), s) != items.end();
-}
-
-std::string indexed(std::string_view base, std::size_t one_based) {
-  return std::string(base) + "[" + std::to_string(one_based) + "]";
-}
-
-// What a node holds, for "(got ...)" in messages.
-std::string describe(const toml::node& n) {
-  if (const auto* s = n.as_string()) return "string " + in_quotes(s->get());
-  if (const auto* i = n.as_integer()) return "integer " + std::to_string(i->get());
-  if (const auto* f = n.as_floating_point()) return "float " + format_number(f->get());
-  if (const auto* b = n.as_boolean()) return std::string("boolean ") + (b->get() ? "true" : "false");
-  if (n.is_array()) return "an array";
-  if (n.is_table()) return "a table";
-  return "a date/time";
-}
-
-// ------------------------------------------------------- 2. where errors are
-
-class Deck {
- public:
-  Deck(std::string file, const toml::table& root, std::vector<std::string> overridden)
-      : file_(std::move(file)), root_(root), overridden_(std::move(overridden)) {}
-
-  const std::string& file() const { return file_; }
-  const toml::table& root() const { return root_; }
-
-  // Throws the DeckError for `key` (full path), located at node `at` (the
-  // key's value, or the table that should have held a missing key).
-  [[noreturn]] void fail(const std::string& key, const toml::node* at, const std::string& what) const {
-    long line = at ? static_cast<long>(at->source().begin.line) : 0;
-    if (at == &root_ && line == 0) line = 1;
-    const bool from_override =
-        overridden(key) || (at && at->source().path && *at->source().path == kOverrideSource) || line == 0;
-    if (from_override) throw DeckError(file_ + ": --set key '" + key + "': " + what);
-    throw DeckError(file_ + ":" + std::to_string(line) + ": key '" + key + "': " + what);
-  }
-
- private:
-  // True if an override set `key` or a table/array containing it.
-  bool overridden(const std::string& key) const {
-    return std::any_of(overridden_.begin(), overridden_.end(), [&](const std::string& o) {
-      return key == o || (key.size() > o.size() && key.compare(0, o.size(), o) == 0 &&
-                          (key[o.size()] == '.' || key[o.size()] == '['));
-    });
-  }
-
-  std::string file_;
-  const toml::table& root_;
-  std::vector<std::string> overridden_;
-};
-
-// ------------------------------------------------------------ 3. TableReader
-
-enum class Range { any, positive, non_negative };
-
-class TableReader {
- public:
-  // Rejects keys not in `allowed` straight away.
-  TableReader(const Deck& deck, const toml::table& table, std::string path,
-              std::span<const std::string_view> allowed)
-      : deck_(deck), table_(table), path_(std::move(path)) {
-    for (auto&& [k, v] : table_) {
-      if (!contains(allowed, k.str()))
-        deck_.fail(key_path(k.str()), &v, "unknown key (" + path_ + " accepts: " + join(allowed) + ")");
-    }
-  }
-
-  const toml::table& table() const { return table_; }
-  const Deck& deck() const { return deck_; }
-  int line() const { return static_cast<int>(table_.source().begin.line); }
-  bool has(std::string_view key) const { return table_.get(key) != nullptr; }
-  std::string key_path(std::string_view key) const { return path_ + "." + std::string(key); }
-
-  [[noreturn]] void fail(std::string_view key, const std::string& what) const {
-    const toml::node* n = table_.get(key);
-    deck_.fail(key_path(key), n ? n : &table_, what);
-  }
-  [[noreturn]] void missing(std::string_view key, const std::string& what) const {
-    deck_.fail(key_path(key), &table_, "missing: " + what);
-  }
-
-  std::optional<double> number(std::string_view key) const {
-    const toml::node* n = table_.get(key);
-    if (!n) return std::nullopt;
-    return number_of(*n, key_path(key));
-  }
-
-  double number(std::string_view key, double fallback, Range range) const {
-    const auto v = number(key);
-    if (!v) return fallback;
-    check_range(key, *v, range);
-    return *v;
-  }
-
-  void check_range(std::string_view key, double v, Range range) const {
-    if (range == Range::positive && !(v > 0)) fail(key, "must be > 0 (got " + format_number(v) + ")");
-    if (range == Range::non_negative && !(v >= 0)) fail(key, "must be >= 0 (got " + format_number(v) + ")");
-  }
-
-  std::optional<long long> integer(std::string_view key) const {
-    const toml::node* n = table_.get(key);
-    if (!n) return std::nullopt;
-    if (const auto* i = n->as_integer()) return i->get();
-    fail(key, "must be an integer (got " + describe(*n) + ")");
-  }
-
-  std::optional<bool> boolean(std::string_view key) const {
-    const toml::node* n = table_.get(key);
-    if (!n) return std::nullopt;
-    if (const auto* b = n->as_boolean()) return b->get();
-    fail(key, "must be true or false (got " + describe(*n) + ")");
-  }
-
-  std::optional<std::string> string(std::string_view key) const {
-    const toml::node* n = table_.get(key);
-    if (!n) return std::nullopt;
-    if (const auto* s = n->as_string()) return s->get();
-    fail(key, "must be a string (got " + describe(*n) + ")");
-  }
-
-  // One of `names` (mapped to `values`); `fallback` when absent.
-  template <class E>
-  E choice(std::string_view key, std::initializer_list<std::pair<std::string_view, E>> options, E fallback) const {
-    const auto s = string(key);
-    if (!s) return fallback;
-    std::vector<std::string_view> names;
-    for (const auto& [name, value] : options) {
-      if (*s == name) return value;
-      names.push_back(name);
-    }
-    fail(key, "must be one of " + join_quoted(names) + " (got " + in_quotes(*s) + ")");
-  }
-
-  // An array of exactly `n` numbers.
-  std::optional<std::vector<double>> numbers(std::string_view key, std::size_t n, std::string_view form) const {
-    const toml::node* node = table_.get(key);
-    if (!node) return std::nullopt;
-    return numbers_of(*node, key_path(key), n, form);
-  }
-
-  std::optional<Vec3> vec3(std::string_view key) const {
-    const auto v = numbers(key, 3, "[x, y, z]");
-    if (!v) return std::nullopt;
-    return Vec3((*v)[0], (*v)[1], (*v)[2]);
-  }
-
-  // An array of points, each an array of `dim` numbers.
-  std::optional<std::vector<std::vector<double>>> points(std::string_view key, std::size_t dim,
-                                                         std::string_view form) const {
-    const toml::node* node = table_.get(key);
-    if (!node) return std::nullopt;
-    const auto* arr = node->as_array();
-    if (!arr) fail(key, "must be an array of points " + std::string(form) + " (got " + describe(*node) + ")");
-    std::vector<std::vector<double>> out;
-    for (std::size_t i = 0; i < arr->size(); ++i)
-      out.push_back(numbers_of(*arr->get(i), indexed(key_path(key), i + 1), dim, form));
-    return out;
-  }
-
- private:
-  double number_of(const toml::node& n, const std::string& path) const {
-    double v = 0;
-    if (const auto* f = n.as_floating_point())
-      v = f->get();
-    else if (const auto* i = n.as_integer())
-      v = static_cast<double>(i->get());
-    else
-      deck_.fail(path, &n, "must be a number (got " + describe(n) + ")");
-    if (!std::isfinite(v)) deck_.fail(path, &n, "must be finite (got " + format_number(v) + ")");
-    return v;
-  }
-
-  std::vector<double> numbers_of(const toml::node& n, const std::string& path, std::size_t count,
-                                 std::string_view form) const {
-    const auto* arr = n.as_array();
-    if (!arr || arr->size() != count) {
-      std::string got = arr ? "an array of " + std::to_string(arr->size()) : describe(n);
-      deck_.fail(path, &n,
-                 "must be an array of " + std::to_string(count) + " numbers " + std::string(form) + " (got " + got + ")");
-    }
-    std::vector<double> out;
-    for (std::size_t i = 0; i < count; ++i) out.push_back(number_of(*arr->get(i), indexed(path, i + 1)));
-    return out;
-  }
-
-  const Deck& deck_;
-  const toml::table& table_;
-  std::string path_;
-};
-
 // ------------------------------------------------------ 4. section readers
 
-// [name] as a table, or nullptr when absent.
-const toml::table* section_table(const Deck& deck, std::string_view name) {
-  const toml::node* n = deck.root().get(name);
-  if (!n) return nullptr;
-  if (const auto* t = n->as_table()) return t;
-  deck.fail(std::string(name), n, "must be a table: write [" + std::string(name) + "] (got " + describe(*n) + ")");
-}
-
-// [[name]] entries (empty when absent).
-std::vector<const toml::table*> section_tables(const Deck& deck, std::string_view name) {
-  std::vector<const toml::table*> out;
-  const toml::node* n = deck.root().get(name);
-  if (!n) return out;
-  const std::string how = "must be an array of tables: write [[" + std::string(name) + "]]";
-  const auto* arr = n->as_array();
-  if (!arr) deck.fail(std::string(name), n, how + " (got " + describe(*n) + ")");
-  for (std::size_t i = 0; i < arr->size(); ++i) {
-    const auto* t = arr->get(i)->as_table();
-    if (!t) deck.fail(indexed(name, i + 1), arr->get(i), how + " (got " + describe(*arr->get(i)) + ")");
-    out.push_back(t);
-  }
-  return out;
-}
-
-// A reader for [name]; an empty table stands in when the section is absent.
-const toml::table& table_or_empty(const Deck& deck, std::string_view name) {
-  static const toml::table empty;
-  const toml::table* t = section_table(deck, name);
-  return t ? *t : empty;
-}
 
 SimulationSpec read_simulation(const Deck& deck) {
   const TableReader r(deck, table_or_empty(deck, "simulation"), "simulation", kSimulationKeys);
@@ -351,12 +102,6 @@ SimulationSpec read_simulation(const Deck& deck) {
   return s;
 }
 
-// What [joint] falls back on for the stiffnesses: Table 1's 98 GPa/m and
-// ks = 0.4 kn, or what [spire] derives from its materials.
-struct JointDefaults {
-  double normal_stiffness = 98e9;
-  double shear_ratio = 0.4;
-};
 
 JointSpec read_joint(const Deck& deck, const JointDefaults& defaults) {
   const TableReader r(deck, table_or_empty(deck, "joint"), "joint", kJointKeys);
@@ -491,9 +236,9 @@ BlockSpec read_block(const Deck& deck, const toml::table& t, std::size_t number)
   return b;
 }
 
-std::vector<BlockSpec> read_blocks(const Deck& deck, bool has_spire) {
+std::vector<BlockSpec> read_blocks(const Deck& deck, bool generated) {
   const auto tables = section_tables(deck, "block");
-  if (tables.empty() && !has_spire)
+  if (tables.empty() && !generated)
     deck.fail("block", &deck.root(), "missing: a deck needs at least one [[block]] (or a [spire])");
   std::vector<BlockSpec> blocks;
   for (std::size_t i = 0; i < tables.size(); ++i) {
@@ -509,119 +254,6 @@ std::vector<BlockSpec> read_blocks(const Deck& deck, bool has_spire) {
     blocks.push_back(std::move(b));
   }
   return blocks;
-}
-
-// [spire]: the octagonal spire of geometry/spire.hpp, plus the materials its
-// joints are made of and how its base block moves.
-struct SpireSection {
-  SpireSpec spec;
-  SpireModel model;
-  JointDefaults joint;
-  double density = 2600.0;
-  BlockMotion base_motion = BlockMotion::fixed;
-  int line = 0;
-};
-
-// Joint stiffness with stone and mortar in series over one course pitch h:
-// 1/kn = (h - t)/E_stone + t/E_mortar (mortar thickness t).
-double series_normal_stiffness(double pitch, double mortar_thickness, double e_stone, double e_mortar) {
-  return 1.0 / ((pitch - mortar_thickness) / e_stone + mortar_thickness / e_mortar);
-}
-
-std::optional<SpireSection> read_spire(const Deck& deck) {
-  const toml::table* t = section_table(deck, "spire");
-  if (!t) return std::nullopt;
-  const TableReader r(deck, *t, "spire", kSpireKeys);
-  SpireSection out;
-  out.line = r.line();
-  SpireSpec& s = out.spec;
-  s.height = r.number("height", s.height, Range::positive);
-  s.base_inradius = r.number("base_inradius", s.base_inradius, Range::positive);
-  s.wall_thickness = r.number("wall_thickness", s.wall_thickness, Range::positive);
-  s.wall_thickness_top = r.number("wall_thickness_top", s.wall_thickness_top, Range::positive);
-  s.course_height = r.number("course_height", s.course_height, Range::positive);
-  s.tip_height = r.number("tip_height", s.tip_height, Range::positive);
-  if (const auto n = r.integer("stones_per_face")) {
-    if (*n < 1 || *n > 64) r.fail("stones_per_face", "must be in [1, 64] (got " + std::to_string(*n) + ")");
-    s.stones_per_face = static_cast<int>(*n);
-  }
-  s.joint_pattern = r.choice<SpireJointPattern>("joint_pattern",
-                                                {{"staggered", SpireJointPattern::staggered},
-                                                 {"aligned", SpireJointPattern::aligned},
-                                                 {"aligned_above_windows", SpireJointPattern::aligned_above_windows}},
-                                                s.joint_pattern);
-  if (const toml::node* n = t->get("window_faces")) {
-    const auto* arr = n->as_array();
-    if (!arr) r.fail("window_faces", "must be an array of face indices 0..7 (got " + describe(*n) + ")");
-    s.window_faces.clear();
-    for (std::size_t i = 0; i < arr->size(); ++i) {
-      const toml::node& e = *arr->get(i);
-      const auto* v = e.as_integer();
-      const std::string path = indexed(r.key_path("window_faces"), i + 1);
-      if (!v) deck.fail(path, &e, "must be an integer face index 0..7 (got " + describe(e) + ")");
-      if (v->get() < 0 || v->get() > 7)
-        deck.fail(path, &e, "face indices are 0..7, face 0 facing +x (got " + std::to_string(v->get()) + ")");
-      if (std::find(s.window_faces.begin(), s.window_faces.end(), v->get()) != s.window_faces.end())
-        deck.fail(path, &e, "face " + std::to_string(v->get()) + " is listed twice (one window per face)");
-      s.window_faces.push_back(static_cast<int>(v->get()));
-    }
-  }
-  s.window_sill = r.number("window_sill", s.window_sill, Range::non_negative);
-  s.window_width = r.number("window_width", s.window_width, Range::positive);
-  s.window_head = r.number("window_head", s.window_head, Range::positive);
-  s.window_head_shape = r.choice<WindowHead>("window_head_shape",
-                                             {{"pointed", WindowHead::pointed}, {"flat", WindowHead::flat}},
-                                             s.window_head_shape);
-  if (const auto n = r.integer("window_arch_segments")) {
-    if (*n < 1 || *n > 64) r.fail("window_arch_segments", "must be in [1, 64] (got " + std::to_string(*n) + ")");
-    s.window_arch_segments = static_cast<int>(*n);
-  }
-  s.base_thickness = r.number("base_thickness", s.base_thickness, Range::non_negative);
-  out.base_motion = r.choice<BlockMotion>("base_motion",
-                                          {{"fixed", BlockMotion::fixed}, {"kinematic", BlockMotion::kinematic}},
-                                          out.base_motion);
-  if (r.has("base_motion") && s.base_thickness == 0)
-    r.fail("base_motion", "there is no base block (base_thickness = 0)");
-  out.density = r.number("density", out.density, Range::positive);
-
-  try {
-    out.model = build_spire(s);
-  } catch (const SpireSpecError& e) {
-    r.fail(e.field, e.detail);
-  } catch (const GeometryError& e) {
-    deck.fail("spire", t, std::string("cannot build the spire: ") + e.what());
-  }
-
-  // Table 1: E_stone 30 GPa, E_mortar 10 GPa; section 3.1: 1 cm of mortar.
-  const double e_stone = r.number("stone_youngs_modulus", 30e9, Range::positive);
-  const double e_mortar = r.number("mortar_youngs_modulus", 10e9, Range::positive);
-  const double mortar = r.number("mortar_thickness", 0.01, Range::non_negative);
-  if (!(mortar < out.model.course_height))
-    r.fail("mortar_thickness", "must be less than the course pitch " + format_number(out.model.course_height) +
-                                   " m (got " + format_number(mortar) + ")");
-  out.joint.normal_stiffness = series_normal_stiffness(out.model.course_height, mortar, e_stone, e_mortar);
-  out.joint.shear_ratio = r.number("shear_stiffness_ratio", out.joint.shear_ratio, Range::positive);
-  return out;
-}
-
-// The generated blocks after the [[block]] ones; names must stay unique.
-void append_spire_blocks(const Deck& deck, const SpireSection& spire, std::vector<BlockSpec>& blocks) {
-  const toml::node* at = deck.root().get("spire");
-  const std::size_t n_listed = blocks.size();
-  for (const auto& sb : spire.model.blocks) {
-    for (std::size_t i = 0; i < n_listed; ++i)
-      if (const BlockSpec& b = blocks[i]; b.name == sb.name)
-        deck.fail("spire", at, "generated block " + in_quotes(sb.name) + " has the name of the [[block]] at line " +
-                                   std::to_string(b.deck_line) + "; rename that block");
-    BlockSpec b;
-    b.name = sb.name;
-    b.shape = sb.shape;
-    b.density = spire.density;
-    b.motion = sb.kind == SpireBlockKind::base ? spire.base_motion : BlockMotion::free;
-    b.course = sb.course;
-    b.deck_line = spire.line;
-    blocks.push_back(std::move(b));
-  }
 }
 
 // acceleration (SI) or acceleration_g (in g), not both; nullopt if neither.
@@ -777,6 +409,7 @@ std::vector<CheckSpec> read_checks(const Deck& deck, const std::vector<BlockSpec
 void check_sections(const Deck& deck) {
   std::vector<std::string_view> names;
   for (const auto& s : kSections) names.push_back(s.name);
+  for (const auto& g : generator_sections()) names.push_back(g.name);
   for (auto&& [k, v] : deck.root()) {
     if (!contains(names, k.str()))
       deck.fail(std::string(k.str()), &v, "unknown section (a deck has: " + join(names) + ")");
@@ -919,13 +552,12 @@ SceneSpec parse_deck(const std::string& text, const std::string& path_for_messag
   scene.deck_path = path_for_messages;
   scene.deck_text = text;
   scene.simulation = read_simulation(deck);
-  const std::optional<SpireSection> spire = read_spire(deck);
-  scene.joint = read_joint(deck, spire ? spire->joint : JointDefaults{});
-  scene.blocks = read_blocks(deck, spire.has_value());
-  if (spire) {
-    append_spire_blocks(deck, *spire, scene.blocks);
-    scene.spire = spire->spec;
-  }
+  // Generators ([spire], ...) first: they may set the joints' defaults
+  // (from their materials) and they stand in for [[block]] tables.
+  const Generated generated = read_generators(deck, scene);
+  scene.joint = read_joint(deck, generated.joint.value_or(JointDefaults{}));
+  scene.blocks = read_blocks(deck, !generated.parts.empty());
+  append_generated_blocks(deck, generated, scene.blocks);
   scene.ground_motion = read_ground_motion(deck);
   scene.output = read_output(deck, scene.blocks);
   scene.assessment = read_assessment(deck, scene.blocks);
@@ -967,6 +599,9 @@ std::string locate_scene_error(const SceneError& e, const SceneSpec& spec) {
 std::vector<std::string> deck_keys() {
   std::vector<std::string> keys;
   for (const auto& section : kSections) {
+    for (const auto& key : section.keys) keys.push_back(std::string(section.name) + "." + std::string(key));
+  }
+  for (const auto& section : generator_sections()) {
     for (const auto& key : section.keys) keys.push_back(std::string(section.name) + "." + std::string(key));
   }
   return keys;

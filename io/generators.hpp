@@ -1,0 +1,55 @@
+// Deck sections that generate blocks: today [spire] (io/spire_section.cpp);
+// walls, arches, columns and towers join here. The deck reader knows them
+// only through this table: each has a section name, the keys it accepts
+// (checked like every section's, listed by deck_keys()), and a reader that
+// adds its blocks to a Generated part (and may set the joints' defaults from
+// its materials, and its own fields of the SceneSpec).
+//
+// Adding a generator: the geometry in geometry/ (CGAL inside its .cpp), a
+// section reader io/NAME_section.cpp with its keys, one row in
+// generator_sections() (io/generators.cpp), docs/deck.md, and tests.
+#pragma once
+
+#include "io/deck_reader.hpp"
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace polydem {
+
+// The blocks the generators made, by section, before the [[block]] ones are
+// known (their names are checked against those afterwards).
+struct Generated {
+  struct Part {
+    std::string section;     // "spire"
+    const toml::node* at = nullptr;  // the section's table, for messages
+    int deck_line = 0;       // stored in each block's BlockSpec::deck_line
+    std::vector<BlockSpec> blocks;
+  };
+  std::vector<Part> parts;
+  std::optional<deck_reader::JointDefaults> joint;  // the last generator's, if it sets them
+};
+
+struct GeneratorSection {
+  std::string_view name;
+  std::span<const std::string_view> keys;
+  // Reads the section if the deck has it (does nothing otherwise).
+  void (*read)(const deck_reader::Deck& deck, Generated& out, SceneSpec& scene);
+};
+
+std::span<const GeneratorSection> generator_sections();
+
+// Every generator section the deck has, in the table's order.
+Generated read_generators(const deck_reader::Deck& deck, SceneSpec& scene);
+
+// The generated blocks after the [[block]] ones; a generated name that a
+// [[block]] already has is a DeckError naming the generator's section.
+void append_generated_blocks(const deck_reader::Deck& deck, const Generated& generated,
+                             std::vector<BlockSpec>& blocks);
+
+// [spire] (io/spire_section.cpp).
+extern const GeneratorSection kSpireSection;
+
+}  // namespace polydem

@@ -1,0 +1,139 @@
+// [spire]: the octagonal spire of geometry/spire.hpp (CGAL, exact), the
+// materials its joints are made of (their series stiffness sets the joint
+// defaults) and how its base block moves.
+#include "io/generators.hpp"
+
+#include "geometry/spire.hpp"
+
+namespace polydem {
+
+namespace {
+
+using namespace deck_reader;
+
+constexpr std::string_view kSpireKeys[] = {
+    "height",           "base_inradius",         "wall_thickness",      "wall_thickness_top",
+    "course_height",    "tip_height",            "stones_per_face",     "joint_pattern",
+    "window_faces",     "window_sill",           "window_width",        "window_head",
+    "window_head_shape", "window_arch_segments", "base_thickness",      "base_motion",
+    "density",          "stone_youngs_modulus",  "mortar_youngs_modulus", "mortar_thickness",
+    "shear_stiffness_ratio"};
+
+struct SpireSection {
+  SpireSpec spec;
+  SpireModel model;
+  JointDefaults joint;
+  double density = 2600.0;
+  BlockMotion base_motion = BlockMotion::fixed;
+  int line = 0;
+};
+
+// Joint stiffness with stone and mortar in series over one course pitch h:
+// 1/kn = (h - t)/E_stone + t/E_mortar (mortar thickness t).
+double series_normal_stiffness(double pitch, double mortar_thickness, double e_stone, double e_mortar) {
+  return 1.0 / ((pitch - mortar_thickness) / e_stone + mortar_thickness / e_mortar);
+}
+
+std::optional<SpireSection> read_spire(const Deck& deck) {
+  const toml::table* t = section_table(deck, "spire");
+  if (!t) return std::nullopt;
+  const TableReader r(deck, *t, "spire", kSpireKeys);
+  SpireSection out;
+  out.line = r.line();
+  SpireSpec& s = out.spec;
+  s.height = r.number("height", s.height, Range::positive);
+  s.base_inradius = r.number("base_inradius", s.base_inradius, Range::positive);
+  s.wall_thickness = r.number("wall_thickness", s.wall_thickness, Range::positive);
+  s.wall_thickness_top = r.number("wall_thickness_top", s.wall_thickness_top, Range::positive);
+  s.course_height = r.number("course_height", s.course_height, Range::positive);
+  s.tip_height = r.number("tip_height", s.tip_height, Range::positive);
+  if (const auto n = r.integer("stones_per_face")) {
+    if (*n < 1 || *n > 64) r.fail("stones_per_face", "must be in [1, 64] (got " + std::to_string(*n) + ")");
+    s.stones_per_face = static_cast<int>(*n);
+  }
+  s.joint_pattern = r.choice<SpireJointPattern>("joint_pattern",
+                                                {{"staggered", SpireJointPattern::staggered},
+                                                 {"aligned", SpireJointPattern::aligned},
+                                                 {"aligned_above_windows", SpireJointPattern::aligned_above_windows}},
+                                                s.joint_pattern);
+  if (const toml::node* n = t->get("window_faces")) {
+    const auto* arr = n->as_array();
+    if (!arr) r.fail("window_faces", "must be an array of face indices 0..7 (got " + describe(*n) + ")");
+    s.window_faces.clear();
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      const toml::node& e = *arr->get(i);
+      const auto* v = e.as_integer();
+      const std::string path = indexed(r.key_path("window_faces"), i + 1);
+      if (!v) deck.fail(path, &e, "must be an integer face index 0..7 (got " + describe(e) + ")");
+      if (v->get() < 0 || v->get() > 7)
+        deck.fail(path, &e, "face indices are 0..7, face 0 facing +x (got " + std::to_string(v->get()) + ")");
+      if (std::find(s.window_faces.begin(), s.window_faces.end(), v->get()) != s.window_faces.end())
+        deck.fail(path, &e, "face " + std::to_string(v->get()) + " is listed twice (one window per face)");
+      s.window_faces.push_back(static_cast<int>(v->get()));
+    }
+  }
+  s.window_sill = r.number("window_sill", s.window_sill, Range::non_negative);
+  s.window_width = r.number("window_width", s.window_width, Range::positive);
+  s.window_head = r.number("window_head", s.window_head, Range::positive);
+  s.window_head_shape = r.choice<WindowHead>("window_head_shape",
+                                             {{"pointed", WindowHead::pointed}, {"flat", WindowHead::flat}},
+                                             s.window_head_shape);
+  if (const auto n = r.integer("window_arch_segments")) {
+    if (*n < 1 || *n > 64) r.fail("window_arch_segments", "must be in [1, 64] (got " + std::to_string(*n) + ")");
+    s.window_arch_segments = static_cast<int>(*n);
+  }
+  s.base_thickness = r.number("base_thickness", s.base_thickness, Range::non_negative);
+  out.base_motion = r.choice<BlockMotion>("base_motion",
+                                          {{"fixed", BlockMotion::fixed}, {"kinematic", BlockMotion::kinematic}},
+                                          out.base_motion);
+  if (r.has("base_motion") && s.base_thickness == 0)
+    r.fail("base_motion", "there is no base block (base_thickness = 0)");
+  out.density = r.number("density", out.density, Range::positive);
+
+  try {
+    out.model = build_spire(s);
+  } catch (const SpireSpecError& e) {
+    r.fail(e.field, e.detail);
+  } catch (const GeometryError& e) {
+    deck.fail("spire", t, std::string("cannot build the spire: ") + e.what());
+  }
+
+  // Table 1: E_stone 30 GPa, E_mortar 10 GPa; section 3.1: 1 cm of mortar.
+  const double e_stone = r.number("stone_youngs_modulus", 30e9, Range::positive);
+  const double e_mortar = r.number("mortar_youngs_modulus", 10e9, Range::positive);
+  const double mortar = r.number("mortar_thickness", 0.01, Range::non_negative);
+  if (!(mortar < out.model.course_height))
+    r.fail("mortar_thickness", "must be less than the course pitch " + format_number(out.model.course_height) +
+                                   " m (got " + format_number(mortar) + ")");
+  out.joint.normal_stiffness = series_normal_stiffness(out.model.course_height, mortar, e_stone, e_mortar);
+  out.joint.shear_ratio = r.number("shear_stiffness_ratio", out.joint.shear_ratio, Range::positive);
+  return out;
+}
+
+void read_spire_section(const Deck& deck, Generated& out, SceneSpec& scene) {
+  const std::optional<SpireSection> spire = read_spire(deck);
+  if (!spire) return;
+  Generated::Part part;
+  part.section = "spire";
+  part.at = deck.root().get("spire");
+  part.deck_line = spire->line;
+  for (const auto& sb : spire->model.blocks) {
+    BlockSpec b;
+    b.name = sb.name;
+    b.shape = sb.shape;
+    b.density = spire->density;
+    b.motion = sb.kind == SpireBlockKind::base ? spire->base_motion : BlockMotion::free;
+    b.course = sb.course;
+    b.deck_line = spire->line;
+    part.blocks.push_back(std::move(b));
+  }
+  out.parts.push_back(std::move(part));
+  out.joint = spire->joint;
+  scene.spire = spire->spec;
+}
+
+}  // namespace
+
+const GeneratorSection kSpireSection{"spire", kSpireKeys, read_spire_section};
+
+}  // namespace polydem
