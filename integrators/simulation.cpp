@@ -1,5 +1,7 @@
 #include "integrators/simulation.hpp"
 
+#include "contact/gather.hpp"
+
 #include <omp.h>
 
 #include <cmath>
@@ -115,21 +117,8 @@ void Simulation::compute_joint_forces_parallel() {
 }
 
 void Simulation::gather_block(int i) {
-  const auto& off = contacts_.gather_offset;
-  const auto& idx = contacts_.gather_sub;
-  const auto& sign = contacts_.gather_sign;
-  const auto& sub = contacts_.sub;
   auto& st = blocks_.state;
-  Vec3 f = Vec3::Zero(), m = Vec3::Zero();
-  const Vec3& x = st.position[i];
-  for (int k = off[i]; k < off[i + 1]; ++k) {
-    const int s = idx[k];
-    const Vec3 fk = sign[k] * sub.force[s];
-    f += fk;
-    m += (sub.point[s] - x).cross(fk);
-  }
-  st.contact_force[i] = f;
-  st.contact_torque[i] = m;
+  gather_block_force(contacts_, i, st.position[i], st.contact_force[i], st.contact_torque[i]);
 }
 
 void Simulation::gather_block_forces() {
