@@ -1,6 +1,7 @@
 #include "integrators/simulation.hpp"
 
 #include "contact/gather.hpp"
+#include "core/loads.hpp"
 
 #include <omp.h>
 
@@ -60,11 +61,9 @@ void Simulation::start_half_step_back() {
   gather_block_forces();
   auto& st = blocks_.state;
   const auto& pr = blocks_.props;
-  const bool body_force = motion_.active() && motion_.applied_as == GroundMotionApplication::body_force;
-  const Vec3 a_ground = body_force ? Vec3(motion_.acceleration_at(0.0) * motion_.direction) : Vec3::Zero();
+  const Vec3 a_ground = ground_body_acceleration(motion_, 0.0);
   for (int i : blocks_.free_blocks) {
-    const double m = pr.mass[i];
-    const Vec3 force = m * sim_.gravity - m * a_ground + st.contact_force[i];
+    const Vec3 force = external_force(pr, i, sim_.gravity, a_ground) + st.contact_force[i];
     st.velocity[i] -= (0.5 * dt_ * pr.inv_mass[i]) * force;
     st.angular_momentum[i] -= 0.5 * dt_ * st.contact_torque[i];
     const Mat3& R = st.rotation[i];
@@ -133,10 +132,7 @@ void Simulation::advance_block(int i, const Vec3& a_ground) {
   const auto& pr = blocks_.props;
   const double dt = dt_;
   const double dv_dt = 0.5 * (dt_prev_ + dt_);  // span of the velocity update
-  const Vec3& g = sim_.gravity;
-  const double m = pr.mass[i];
-  const Vec3 load = -m * a_ground;  // inertial force of the moving base frame
-  const Vec3 force = m * g + load + st.contact_force[i];
+  const Vec3 force = external_force(pr, i, sim_.gravity, a_ground) + st.contact_force[i];
   const Vec3 v_old = st.velocity[i];
   const Vec3 v_new = v_old + (dv_dt * pr.inv_mass[i]) * force;
   const Vec3 L_new = st.angular_momentum[i] + dv_dt * st.contact_torque[i];
@@ -152,7 +148,8 @@ void Simulation::advance_block(int i, const Vec3& a_ground) {
   omega_mid_[i] = 0.5 * (w_old + w);
   position_prev_[i] = st.position[i];
   orientation_prev_[i] = st.orientation[i];
-  load_work_[i] += dt * load.dot(velocity_mid_[i]);
+  // Gravity's work is the ledger's potential energy: only the ground's counts.
+  load_work_[i] += load_work(dt, ground_inertial_force(pr.mass[i], a_ground), velocity_mid_[i]);
 
   st.velocity[i] = v_new;
   st.angular_momentum[i] = L_new;
@@ -162,15 +159,10 @@ void Simulation::advance_block(int i, const Vec3& a_ground) {
   st.rotation[i] = st.orientation[i].toRotationMatrix();
 }
 
-Vec3 Simulation::ground_body_acceleration() const {
-  const bool body_force = motion_.active() && motion_.applied_as == GroundMotionApplication::body_force;
-  return body_force ? Vec3(motion_.acceleration_at(time_) * motion_.direction) : Vec3::Zero();
-}
-
 // Gather and update fused in one loop over the blocks: a block's update
 // needs only its own gathered force, so one barrier less per step.
 void Simulation::gather_and_advance() {
-  const Vec3 a_ground = ground_body_acceleration();
+  const Vec3 a_ground = ground_body_acceleration(motion_, time_);
   const int n = blocks_.count;
   const auto& motion = blocks_.props.motion;
 #pragma omp for schedule(static)
@@ -191,7 +183,7 @@ void Simulation::move_kinematic_blocks() {
     velocity_mid_[i] = 0.5 * (v_old + v_new);
     position_prev_[i] = st.position[i];
     // The base does work on the blocks through the joints: −F_joint·v.
-    load_work_[i] += -dt_ * st.contact_force[i].dot(velocity_mid_[i]);
+    load_work_[i] += load_work(-dt_, st.contact_force[i], velocity_mid_[i]);
     st.velocity[i] = v_new;
     st.position[i] += dt_ * v_new;
   }

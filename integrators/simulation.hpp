@@ -113,7 +113,6 @@ class Simulation {
   void gather_and_advance();
   void gather_block(int i);
   void advance_block(int i, const Vec3& a_ground);
-  Vec3 ground_body_acceleration() const;
   void move_kinematic_blocks();
   void check_health();
 
