@@ -5,12 +5,19 @@
 
 #include <omp.h>
 
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
 namespace polydem {
 
 namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds(Clock::time_point from, Clock::time_point to) {
+  return std::chrono::duration<double>(to - from).count();
+}
 
 // Rotation by the rotation vector w (the exponential map). A step turns a
 // block by far less than 1e-3 rad, where the fourth-order series is exact to
@@ -75,18 +82,23 @@ void Simulation::start_half_step_back() {
 // (closed or within the margin): if they allow less, the step is lowered
 // for the rest of the run. Leapfrog carries the change exactly (the velocity
 // update spans the mean of the old and new steps).
-void Simulation::detect_contacts() {
-  detector_.detect(blocks_, contacts_, bond_initial_ && contacts_.detections == 0);
-  if (!adaptive_dt_) return;
+DetectionTimes Simulation::detect_contacts() {
+  const DetectionTimes times = detector_.detect(blocks_, contacts_, bond_initial_ && contacts_.detections == 0);
+  if (!adaptive_dt_) return times;
   const CriticalStep c = critical_time_step_from_contacts(blocks_, contacts_, joint_, sim_.safety_factor);
   if (c.chosen > 0 && c.chosen < dt_) {
     dt_ = c.chosen;
     ++dt_reductions_;
   }
+  return times;
 }
 
 void Simulation::step() {
-  if (detector_.needs_detection(blocks_)) detect_contacts();
+  const Clock::time_point t0 = Clock::now();
+  double patch = 0;
+  if (detector_.needs_detection(blocks_)) patch = detect_contacts().patch;
+  const Clock::time_point t1 = Clock::now();
+  Clock::time_point t2 = t1;  // the joint law's end, read by the master thread
   // One parallel region per step (a region costs more than a barrier); small
   // scenes stay serial, where a parallel region costs more than it saves.
   const bool parallel = contacts_.sub.size() >= parallel_threshold_ ||
@@ -95,13 +107,24 @@ void Simulation::step() {
   {
     compute_joint_forces_parallel();
 #pragma omp barrier
+#pragma omp master
+    t2 = Clock::now();
     gather_and_advance();
   }
   move_kinematic_blocks();
   time_ += dt_;
   dt_prev_ = dt_;
   ++steps_;
-  if (steps_ % 256 == 0) check_health();
+  const Clock::time_point t3 = Clock::now();
+  profile_.detection += seconds(t0, t1) - patch;
+  profile_.patch += patch;
+  profile_.joint_law += seconds(t1, t2);
+  profile_.gather_update += seconds(t2, t3);
+  ++profile_.steps;
+  if (steps_ % 256 == 0) {
+    check_health();
+    profile_.guard += seconds(t3, Clock::now());
+  }
 }
 
 void Simulation::compute_joint_forces_parallel() {
