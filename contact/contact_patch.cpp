@@ -1,7 +1,5 @@
 #include "contact/contact_patch.hpp"
 
-#include <ccd/ccd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -9,36 +7,6 @@
 namespace polydem {
 
 namespace {
-
-// A block as libccd sees it: world vertices inflated by a sphere of radius
-// `inflate`, so that MPR reports overlap for blocks closer than the margin.
-struct CcdBody {
-  const std::vector<Vec3>* vertices;
-  Vec3 centre;
-  double inflate;
-};
-
-void ccd_support(const void* obj, const ccd_vec3_t* dir, ccd_vec3_t* out) {
-  const auto* body = static_cast<const CcdBody*>(obj);
-  const Vec3 d(ccdVec3X(dir), ccdVec3Y(dir), ccdVec3Z(dir));
-  double best = -std::numeric_limits<double>::infinity();
-  Vec3 arg = Vec3::Zero();
-  for (const Vec3& v : *body->vertices) {
-    const double s = v.dot(d);
-    if (s > best) {
-      best = s;
-      arg = v;
-    }
-  }
-  const double len = d.norm();
-  if (len > 0) arg += (body->inflate / len) * d;
-  ccdVec3Set(out, arg.x(), arg.y(), arg.z());
-}
-
-void ccd_centre(const void* obj, ccd_vec3_t* out) {
-  const auto* body = static_cast<const CcdBody*>(obj);
-  ccdVec3Set(out, body->centre.x(), body->centre.y(), body->centre.z());
-}
 
 // Largest separation of `other` from block `self`'s face planes.
 // Returns the face and writes its separation.
@@ -66,33 +34,29 @@ double face_separation(const PosedBlock& self, int face, const std::vector<Vec3>
   return m;
 }
 
+void world_vertices(const PosedBlock& blk, std::vector<Vec3>& w) {
+  const auto& v = blk.shape->vertices;
+  w.resize(v.size());
+  for (std::size_t k = 0; k < v.size(); ++k) w[k] = blk.R * v[k] + blk.x;
+}
+
 bool find_patch(const PosedBlock& a, const PosedBlock& b, double margin, int prev_ref_side, int prev_ref_face,
                 Patch& out, PatchScratch& s) {
-  auto to_world = [](const PosedBlock& blk, std::vector<Vec3>& w) {
-    const auto& v = blk.shape->vertices;
-    w.resize(v.size());
-    for (std::size_t k = 0; k < v.size(); ++k) w[k] = blk.R * v[k] + blk.x;
-  };
-  to_world(a, s.world_a);
-  to_world(b, s.world_b);
+  // 1. Narrow phase: are the blocks within the margin of each other?
+  world_vertices(a, s.world_a);
+  world_vertices(b, s.world_b);
+  NarrowPhaseHit hit;
+  if (!narrow_phase(s.world_a, a.x, s.world_b, b.x, margin, hit)) return false;
+  return build_patch(a, b, margin, hit, prev_ref_side, prev_ref_face, out, s);
+}
 
-  // 1. libccd: are the blocks within the margin of each other?
-  CcdBody ca{&s.world_a, a.x, 0.5 * margin};
-  CcdBody cb{&s.world_b, b.x, 0.5 * margin};
-  ccd_t ccd;
-  CCD_INIT(&ccd);
-  ccd.support1 = ccd_support;
-  ccd.support2 = ccd_support;
-  ccd.center1 = ccd_centre;
-  ccd.center2 = ccd_centre;
-  ccd.max_iterations = 200;
-  ccd.mpr_tolerance = 1e-6 * margin;
-  ccd_real_t depth = 0;
-  ccd_vec3_t dir, pos;
-  if (ccdMPRPenetration(&ca, &cb, &ccd, &depth, &dir, &pos) != 0) return false;
-  const double mpr_overlap = depth - margin;  // of the real (uninflated) blocks
-  Vec3 mpr_dir(ccdVec3X(&dir), ccdVec3Y(&dir), ccdVec3Z(&dir));  // from a towards b
-  const Vec3 mpr_pos(ccdVec3X(&pos), ccdVec3Y(&pos), ccdVec3Z(&pos));
+bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const NarrowPhaseHit& hit,
+                 int prev_ref_side, int prev_ref_face, Patch& out, PatchScratch& s) {
+  world_vertices(a, s.world_a);
+  world_vertices(b, s.world_b);
+  const double mpr_overlap = hit.overlap;  // of the real (uninflated) blocks
+  Vec3 mpr_dir = hit.direction;            // from a towards b
+  const Vec3 mpr_pos = hit.point;
 
   // 2. Common plane: best face of either block, keeping the previous choice
   // while it is within a small tolerance of the best.

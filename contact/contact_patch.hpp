@@ -1,8 +1,8 @@
 // Narrow phase and contact patch for one pair of convex blocks.
 //
-// 1. libccd (MPR on support functions, each block inflated by half the
-//    contact margin) rejects pairs farther apart than the margin and gives a
-//    penetration depth and direction.
+// 1. The narrow phase (narrow_phase.hpp: libccd's MPR on the blocks
+//    inflated by half the margin) rejects pairs farther apart than the margin
+//    and gives a penetration depth and direction.
 // 2. Common plane: the face, of either block, with the largest separation
 //    along its own outward normal (the separating-axis test over face
 //    normals). For blocks meeting face to face, or a block rocking on an edge
@@ -21,6 +21,7 @@
 //    normal and a single vertex–face subcontact with a nominal area carries it.
 #pragma once
 
+#include "contact/narrow_phase.hpp"
 #include "geometry/polyhedron.hpp"
 
 #include <cstdint>
@@ -63,8 +64,17 @@ struct PatchScratch {
 // (> 0 apart, < 0 overlapping).
 double face_separation(const PosedBlock& self, int face, const std::vector<Vec3>& other);
 
-// Returns false if the pair is farther apart than `margin`. prev_ref_side /
-// prev_ref_face: the previous detection's choice for this pair (-1 if none).
+// The block's vertices in world coordinates: R·v + x.
+void world_vertices(const PosedBlock& block, std::vector<Vec3>& world);
+
+// Steps 2-4 for a pair the narrow phase found within the margin (`hit`).
+// Returns false if the pair is farther apart than `margin` after all.
+// prev_ref_side / prev_ref_face: the previous detection's choice for this
+// pair (-1 if none).
+bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const NarrowPhaseHit& hit,
+                 int prev_ref_side, int prev_ref_face, Patch& out, PatchScratch& scratch);
+
+// Narrow phase and patch in one call (steps 1-4).
 bool find_patch(const PosedBlock& a, const PosedBlock& b, double margin, int prev_ref_side, int prev_ref_face,
                 Patch& out, PatchScratch& scratch);
 

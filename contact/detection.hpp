@@ -1,16 +1,19 @@
-// Contact detection: broad phase, narrow phase and patch, subcontact
-// persistence, and the per-block gather lists.
+// Contact detection: the stages that rebuild the contact set, in order.
 //
-// Broad phase: FCL's dynamic AABB tree over the blocks' world boxes, each
-// grown by half the contact margin. Detection runs only when some block has
-// moved (translation plus rotation times its radius) more than half the
-// margin since the last one: until then no pair can close a gap wider than
-// the margin, and existing subcontacts follow their blocks exactly.
-// Blocks that cannot move (fixed, kinematic) are never paired with each other.
+//   detect():
+//     1. broad phase: candidate pairs from the blocks' boxes   broad_phase.hpp
+//     2. narrow phase: which candidates are within the margin  narrow_phase.hpp
+//     3. patch: common plane, clipped joint polygon            contact_patch.hpp
+//     4. subcontacts from the patches, history carried over    subcontacts.hpp
+//     5. per-block gather lists                                gather.hpp
 //
-// Subcontacts are keyed by (pair, reference side and face, incident face,
-// clipped feature). A subcontact found again keeps its shear force, bond and
-// dissipation; one that disappears hands its dissipation to the ledger.
+// Detection runs only when some block has moved (translation plus rotation
+// times its radius) more than half the margin since the last one: until
+// then no pair can close a gap wider than the margin (the broad phase grows
+// every box by half the margin), and existing subcontacts follow their
+// blocks exactly. Steps 2 and 3 run in parallel, one slot per candidate;
+// everything is assembled in candidate order (sorted by block pair), so the
+// result does not depend on the number of threads.
 #pragma once
 
 #include "contact/subcontacts.hpp"
@@ -19,6 +22,15 @@
 #include <memory>
 
 namespace polydem {
+
+// Wall seconds spent in each stage of one detect() call.
+struct DetectionTimes {
+  double broad_phase = 0;
+  double narrow_phase = 0;
+  double patch = 0;
+  double subcontacts = 0;  // assembly and history carry-over
+  double gather = 0;
+};
 
 class ContactDetector {
  public:
@@ -32,7 +44,8 @@ class ContactDetector {
   bool needs_detection(const Blocks& blocks) const;
   // Rebuilds `contacts` for the current state, carrying history over.
   // New subcontacts start bonded when `bond_new` is set (cohesion/tension at t = 0).
-  void detect(const Blocks& blocks, ContactSet& contacts, bool bond_new);
+  // Returns the time spent in each stage.
+  DetectionTimes detect(const Blocks& blocks, ContactSet& contacts, bool bond_new);
 
   // Checkpoints: the poses at the last detection (they decide when the next
   // one runs). Nothing else carries over: the contacts of the detection

@@ -1,5 +1,7 @@
 #include "contact/subcontacts.hpp"
 
+#include <algorithm>
+
 namespace polydem {
 
 void Subcontacts::clear() { resize(0); }
@@ -115,6 +117,99 @@ void ContactSet::load(ByteReader& r, int blocks) {
     if (gather_offset[i] > gather_offset[i + 1]) throw StateFormatError("gather lists out of order");
   for (int q : gather_sub)
     if (q < 0 || static_cast<std::size_t>(q) >= n) throw StateFormatError("gather list out of range");
+}
+
+const ContactPair* find_pair(const ContactSet& set, int a, int b) {
+  auto it = std::lower_bound(set.pairs.begin(), set.pairs.end(), std::make_pair(a, b),
+                             [](const ContactPair& p, const std::pair<int, int>& k) {
+                               return std::make_pair(p.a, p.b) < k;
+                             });
+  return (it != set.pairs.end() && it->a == a && it->b == b) ? &*it : nullptr;
+}
+
+std::uint64_t subcontact_key(int ref_side, int ref_face, int inc_face, std::uint32_t feature) {
+  return (static_cast<std::uint64_t>(ref_side & 1) << 63) |
+         (static_cast<std::uint64_t>(ref_face & 0x7FFF) << 48) |
+         (static_cast<std::uint64_t>(inc_face & 0xFFFF) << 32) | feature;
+}
+
+void build_subcontacts(const Blocks& b, const std::vector<std::pair<int, int>>& candidates,
+                       const std::vector<Patch>& patches, const std::vector<char>& found, bool bond_new,
+                       ContactSet& contacts) {
+  const std::size_t nc = candidates.size();
+  contacts.pairs.clear();
+  std::size_t total = 0;
+  for (std::size_t k = 0; k < nc; ++k)
+    if (found[k]) total += patches[k].points.size();
+  Subcontacts& sc = contacts.sub;
+  sc.resize(total);
+  std::size_t s = 0;
+  for (std::size_t k = 0; k < nc; ++k) {
+    if (!found[k]) continue;
+    const auto [i, j] = candidates[k];
+    const Patch& patch = patches[k];
+    ContactPair cp;
+    cp.a = i;
+    cp.b = j;
+    cp.ref_block = patch.ref_side == 0 ? i : j;
+    const int inc = patch.ref_side == 0 ? j : i;
+    cp.ref_face = patch.ref_face;
+    cp.inc_face = patch.inc_face;
+    cp.first = static_cast<int>(s);
+    cp.count = static_cast<int>(patch.points.size());
+    cp.patch_area = patch.area;
+    const Mat3& Rr = b.state.rotation[cp.ref_block];
+    const Mat3& Ri = b.state.rotation[inc];
+    const Vec3 n_local = Rr.transpose() * patch.normal;
+    const double off_local = patch.offset - patch.normal.dot(b.state.position[cp.ref_block]);
+    for (const PatchPoint& pt : patch.points) {
+      sc.pair[s] = static_cast<int>(contacts.pairs.size());
+      sc.ref_block[s] = cp.ref_block;
+      sc.inc_block[s] = inc;
+      sc.key[s] = subcontact_key(patch.ref_side, patch.ref_face, patch.inc_face, pt.feature);
+      sc.ref_normal_local[s] = n_local;
+      sc.ref_offset_local[s] = off_local;
+      sc.inc_point_local[s] = Ri.transpose() * (pt.point - b.state.position[inc]);
+      sc.area[s] = pt.area;
+      sc.shear_force[s] = Vec3::Zero();
+      sc.bonded[s] = bond_new ? 1 : 0;
+      sc.slip_energy[s] = 0;
+      sc.damping_energy[s] = 0;
+      sc.force[s] = Vec3::Zero();
+      sc.point[s] = pt.point;
+      sc.overlap[s] = -pt.separation;
+      sc.normal_force[s] = 0;
+      ++s;
+    }
+    contacts.pairs.push_back(cp);
+  }
+}
+
+void carry_history(const ContactSet& old, ContactSet& contacts, std::vector<char>& old_used) {
+  Subcontacts& sc = contacts.sub;
+  old_used.assign(old.sub.size(), 0);
+  for (const ContactPair& cp : contacts.pairs) {
+    const ContactPair* op = find_pair(old, cp.a, cp.b);
+    if (!op) continue;
+    for (int s = cp.first; s < cp.first + cp.count; ++s) {
+      for (int o = op->first; o < op->first + op->count; ++o) {
+        if (old.sub.key[o] != sc.key[s] || old_used[o]) continue;
+        old_used[o] = 1;
+        sc.shear_force[s] = old.sub.shear_force[o];
+        sc.bonded[s] = old.sub.bonded[o];
+        sc.slip_energy[s] = old.sub.slip_energy[o];
+        sc.damping_energy[s] = old.sub.damping_energy[o];
+        break;
+      }
+    }
+  }
+  contacts.retired_slip_energy = old.retired_slip_energy;
+  contacts.retired_damping_energy = old.retired_damping_energy;
+  for (std::size_t o = 0; o < old.sub.size(); ++o) {
+    if (old_used[o]) continue;
+    contacts.retired_slip_energy += old.sub.slip_energy[o];
+    contacts.retired_damping_energy += old.sub.damping_energy[o];
+  }
 }
 
 }  // namespace polydem

@@ -19,10 +19,13 @@
 // (see gather.hpp), so results do not depend on the number of threads.
 #pragma once
 
+#include "contact/contact_patch.hpp"
+#include "core/blocks.hpp"
 #include "core/byte_stream.hpp"
 #include "geometry/polyhedron.hpp"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace polydem {
@@ -79,5 +82,38 @@ struct ContactSet {
   void save(ByteWriter& w) const;
   void load(ByteReader& r, int blocks);
 };
+
+// The pair (a, b), a < b, of `set` (whose pairs are sorted by (a, b)), or
+// nullptr. A binary search: no hash map, so no iteration order to leak.
+const ContactPair* find_pair(const ContactSet& set, int a, int b);
+
+// The key of a subcontact within its pair: which block holds the reference
+// face (ref_side 0: the pair's a), the reference and incident faces, and the
+// clipped feature of contact_patch.cpp (incident vertex, or the crossing of a
+// reference side plane with an incident edge).
+std::uint64_t subcontact_key(int ref_side, int ref_face, int inc_face, std::uint32_t feature);
+
+// Rebuilds `out.pairs` and `out.sub` from the patches found for the
+// candidate pairs (candidates[k] = (i, j), i < j, sorted; patches[k] valid
+// where found[k]), in candidate order. Each subcontact is made body-fixed
+// (reference plane in the reference block's frame, incident point in the
+// incident block's frame) at the current state and starts without history:
+// no shear force, no dissipation, bonded if `bond_new`. The gather lists,
+// the retired dissipation and the detection count are left alone.
+void build_subcontacts(const Blocks& blocks, const std::vector<std::pair<int, int>>& candidates,
+                       const std::vector<Patch>& patches, const std::vector<char>& found, bool bond_new,
+                       ContactSet& out);
+
+// History carry-over from one detection to the next. A subcontact of
+// `current` whose pair existed in `previous` and whose key matches a
+// subcontact of that pair not matched yet takes over its shear force, bond
+// and cumulative slip and damping dissipation (the first match in
+// `previous` order). A subcontact of `previous` that matches none is gone:
+// its dissipation is retired, i.e. added (in `previous` order) to the
+// retired totals, which `current` takes over from `previous`. So the
+// ledger's dissipation never drops when a joint opens or its patch changes.
+// `matched`: scratch reused across detections (one flag per previous
+// subcontact).
+void carry_history(const ContactSet& previous, ContactSet& current, std::vector<char>& matched);
 
 }  // namespace polydem

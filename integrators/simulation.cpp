@@ -1,13 +1,23 @@
 #include "integrators/simulation.hpp"
 
+#include "contact/gather.hpp"
+#include "core/loads.hpp"
+
 #include <omp.h>
 
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
 namespace polydem {
 
 namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds(Clock::time_point from, Clock::time_point to) {
+  return std::chrono::duration<double>(to - from).count();
+}
 
 // Rotation by the rotation vector w (the exponential map). A step turns a
 // block by far less than 1e-3 rad, where the fourth-order series is exact to
@@ -58,11 +68,9 @@ void Simulation::start_half_step_back() {
   gather_block_forces();
   auto& st = blocks_.state;
   const auto& pr = blocks_.props;
-  const bool body_force = motion_.active() && motion_.applied_as == GroundMotionApplication::body_force;
-  const Vec3 a_ground = body_force ? Vec3(motion_.acceleration_at(0.0) * motion_.direction) : Vec3::Zero();
+  const Vec3 a_ground = ground_body_acceleration(motion_, 0.0);
   for (int i : blocks_.free_blocks) {
-    const double m = pr.mass[i];
-    const Vec3 force = m * sim_.gravity - m * a_ground + st.contact_force[i];
+    const Vec3 force = external_force(pr, i, sim_.gravity, a_ground) + st.contact_force[i];
     st.velocity[i] -= (0.5 * dt_ * pr.inv_mass[i]) * force;
     st.angular_momentum[i] -= 0.5 * dt_ * st.contact_torque[i];
     const Mat3& R = st.rotation[i];
@@ -74,18 +82,23 @@ void Simulation::start_half_step_back() {
 // (closed or within the margin): if they allow less, the step is lowered
 // for the rest of the run. Leapfrog carries the change exactly (the velocity
 // update spans the mean of the old and new steps).
-void Simulation::detect_contacts() {
-  detector_.detect(blocks_, contacts_, bond_initial_ && contacts_.detections == 0);
-  if (!adaptive_dt_) return;
+DetectionTimes Simulation::detect_contacts() {
+  const DetectionTimes times = detector_.detect(blocks_, contacts_, bond_initial_ && contacts_.detections == 0);
+  if (!adaptive_dt_) return times;
   const CriticalStep c = critical_time_step_from_contacts(blocks_, contacts_, joint_, sim_.safety_factor);
   if (c.chosen > 0 && c.chosen < dt_) {
     dt_ = c.chosen;
     ++dt_reductions_;
   }
+  return times;
 }
 
 void Simulation::step() {
-  if (detector_.needs_detection(blocks_)) detect_contacts();
+  const Clock::time_point t0 = Clock::now();
+  double patch = 0;
+  if (detector_.needs_detection(blocks_)) patch = detect_contacts().patch;
+  const Clock::time_point t1 = Clock::now();
+  Clock::time_point t2 = t1;  // the joint law's end, read by the master thread
   // One parallel region per step (a region costs more than a barrier); small
   // scenes stay serial, where a parallel region costs more than it saves.
   const bool parallel = contacts_.sub.size() >= parallel_threshold_ ||
@@ -94,13 +107,24 @@ void Simulation::step() {
   {
     compute_joint_forces_parallel();
 #pragma omp barrier
+#pragma omp master
+    t2 = Clock::now();
     gather_and_advance();
   }
   move_kinematic_blocks();
   time_ += dt_;
   dt_prev_ = dt_;
   ++steps_;
-  if (steps_ % 256 == 0) check_health();
+  const Clock::time_point t3 = Clock::now();
+  profile_.detection += seconds(t0, t1) - patch;
+  profile_.patch += patch;
+  profile_.joint_law += seconds(t1, t2);
+  profile_.gather_update += seconds(t2, t3);
+  ++profile_.steps;
+  if (steps_ % 256 == 0) {
+    check_health();
+    profile_.guard += seconds(t3, Clock::now());
+  }
 }
 
 void Simulation::compute_joint_forces_parallel() {
@@ -115,21 +139,8 @@ void Simulation::compute_joint_forces_parallel() {
 }
 
 void Simulation::gather_block(int i) {
-  const auto& off = contacts_.gather_offset;
-  const auto& idx = contacts_.gather_sub;
-  const auto& sign = contacts_.gather_sign;
-  const auto& sub = contacts_.sub;
   auto& st = blocks_.state;
-  Vec3 f = Vec3::Zero(), m = Vec3::Zero();
-  const Vec3& x = st.position[i];
-  for (int k = off[i]; k < off[i + 1]; ++k) {
-    const int s = idx[k];
-    const Vec3 fk = sign[k] * sub.force[s];
-    f += fk;
-    m += (sub.point[s] - x).cross(fk);
-  }
-  st.contact_force[i] = f;
-  st.contact_torque[i] = m;
+  gather_block_force(contacts_, i, st.position[i], st.contact_force[i], st.contact_torque[i]);
 }
 
 void Simulation::gather_block_forces() {
@@ -144,10 +155,7 @@ void Simulation::advance_block(int i, const Vec3& a_ground) {
   const auto& pr = blocks_.props;
   const double dt = dt_;
   const double dv_dt = 0.5 * (dt_prev_ + dt_);  // span of the velocity update
-  const Vec3& g = sim_.gravity;
-  const double m = pr.mass[i];
-  const Vec3 load = -m * a_ground;  // inertial force of the moving base frame
-  const Vec3 force = m * g + load + st.contact_force[i];
+  const Vec3 force = external_force(pr, i, sim_.gravity, a_ground) + st.contact_force[i];
   const Vec3 v_old = st.velocity[i];
   const Vec3 v_new = v_old + (dv_dt * pr.inv_mass[i]) * force;
   const Vec3 L_new = st.angular_momentum[i] + dv_dt * st.contact_torque[i];
@@ -163,7 +171,8 @@ void Simulation::advance_block(int i, const Vec3& a_ground) {
   omega_mid_[i] = 0.5 * (w_old + w);
   position_prev_[i] = st.position[i];
   orientation_prev_[i] = st.orientation[i];
-  load_work_[i] += dt * load.dot(velocity_mid_[i]);
+  // Gravity's work is the ledger's potential energy: only the ground's counts.
+  load_work_[i] += load_work(dt, ground_inertial_force(pr.mass[i], a_ground), velocity_mid_[i]);
 
   st.velocity[i] = v_new;
   st.angular_momentum[i] = L_new;
@@ -173,15 +182,10 @@ void Simulation::advance_block(int i, const Vec3& a_ground) {
   st.rotation[i] = st.orientation[i].toRotationMatrix();
 }
 
-Vec3 Simulation::ground_body_acceleration() const {
-  const bool body_force = motion_.active() && motion_.applied_as == GroundMotionApplication::body_force;
-  return body_force ? Vec3(motion_.acceleration_at(time_) * motion_.direction) : Vec3::Zero();
-}
-
 // Gather and update fused in one loop over the blocks: a block's update
 // needs only its own gathered force, so one barrier less per step.
 void Simulation::gather_and_advance() {
-  const Vec3 a_ground = ground_body_acceleration();
+  const Vec3 a_ground = ground_body_acceleration(motion_, time_);
   const int n = blocks_.count;
   const auto& motion = blocks_.props.motion;
 #pragma omp for schedule(static)
@@ -202,7 +206,7 @@ void Simulation::move_kinematic_blocks() {
     velocity_mid_[i] = 0.5 * (v_old + v_new);
     position_prev_[i] = st.position[i];
     // The base does work on the blocks through the joints: −F_joint·v.
-    load_work_[i] += -dt_ * st.contact_force[i].dot(velocity_mid_[i]);
+    load_work_[i] += load_work(-dt_, st.contact_force[i], velocity_mid_[i]);
     st.velocity[i] = v_new;
     st.position[i] += dt_ * v_new;
   }

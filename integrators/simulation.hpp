@@ -6,6 +6,8 @@
 //     3. gather: each block sums its slots in fixed order   (parallel)
 //     4. central differences for free blocks                (parallel)
 //     5. kinematic base blocks follow the ground velocity
+//     6. every 256 steps, the guard checks the state
+// Each stage is timed into the StepProfile (a few clock reads per step).
 //
 // Leapfrog: x, q at t; v, L (angular momentum) at t − dt/2.
 //   v(t+dt/2) = v(t−dt/2) + dt·F(t)/m,  x(t+dt) = x(t) + dt·v(t+dt/2)
@@ -44,6 +46,21 @@ struct EnergyLedger {
   double balance = 0;        // kinetic + gravitational + strain + slip + damping − load_work
 };
 
+// Wall seconds spent in each stage of Simulation::step(), summed over the
+// steps this object has run (std::chrono::steady_clock; cf. Box2D's
+// b2Profile). Kept apart from the state: it is not checkpointed, so a run
+// resumed from a checkpoint counts only the steps it ran itself, and the
+// constructor's first detection is not in it.
+struct StepProfile {
+  double detection = 0;      // the half-margin test, broad and narrow phase, subcontacts with their
+                             // history, gather lists, and the step check after a detection
+  double patch = 0;          // common plane and patch clipping (part of each detection)
+  double joint_law = 0;      // joint forces, one slot per subcontact
+  double gather_update = 0;  // gather, central-difference update, kinematic blocks
+  double guard = 0;          // check_health, every 256 steps
+  long steps = 0;            // steps timed
+};
+
 class Simulation {
  public:
   // dt: the step to use (already checked against the critical step).
@@ -66,6 +83,7 @@ class Simulation {
   // than the step allowed (see critical_time_step_from_contacts).
   int time_step_reductions() const { return dt_reductions_; }
   long steps() const { return steps_; }
+  const StepProfile& profile() const { return profile_; }
 
   const Blocks& blocks() const { return blocks_; }
   const ContactSet& contacts() const { return contacts_; }
@@ -106,14 +124,13 @@ class Simulation {
   void load_state(ByteReader& r);
 
  private:
-  void detect_contacts();
+  DetectionTimes detect_contacts();
   void start_half_step_back();
   void compute_joint_forces_parallel();
   void gather_block_forces();
   void gather_and_advance();
   void gather_block(int i);
   void advance_block(int i, const Vec3& a_ground);
-  Vec3 ground_body_acceleration() const;
   void move_kinematic_blocks();
   void check_health();
 
@@ -143,6 +160,7 @@ class Simulation {
   double last_good_time_ = 0;
   long last_good_step_ = 0;
   std::vector<double> load_work_;
+  StepProfile profile_;
 };
 
 }  // namespace polydem

@@ -11,6 +11,7 @@
 #include "io/deck_reader.hpp"
 #include "io/generators.hpp"
 #include "io/ground_motion_record.hpp"
+#include "core/materials.hpp"
 #include "core/units.hpp"
 
 #include <toml++/toml.h>
@@ -107,7 +108,7 @@ JointSpec read_joint(const Deck& deck, const JointDefaults& defaults) {
   const TableReader r(deck, table_or_empty(deck, "joint"), "joint", kJointKeys);
   JointSpec j;
   j.normal_stiffness = r.number("normal_stiffness", defaults.normal_stiffness, Range::positive);
-  j.shear_stiffness = r.number("shear_stiffness", defaults.shear_ratio * j.normal_stiffness, Range::positive);
+  j.shear_stiffness = r.number("shear_stiffness", joint_shear_stiffness(j.normal_stiffness, defaults.shear_ratio), Range::positive);
   j.friction_angle = r.number("friction_angle", j.friction_angle, Range::non_negative);
   if (j.friction_angle >= 90.0)
     r.fail("friction_angle", "must be in [0, 90) degrees (got " + format_number(j.friction_angle) + ")");

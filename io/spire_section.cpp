@@ -3,6 +3,7 @@
 // defaults) and how its base block moves.
 #include "io/generators.hpp"
 
+#include "core/materials.hpp"
 #include "geometry/spire.hpp"
 
 namespace polydem {
@@ -27,12 +28,6 @@ struct SpireSection {
   BlockMotion base_motion = BlockMotion::fixed;
   int line = 0;
 };
-
-// Joint stiffness with stone and mortar in series over one course pitch h:
-// 1/kn = (h - t)/E_stone + t/E_mortar (mortar thickness t).
-double series_normal_stiffness(double pitch, double mortar_thickness, double e_stone, double e_mortar) {
-  return 1.0 / ((pitch - mortar_thickness) / e_stone + mortar_thickness / e_mortar);
-}
 
 std::optional<SpireSection> read_spire(const Deck& deck) {
   const toml::table* t = section_table(deck, "spire");
@@ -105,7 +100,7 @@ std::optional<SpireSection> read_spire(const Deck& deck) {
   if (!(mortar < out.model.course_height))
     r.fail("mortar_thickness", "must be less than the course pitch " + format_number(out.model.course_height) +
                                    " m (got " + format_number(mortar) + ")");
-  out.joint.normal_stiffness = series_normal_stiffness(out.model.course_height, mortar, e_stone, e_mortar);
+  out.joint.normal_stiffness = series_joint_normal_stiffness(out.model.course_height, mortar, e_stone, e_mortar);
   out.joint.shear_ratio = r.number("shear_stiffness_ratio", out.joint.shear_ratio, Range::positive);
   return out;
 }
