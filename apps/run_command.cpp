@@ -94,9 +94,15 @@ int run_command(const RunOptions& o) {
       last_print = wall;
       const double frac = sim.time() / end;
       const double eta = frac > 0 ? wall * (1 - frac) / frac : 0;
-      std::cerr << fmt::format("{}t = {:.4f} / {:.4g} s  {:.0f} steps/s  dt = {:.3e} s  ETA {:.0f} s{}",
-                               tty ? "\r" : "", sim.time(), end, sim.steps() / std::max(wall, 1e-9), sim.dt(), eta,
-                               tty ? "   " : "\n");
+      // Where the step's time goes so far (the profile's stages, in %).
+      const StepProfile& p = sim.profile();
+      const double stepping = std::max(p.detection + p.joint_law + p.gather_update + p.guard, 1e-12);
+      std::cerr << fmt::format(
+          "{}t = {:.4f} / {:.4g} s  {:.0f} steps/s  dt = {:.3e} s  ETA {:.0f} s  [detect {:.0f}% law {:.0f}% "
+          "update {:.0f}%]{}",
+          tty ? "\r" : "", sim.time(), end, sim.steps() / std::max(wall, 1e-9), sim.dt(), eta,
+          100 * p.detection / stepping, 100 * p.joint_law / stepping, 100 * p.gather_update / stepping,
+          tty ? "   " : "\n");
     };
   }
   std::unique_ptr<SnapshotWriter> snapshots;

@@ -230,6 +230,12 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
   }
   output_seconds += seconds_since(t_end);
   rep.wall_seconds = loop.wall_before + seconds_since(wall_start);
+  const StepProfile& sp = sim.profile();
+  rep.profile.detection = sp.detection;
+  rep.profile.patch = sp.patch;
+  rep.profile.joint_law = sp.joint_law;
+  rep.profile.gather_update = sp.gather_update;
+  rep.profile.guard = sp.guard;
   rep.profile.output = output_seconds;
   rep.profile.steps = sim.steps();
   rep.profile.total = seconds_since(wall_start);

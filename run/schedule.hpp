@@ -9,6 +9,12 @@
 // moves it beyond the current time (checkpoints: one per step at most).
 // interval 0 means "every time it is asked" for histories; an event with
 // `enabled` false is never due.
+//
+// The guard is not scheduled here: it checks the state every 256 steps
+// inside Simulation::step() (integrators/simulation.hpp), because a failed
+// check must put the last good state back before any output sees the bad
+// one. The assessment and the energy checks sample every 16th and 8th step
+// for cost, by step count, not by time.
 #pragma once
 
 namespace polydem {
