@@ -86,6 +86,61 @@ bool settled(const SceneSpec& spec, const Simulation& sim, double& quiet_since) 
   return sim.time() - quiet_since >= spec.simulation.settle_time;
 }
 
+// Continues from a checkpoint's state (see run_scene.hpp for the order).
+void restore(const std::string& state, const RunControl& control, Simulation& sim, AssessmentMonitor& assessment,
+             std::vector<std::unique_ptr<CheckMonitor>>& monitors, RunReport& rep, Recorder& recorder,
+             LoopState& loop) {
+  ByteReader r(state);
+  sim.load_state(r);
+  assessment.load(r);
+  std::uint64_t count = 0;
+  r.get(count);
+  if (count != monitors.size())
+    throw StateFormatError("the checkpoint has " + std::to_string(count) + " checks, the deck " +
+                           std::to_string(monitors.size()));
+  for (auto& m : monitors) m->load(r);
+  load_loop(r, rep, recorder, loop, state.size());
+  bool extra = false;
+  r.get(extra);
+  if (extra != static_cast<bool>(control.load_extra))
+    throw StateFormatError("the caller's section does not fit (snapshots on one side only)");
+  if (extra) control.load_extra(r);
+  if (!r.at_end()) throw StateFormatError(std::to_string(r.remaining()) + " bytes left over");
+  recorder.reserve_rows();
+}
+
+// The end of a run: what the recorder, the assessment and the checks found,
+// and the final (or last good) state.
+void finish_report(RunReport& rep, const Simulation& sim, Recorder& recorder, AssessmentMonitor& assessment,
+                   std::vector<std::unique_ptr<CheckMonitor>>& monitors) {
+  recorder.finish_walking(sim);
+  rep.walking = recorder.walk;
+  rep.histories = std::move(recorder.histories);
+  rep.energies = std::move(recorder.energies);
+  rep.assessment = assessment.finish(sim);
+  rep.status = rep.assessment.status;
+  rep.steps = sim.steps();
+  rep.time_step = sim.dt();
+  rep.time_step_reductions = sim.time_step_reductions();
+  rep.end_time = sim.time();
+  rep.detections = sim.contacts().detections;
+  rep.energy = sim.energies();
+  rep.energy_reference = recorder.reference;
+  rep.energy_balance_error = recorder.balance_error();
+  for (auto& m : monitors) rep.checks.push_back(m->finish(sim));
+  const BlockState& final_state = rep.unstable ? sim.last_good_state() : sim.blocks().state;
+  rep.final_position = final_state.position;
+  rep.final_velocity = final_state.velocity;
+  rep.final_orientation = final_state.orientation;
+  if (rep.unstable) {
+    rep.status = "unstable";
+    rep.last_good_time = sim.last_good_time();
+    for (int i = 0; i < sim.blocks().count; ++i)
+      rep.final_shapes.push_back(transformed(sim.blocks().props.local_shape[i], final_state.rotation[i],
+                                             final_state.position[i]));
+  }
+}
+
 }  // namespace
 
 RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
@@ -138,23 +193,7 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
   };
 
   if (control.restart) {
-    ByteReader r(*control.restart);
-    sim.load_state(r);
-    assessment.load(r);
-    std::uint64_t count = 0;
-    r.get(count);
-    if (count != monitors.size())
-      throw StateFormatError("the checkpoint has " + std::to_string(count) + " checks, the deck " +
-                             std::to_string(monitors.size()));
-    for (auto& m : monitors) m->load(r);
-    load_loop(r, rep, recorder, loop, control.restart->size());
-    bool extra = false;
-    r.get(extra);
-    if (extra != static_cast<bool>(control.load_extra))
-      throw StateFormatError("the caller's section does not fit (snapshots on one side only)");
-    if (extra) control.load_extra(r);
-    if (!r.at_end()) throw StateFormatError(std::to_string(r.remaining()) + " bytes left over");
-    recorder.reserve_rows();
+    restore(*control.restart, control, sim, assessment, monitors, rep, recorder, loop);
   } else if (loop.snapshots.enabled) {
     control.snapshot(sim, 0.0);
     loop.snapshots.advance();
@@ -202,32 +241,7 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
   const auto t_end = Clock::now();
   if (recorder.energies_on && !rep.unstable) recorder.record(sim);  // the final state is always in the ledger
   if (loop.snapshots.passed_last(sim.time())) control.snapshot(sim, sim.time());
-  recorder.finish_walking(sim);
-  rep.walking = recorder.walk;
-  rep.histories = std::move(recorder.histories);
-  rep.energies = std::move(recorder.energies);
-  rep.assessment = assessment.finish(sim);
-  rep.status = rep.assessment.status;
-  rep.steps = sim.steps();
-  rep.time_step = sim.dt();
-  rep.time_step_reductions = sim.time_step_reductions();
-  rep.end_time = sim.time();
-  rep.detections = sim.contacts().detections;
-  rep.energy = sim.energies();
-  rep.energy_reference = recorder.reference;
-  rep.energy_balance_error = recorder.balance_error();
-  for (auto& m : monitors) rep.checks.push_back(m->finish(sim));
-  const BlockState& final_state = rep.unstable ? sim.last_good_state() : sim.blocks().state;
-  rep.final_position = final_state.position;
-  rep.final_velocity = final_state.velocity;
-  rep.final_orientation = final_state.orientation;
-  if (rep.unstable) {
-    rep.status = "unstable";
-    rep.last_good_time = sim.last_good_time();
-    for (int i = 0; i < sim.blocks().count; ++i)
-      rep.final_shapes.push_back(transformed(sim.blocks().props.local_shape[i], final_state.rotation[i],
-                                             final_state.position[i]));
-  }
+  finish_report(rep, sim, recorder, assessment, monitors);
   output_seconds += seconds_since(t_end);
   rep.wall_seconds = loop.wall_before + seconds_since(wall_start);
   const StepProfile& sp = sim.profile();
