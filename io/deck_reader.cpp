@@ -1,12 +1,10 @@
 #include "io/deck_reader.hpp"
 
+#include "core/number_text.hpp"
+
 namespace polydem::deck_reader {
 
-std::string format_number(double v) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
+std::string format_number(double v) { return shortest_text(v); }
 
 std::string in_quotes(std::string_view s) {
   std::string out;

@@ -1,5 +1,7 @@
 #include "io/json.hpp"
 
+#include "core/number_text.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -33,12 +35,7 @@ void newline(std::string& out, int indent, int level) {
 
 }  // namespace
 
-std::string json_number(double x) {
-  if (!std::isfinite(x)) return "null";
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);  // shortest round trip
-  return std::string(buf, r.ptr);
-}
+std::string json_number(double x) { return std::isfinite(x) ? shortest_text(x) : "null"; }
 
 std::string json_quote(const std::string& s) {
   std::string out;

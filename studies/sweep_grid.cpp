@@ -1,7 +1,8 @@
 #include "studies/sweep_grid.hpp"
 
+#include "core/number_text.hpp"
 
-#include <charconv>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -33,12 +34,7 @@ std::vector<std::string> split(const std::string& s, char sep) {
 
 }  // namespace
 
-std::string value_text(double x) {
-  if (!std::isfinite(x)) return "null";
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);  // shortest round trip
-  return std::string(buf, r.ptr);
-}
+std::string value_text(double x) { return std::isfinite(x) ? shortest_text(x) : "null"; }
 
 double lattice_value(double start, double stop, long i, long n) {
   if (n <= 1 || i == 0) return start;
