@@ -89,6 +89,7 @@ DetectionTimes Simulation::detect_contacts() {
   if (c.chosen > 0 && c.chosen < dt_) {
     dt_ = c.chosen;
     ++dt_reductions_;
+    step_source_ = c;  // the estimate that set the step now
   }
   return times;
 }

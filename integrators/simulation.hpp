@@ -82,6 +82,9 @@ class Simulation {
   // Times the step was lowered because a detection found joints stiffer
   // than the step allowed (see critical_time_step_from_contacts).
   int time_step_reductions() const { return dt_reductions_; }
+  // The estimate from the joints that last lowered the step (frequency,
+  // damping ratio, governing block); governing_block < 0 if none did.
+  const CriticalStep& time_step_source() const { return step_source_; }
   long steps() const { return steps_; }
   const StepProfile& profile() const { return profile_; }
 
@@ -147,6 +150,7 @@ class Simulation {
   double dt_;
   double dt_prev_;  // the step before: leapfrog with a changing step
   int dt_reductions_ = 0;
+  CriticalStep step_source_;
   double time_ = 0;
   long steps_ = 0;
   // Per-block ledger terms and mid-step kinematics (for the energy ledger).

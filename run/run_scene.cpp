@@ -122,6 +122,11 @@ void finish_report(RunReport& rep, const Simulation& sim, Recorder& recorder, As
   rep.steps = sim.steps();
   rep.time_step = sim.dt();
   rep.time_step_reductions = sim.time_step_reductions();
+  if (sim.time_step_source().governing_block >= 0) {
+    rep.critical = sim.time_step_source();
+    rep.time_step_set_by = "joints at a detection";
+  }
+  if (rep.critical.governing_block >= 0) rep.time_step_block = sim.blocks().props.name[rep.critical.governing_block];
   rep.end_time = sim.time();
   rep.detections = sim.contacts().detections;
   rep.energy = sim.energies();
@@ -157,6 +162,7 @@ RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
   rep.free_blocks = static_cast<int>(sim.blocks().free_blocks.size());
   rep.margin = setup.margin;
   rep.critical = setup.critical;
+  rep.time_step_set_by = spec.simulation.time_step > 0 ? "deck" : "all-faces bound";
   rep.time_step = setup.time_step;
   rep.initial_time_step = sim.dt();
 

@@ -53,7 +53,13 @@ struct RunReport {
   double time_step = 0;          // s, at the end of the run
   double initial_time_step = 0;  // s, at the start
   int time_step_reductions = 0;
+  // The estimate that set the step: the all-faces bound before the first
+  // detection, or the joints' estimate that last lowered it (frequency,
+  // damping ratio ξ at that frequency, governing block); with the deck's own
+  // step, the bound that step had to respect.
   CriticalStep critical;
+  std::string time_step_set_by;  // "deck" | "all-faces bound" | "joints at a detection"
+  std::string time_step_block;   // the governing block's name ("" if none)
   double margin = 0;
   double wall_seconds = 0;
   long subcontact_updates = 0;  // Σ over steps of the number of subcontacts
