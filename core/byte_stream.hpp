@@ -1,4 +1,4 @@
-// Plain binary encoding of run state, for checkpoints (apps/checkpoint.hpp).
+// Plain binary encoding of run state, for checkpoints (io/checkpoint.hpp).
 //
 // Fixed width and little-endian whatever the host: integers as 1, 4 or 8
 // bytes, doubles as their IEEE-754 bit pattern in 8 bytes, vectors as a u64

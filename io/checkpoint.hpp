@@ -11,7 +11,7 @@
 //                 polydem version (a restart with anything else is refused)
 //       24     8  payload size in bytes
 //       32     8  payload checksum (checksum64, core/byte_stream.hpp)
-//       40     …  payload: run_scene's state (apps/scene_runner.hpp)
+//       40     …  payload: run_scene's state (run/run_scene.hpp)
 // The file is written with write_file_atomic (temporary, fsync, rename), so
 // a machine that dies mid-write leaves the previous checkpoint; the size and
 // checksum catch any file damaged some other way.
