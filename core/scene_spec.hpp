@@ -116,6 +116,9 @@ struct OutputSpec {
 struct AssessmentSpec {
   double damage_displacement = 0.005;  // m
   double collapse_displacement = 0.1;  // m
+  // Collapse when the free blocks moved beyond collapse_displacement make up
+  // at least this fraction of the free blocks' mass; 0: the first one does.
+  double collapse_mass_fraction = 0.0;
   bool stop_on_collapse = false;
   std::string monitor_block;           // empty: the highest free block against gravity
   int deck_line = 0;

@@ -27,7 +27,8 @@
 namespace polydem {
 
 // 2: the assessment keeps the monitor block's peak displacement.
-inline constexpr std::uint32_t kCheckpointVersion = 2;
+// 3: and the dislodged stones.
+inline constexpr std::uint32_t kCheckpointVersion = 3;
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
 
 // A checkpoint file that cannot be used; the message says why.

@@ -54,7 +54,7 @@ constexpr std::string_view kOutputKeys[] = {"history_interval",  "histories",   
                                             "walking",           "snapshot_interval", "snapshot_joints",
                                             "checkpoint_interval"};
 constexpr std::string_view kAssessmentKeys[] = {"damage_displacement", "collapse_displacement", "stop_on_collapse",
-                                                "monitor_block"};
+                                                "monitor_block", "collapse_mass_fraction"};
 constexpr std::string_view kCheckKeys[] = {"kind", "block", "expected", "tolerance"};
 
 struct SectionSchema {
@@ -377,6 +377,9 @@ AssessmentSpec read_assessment(const Deck& deck, const std::vector<BlockSpec>& b
     r.fail("collapse_displacement", "must be larger than damage_displacement (" +
                                         std::to_string(a.damage_displacement) + " m)");
   a.stop_on_collapse = r.boolean("stop_on_collapse").value_or(a.stop_on_collapse);
+  a.collapse_mass_fraction = r.number("collapse_mass_fraction", a.collapse_mass_fraction, Range::non_negative);
+  if (a.collapse_mass_fraction > 1.0)
+    r.fail("collapse_mass_fraction", "must be in [0, 1] (got " + format_number(a.collapse_mass_fraction) + ")");
   a.monitor_block = r.string("monitor_block").value_or("");
   if (!a.monitor_block.empty() &&
       std::none_of(blocks.begin(), blocks.end(), [&](const BlockSpec& b) { return b.name == a.monitor_block; }))

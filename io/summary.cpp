@@ -82,6 +82,17 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   as.set("crack_angle_deg", a.crack_angle_deg >= 0 ? Json(a.crack_angle_deg) : Json());
   as.set("crack_lowest_z_m", a.crack_angle_deg >= 0 ? Json(a.crack_low_z) : Json());
   as.set("crack_highest_z_m", a.crack_angle_deg >= 0 ? Json(a.crack_high_z) : Json());
+  Json dis = Json::object();
+  dis.set("count", static_cast<int>(a.dislodged_blocks.size()));
+  dis.set("mass_kg", a.dislodged_mass);
+  dis.set("mass_fraction", a.dislodged_mass_fraction);
+  dis.set("first_time_s", a.first_dislodged_time >= 0 ? Json(a.first_dislodged_time) : Json());
+  dis.set("lowest_z_m", a.dislodged_blocks.empty() ? Json() : Json(a.dislodged_low_z));
+  dis.set("highest_z_m", a.dislodged_blocks.empty() ? Json() : Json(a.dislodged_high_z));
+  Json names = Json::array();
+  for (const auto& n : a.dislodged_blocks) names.push_back(n);
+  dis.set("blocks", std::move(names));
+  as.set("dislodged", std::move(dis));
   s.set("assessment", std::move(as));
   if (!r.walking.bed_joint.empty() || !r.walking.vertical_joint.empty()) {
     Json w = Json::object();

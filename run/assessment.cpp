@@ -1,6 +1,8 @@
 #include "run/assessment.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace polydem {
@@ -25,6 +27,38 @@ AssessmentMonitor::AssessmentMonitor(const AssessmentSpec& spec, const Simulatio
       }
   }
   if (monitor_ >= 0) result_.monitor_block = b.props.name[monitor_];
+  dislodged_.assign(b.count, 0);
+  for (int i : b.free_blocks) free_mass_ += b.props.mass[i];
+}
+
+// Marks the blocks beyond collapse_displacement; the collapse criterion is
+// the mass fraction of those (assessment.collapse_mass_fraction; 0: any one).
+bool AssessmentMonitor::track_dislodged(const Simulation& sim) {
+  const Blocks& b = sim.blocks();
+  for (int i : b.free_blocks) {
+    if (dislodged_[i] || !(displacement(sim, i).norm() > spec_.collapse_displacement)) continue;
+    dislodged_[i] = 1;
+    result_.dislodged_mass += b.props.mass[i];
+    if (result_.first_dislodged_time < 0) result_.first_dislodged_time = sim.time();
+  }
+  result_.dislodged_mass_fraction = free_mass_ > 0 ? result_.dislodged_mass / free_mass_ : 0.0;
+  return result_.dislodged_mass > 0 && result_.dislodged_mass_fraction >= spec_.collapse_mass_fraction;
+}
+
+void AssessmentMonitor::list_dislodged(const Simulation& sim) {
+  const Blocks& b = sim.blocks();
+  result_.dislodged_blocks.clear();
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (int i : b.free_blocks) {
+    if (!dislodged_[i]) continue;
+    result_.dislodged_blocks.push_back(b.props.name[i]);
+    lo = std::min(lo, start_[i].dot(up_));
+    hi = std::max(hi, start_[i].dot(up_));
+  }
+  if (!result_.dislodged_blocks.empty()) {
+    result_.dislodged_low_z = lo;
+    result_.dislodged_high_z = hi;
+  }
 }
 
 Vec3 AssessmentMonitor::displacement(const Simulation& sim, int i) const {
@@ -56,7 +90,7 @@ void AssessmentMonitor::observe(const Simulation& sim) {
     result_.damage_time = sim.time();
     result_.ground_acceleration_at_damage = sim.ground_motion().acceleration_at(sim.time());
   }
-  if (result_.max_displacement > spec_.collapse_displacement) {
+  if (track_dislodged(sim)) {
     collapsed_ = true;
     result_.collapse_time = sim.time();
     result_.collapse_mode = reversed_ ? "I" : "II";
@@ -123,15 +157,16 @@ Assessment AssessmentMonitor::finish(const Simulation& sim) {
       result_.max_displacement_block = b.props.name[i];
     }
   }
-  if (!collapsed_ && result_.max_displacement > spec_.collapse_displacement) {
+  if (!collapsed_ && track_dislodged(sim)) {
     collapsed_ = true;
     result_.collapse_time = sim.time();
     result_.collapse_mode = reversed_ ? "I" : "II";
   }
+  list_dislodged(sim);
   if (collapsed_) {
     result_.status = "collapsed";
     if (result_.moved_blocks.empty()) record_crack(sim);
-  } else if (result_.max_residual_displacement > spec_.damage_displacement) {
+  } else if (result_.max_residual_displacement > spec_.damage_displacement || !result_.dislodged_blocks.empty()) {
     result_.status = "damaged";
     record_crack(sim);
   }
@@ -153,6 +188,8 @@ void AssessmentMonitor::save(ByteWriter& w) const {
   w.put(a.moved_blocks);
   w.put(static_cast<std::int32_t>(a.opened_joints));
   for (double x : {a.crack_angle_deg, a.crack_low_z, a.crack_high_z}) w.put(x);
+  w.put(dislodged_);
+  for (double x : {a.dislodged_mass, a.dislodged_mass_fraction, a.first_dislodged_time}) w.put(x);
 }
 
 void AssessmentMonitor::load(ByteReader& r) {
@@ -175,6 +212,11 @@ void AssessmentMonitor::load(ByteReader& r) {
   r.get(opened);
   a.opened_joints = opened;
   for (double* x : {&a.crack_angle_deg, &a.crack_low_z, &a.crack_high_z}) r.get(*x);
+  std::vector<std::uint8_t> dislodged;
+  r.get(dislodged);
+  if (dislodged.size() != dislodged_.size()) throw StateFormatError("assessment: dislodged flags do not fit the blocks");
+  dislodged_ = std::move(dislodged);
+  for (double* x : {&a.dislodged_mass, &a.dislodged_mass_fraction, &a.first_dislodged_time}) r.get(*x);
 }
 
 }  // namespace polydem

@@ -34,6 +34,16 @@ struct Assessment {
   int opened_joints = 0;
   double crack_angle_deg = -1;
   double crack_low_z = 0, crack_high_z = 0;  // m
+  // Stones dislodged, reported apart from collapse: the free blocks that
+  // moved farther than collapse_displacement at some time (sampled as
+  // max_displacement is), their mass, its fraction of the free blocks' mass,
+  // the first time one did, and where they came from (heights of their
+  // starting centroids along "up").
+  std::vector<std::string> dislodged_blocks;
+  double dislodged_mass = 0;           // kg
+  double dislodged_mass_fraction = 0;  // of the free blocks' mass
+  double first_dislodged_time = -1;    // s, -1: none
+  double dislodged_low_z = 0, dislodged_high_z = 0;  // m
 };
 
 class AssessmentMonitor {
@@ -51,6 +61,8 @@ class AssessmentMonitor {
 
  private:
   Vec3 displacement(const Simulation& sim, int i) const;
+  bool track_dislodged(const Simulation& sim);
+  void list_dislodged(const Simulation& sim);
   void record_crack(const Simulation& sim);
 
   AssessmentSpec spec_;
@@ -62,6 +74,8 @@ class AssessmentMonitor {
   std::vector<Vec3> start_;
   bool collapsed_ = false;
   int first_sign_ = 0;
+  double free_mass_ = 0;
+  std::vector<std::uint8_t> dislodged_;  // by block index
   bool reversed_ = false;
   Assessment result_;
 };

@@ -55,3 +55,62 @@ TEST(Assessment, MonitorIsTheHighestAlongZUnderOrdinaryGravity) {
 
 }  // namespace
 }  // namespace polydem
+
+namespace polydem {
+namespace {
+
+// A small stone sliding off a large free block and falling: dislodged
+// (count, mass, where), and a collapse only when the criterion counts one
+// stone as enough (collapse_mass_fraction = 0, the default).
+constexpr const char* kFallingStone = R"(
+[simulation]
+end_time = 0.6
+
+[joint]
+normal_stiffness = 1e9
+friction_angle = 10.0
+
+[[block]]
+name = "ground"
+shape = "box"
+size = [8.0, 8.0, 0.5]
+center = [0.0, 0.0, -0.25]
+motion = "fixed"
+
+[[block]]
+name = "pier"
+shape = "box"
+size = [1.0, 1.0, 2.0]
+center = [0.0, 0.0, 1.0]
+
+[[block]]
+name = "stone"
+shape = "box"
+size = [0.2, 0.2, 0.2]
+center = [0.35, 0.0, 2.1]
+velocity = [3.0, 0.0, 0.0]
+)";
+
+TEST(Assessment, AStoneFallingOffIsDislodgedAndCollapseByDefault) {
+  const RunReport r = run_scene(parse_deck(kFallingStone, "stone.toml"));
+  const Assessment& a = r.assessment;
+  ASSERT_EQ(a.dislodged_blocks.size(), 1u);
+  EXPECT_EQ(a.dislodged_blocks[0], "stone");
+  EXPECT_NEAR(a.dislodged_mass, 2600.0 * 0.008, 1e-9);
+  EXPECT_NEAR(a.dislodged_mass_fraction, 0.008 / 2.008, 1e-12);
+  EXPECT_GT(a.first_dislodged_time, 0.0);
+  EXPECT_NEAR(a.dislodged_low_z, 2.1, 1e-12);
+  EXPECT_EQ(a.status, "collapsed");
+}
+
+TEST(Assessment, AStoneFallingOffLeavesTheStructureDamagedUnderAMassCriterion) {
+  std::string text = kFallingStone;
+  text += "\n[assessment]\ncollapse_mass_fraction = 0.1\n";
+  const RunReport r = run_scene(parse_deck(text, "stone.toml"));
+  EXPECT_EQ(r.assessment.dislodged_blocks.size(), 1u);
+  EXPECT_EQ(r.assessment.status, "damaged");
+  EXPECT_EQ(r.assessment.collapse_time, -1.0);
+}
+
+}  // namespace
+}  // namespace polydem
