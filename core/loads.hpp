@@ -24,6 +24,8 @@
 #include "core/blocks.hpp"
 #include "core/ground_motion.hpp"
 
+#include <cmath>
+
 namespace polydem {
 
 // The ground acceleration felt as a body force at time t (m/s², world):
@@ -44,6 +46,35 @@ inline Vec3 external_force(const BlockProperties& props, int i, const Vec3& grav
                            const Vec3& ground_acceleration) {
   const double m = props.mass[i];
   return m * gravity + ground_inertial_force(m, ground_acceleration);
+}
+
+// Gravity at time t under a rise time T (simulation.gravity_rise_time): it
+// rises linearly from 0 at t = 0 to g at t = T and holds, so that the joints
+// load quasi-statically instead of being struck by the full weight (a sudden
+// load overshoots to twice the static deflection and, with no damping, the
+// joints unload every period: frictional blocks ratchet). Returns g itself
+// (the same bits) when T is 0 or t ≥ T. Under the rise the applied force
+// differs from the m·g of the ledger's potential by m·(g(t) − g): the time
+// step counts that difference as load work.
+inline Vec3 gravity_at(const Vec3& gravity, double rise_time, double t) {
+  if (!(t < rise_time)) return gravity;
+  return (t / rise_time) * gravity;
+}
+
+// Cundall's local (non-viscous) damping of a generalised force F on a body
+// moving at v, component by component: F − α·|F|·sign(v) (Cundall 1987; as
+// in UDEC, 3DEC and PFC). It removes a fraction α of the force's work in
+// every oscillation whatever its frequency, and vanishes at rest, so it
+// changes the way to equilibrium, never the equilibrium. Used only by the
+// static stage (run/equilibrium.hpp).
+inline Vec3 locally_damped(const Vec3& force, const Vec3& velocity, double alpha) {
+  Vec3 f = force;
+  for (int k = 0; k < 3; ++k) {
+    const double v = velocity[k];
+    if (v > 0) f[k] -= alpha * std::abs(force[k]);
+    else if (v < 0) f[k] += alpha * std::abs(force[k]);
+  }
+  return f;
 }
 
 // Work (J) of a force (N) on a point moving at `velocity` (m/s, the

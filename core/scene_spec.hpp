@@ -30,6 +30,21 @@ struct SimulationSpec {
   // settle_time (0 = never stop early). m/s.
   double settle_velocity = 0.0;
   double settle_time = 0.0;
+  // Gravity rises linearly from 0 over this time (s), then holds; 0 = applied
+  // in full at t = 0 (core/loads.hpp gravity_at).
+  double gravity_rise_time = 0.0;
+};
+
+// [equilibrium] : a static stage before the dynamic one, as 3DEC's
+// `model solve` (run/equilibrium.hpp): gravity only, Cundall's local damping
+// on every free block, stepped until the unbalanced-force ratio is below
+// `ratio`. The dynamic stage then starts from that state at t = 0, at rest.
+struct EquilibriumSpec {
+  bool enabled = false;         // true when the deck has the section (enabled = false switches it off)
+  double ratio = 1e-5;          // unbalanced-force ratio tolerance, > 0
+  long max_steps = 1000000;     // more without convergence is an error
+  double local_damping = 0.8;   // alpha, in (0, 1)
+  int deck_line = 0;
 };
 
 // [joint] : the Coulomb joint law of every contact (compression positive).
@@ -148,6 +163,10 @@ struct SceneSpec {
   OutputSpec output;
   AssessmentSpec assessment;
   std::vector<CheckSpec> checks;
+  EquilibriumSpec equilibrium;
+  // Warnings the deck reader found (a deck that is valid but probably not
+  // what was meant), each "FILE:LINE: key 'KEY': what" like the errors.
+  std::vector<std::string> warnings;
 };
 
 }  // namespace polydem

@@ -5,6 +5,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -69,8 +70,9 @@ void Simulation::start_half_step_back() {
   auto& st = blocks_.state;
   const auto& pr = blocks_.props;
   const Vec3 a_ground = ground_body_acceleration(motion_, 0.0);
+  const Vec3 gravity = gravity_at(sim_.gravity, sim_.gravity_rise_time, 0.0);
   for (int i : blocks_.free_blocks) {
-    const Vec3 force = external_force(pr, i, sim_.gravity, a_ground) + st.contact_force[i];
+    const Vec3 force = external_force(pr, i, gravity, a_ground) + st.contact_force[i];
     st.velocity[i] -= (0.5 * dt_ * pr.inv_mass[i]) * force;
     st.angular_momentum[i] -= 0.5 * dt_ * st.contact_torque[i];
     const Mat3& R = st.rotation[i];
@@ -150,16 +152,26 @@ void Simulation::gather_block_forces() {
   for (int i = 0; i < n; ++i) gather_block(i);
 }
 
-// Central differences for one free block (see the file's header).
-void Simulation::advance_block(int i, const Vec3& a_ground) {
+// Central differences for one free block (see the file's header). With
+// kLocalDamping (the static stage only) the force and the moment are first
+// reduced by Cundall's local damping against the velocities at t − dt/2;
+// without it the update is the plain one, at no cost.
+template <bool kLocalDamping>
+void Simulation::advance_block(int i, const StepLoads& loads) {
   auto& st = blocks_.state;
   const auto& pr = blocks_.props;
   const double dt = dt_;
   const double dv_dt = 0.5 * (dt_prev_ + dt_);  // span of the velocity update
-  const Vec3 force = external_force(pr, i, sim_.gravity, a_ground) + st.contact_force[i];
+  const Vec3& a_ground = loads.a_ground;
+  Vec3 force = external_force(pr, i, loads.gravity, a_ground) + st.contact_force[i];
+  Vec3 torque = st.contact_torque[i];
+  if constexpr (kLocalDamping) {
+    force = locally_damped(force, st.velocity[i], local_damping_);
+    torque = locally_damped(torque, st.angular_velocity[i], local_damping_);
+  }
   const Vec3 v_old = st.velocity[i];
   const Vec3 v_new = v_old + (dv_dt * pr.inv_mass[i]) * force;
-  const Vec3 L_new = st.angular_momentum[i] + dv_dt * st.contact_torque[i];
+  const Vec3 L_new = st.angular_momentum[i] + dv_dt * torque;
   const Vec3& inv_I = pr.inv_principal_inertia[i];
   // ω at the half step: predict the half-step orientation, then evaluate.
   const Mat3& R0 = st.rotation[i];
@@ -174,6 +186,9 @@ void Simulation::advance_block(int i, const Vec3& a_ground) {
   orientation_prev_[i] = st.orientation[i];
   // Gravity's work is the ledger's potential energy: only the ground's counts.
   load_work_[i] += load_work(dt, ground_inertial_force(pr.mass[i], a_ground), velocity_mid_[i]);
+  // Under a rising gravity the ledger's potential counts m·g: the rest of
+  // the applied weight, m·(g(t) − g), is a load.
+  if (loads.rising) load_work_[i] += load_work(dt, pr.mass[i] * (loads.gravity - sim_.gravity), velocity_mid_[i]);
 
   st.velocity[i] = v_new;
   st.angular_momentum[i] = L_new;
@@ -186,20 +201,69 @@ void Simulation::advance_block(int i, const Vec3& a_ground) {
 // Gather and update fused in one loop over the blocks: a block's update
 // needs only its own gathered force, so one barrier less per step.
 void Simulation::gather_and_advance() {
-  const Vec3 a_ground = ground_body_acceleration(motion_, time_);
+  StepLoads loads;
+  loads.a_ground = static_stage_ ? Vec3(Vec3::Zero()) : ground_body_acceleration(motion_, time_);
+  loads.gravity = static_stage_ ? sim_.gravity : gravity_at(sim_.gravity, sim_.gravity_rise_time, time_);
+  loads.rising = !static_stage_ && time_ < sim_.gravity_rise_time;
   const int n = blocks_.count;
   const auto& motion = blocks_.props.motion;
+  if (local_damping_ > 0) {
+#pragma omp for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      gather_block(i);
+      if (motion[i] == BlockMotion::free) advance_block<true>(i, loads);
+    }
+    return;
+  }
 #pragma omp for schedule(static)
   for (int i = 0; i < n; ++i) {
     gather_block(i);
-    if (motion[i] == BlockMotion::free) advance_block(i, a_ground);
+    if (motion[i] == BlockMotion::free) advance_block<false>(i, loads);
   }
+}
+
+void Simulation::begin_static_stage(double local_damping) {
+  static_stage_ = true;
+  local_damping_ = local_damping;
+}
+
+void Simulation::end_static_stage() {
+  static_stage_ = false;
+  local_damping_ = 0;
+  auto& st = blocks_.state;
+  for (int i : blocks_.free_blocks) {
+    st.velocity[i].setZero();
+    st.angular_momentum[i].setZero();
+    st.angular_velocity[i].setZero();
+  }
+  for (int i = 0; i < blocks_.count; ++i) {
+    velocity_mid_[i] = st.velocity[i];
+    omega_mid_[i] = st.angular_velocity[i];
+  }
+  position_prev_ = st.position;
+  orientation_prev_ = st.orientation;
+  blocks_.initial_position = st.position;
+  blocks_.initial_orientation = st.orientation;
+  time_ = 0;
+  steps_ = 0;
+  dt_prev_ = dt_;
+  load_work_.assign(load_work_.size(), 0.0);
+  contacts_.retired_slip_energy = contacts_.retired_damping_energy = 0;
+  std::fill(contacts_.sub.slip_energy.begin(), contacts_.sub.slip_energy.end(), 0.0);
+  std::fill(contacts_.sub.damping_energy.begin(), contacts_.sub.damping_energy.end(), 0.0);
+  energy_reference_ = mechanical0_ = 0;
+  energy_started_ = false;
+  last_good_ = st;
+  last_good_time_ = 0;
+  last_good_step_ = 0;
+  profile_ = StepProfile{};
 }
 
 void Simulation::move_kinematic_blocks() {
   if (blocks_.kinematic_blocks.empty()) return;
   auto& st = blocks_.state;
-  const bool moving = motion_.active() && motion_.applied_as == GroundMotionApplication::kinematic;
+  const bool moving =
+      !static_stage_ && motion_.active() && motion_.applied_as == GroundMotionApplication::kinematic;
   const Vec3 v_next = moving ? Vec3(motion_.velocity_at(time_ + 0.5 * dt_) * motion_.direction) : Vec3::Zero();
   for (int i : blocks_.kinematic_blocks) {
     const Vec3 v_old = st.velocity[i];

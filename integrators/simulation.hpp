@@ -126,6 +126,20 @@ class Simulation {
   void save_state(ByteWriter& w) const;
   void load_state(ByteReader& r);
 
+  // The static stage (run/equilibrium.hpp), as 3DEC's `model solve`. Between
+  // begin and end the step applies gravity in full (no rise time) and no
+  // ground motion (no body force, kinematic blocks stay), and reduces each
+  // free block's force and moment by Cundall's local damping α
+  // (core/loads.hpp locally_damped). The joints keep their law, damping
+  // included. end_static_stage() starts the dynamic stage from the state
+  // reached: time and step count 0, every block at rest, the blocks'
+  // initial positions and orientations (what displacements, rotations and
+  // the ledger's potential are measured from) set to it, the ledger's load
+  // work and dissipation, the guard and the profile started afresh. The
+  // joints keep their forces and shear history: they carry the weight.
+  void begin_static_stage(double local_damping);
+  void end_static_stage();
+
  private:
   DetectionTimes detect_contacts();
   void start_half_step_back();
@@ -133,7 +147,14 @@ class Simulation {
   void gather_block_forces();
   void gather_and_advance();
   void gather_block(int i);
-  void advance_block(int i, const Vec3& a_ground);
+  // The loads of this step, the same for every block.
+  struct StepLoads {
+    Vec3 gravity;       // g(t) (core/loads.hpp gravity_at)
+    Vec3 a_ground;      // the ground's body acceleration
+    bool rising;        // g(t) ≠ g: count m·(g(t) − g) as load work
+  };
+  template <bool kLocalDamping>
+  void advance_block(int i, const StepLoads& loads);
   void move_kinematic_blocks();
   void check_health();
 
@@ -165,6 +186,10 @@ class Simulation {
   long last_good_step_ = 0;
   std::vector<double> load_work_;
   StepProfile profile_;
+  // The static stage (begin_static_stage): not checkpointed, a checkpoint is
+  // never taken during it.
+  bool static_stage_ = false;
+  double local_damping_ = 0;
 };
 
 }  // namespace polydem

@@ -40,7 +40,7 @@ using namespace deck_reader;
 
 constexpr std::string_view kSimulationKeys[] = {
     "end_time",          "time_step",       "safety_factor", "gravity",    "contact_margin", "threads",
-    "overlap_tolerance", "settle_velocity", "settle_time"};
+    "overlap_tolerance", "settle_velocity", "settle_time",   "gravity_rise_time"};
 constexpr std::string_view kJointKeys[] = {"normal_stiffness", "shear_stiffness",  "friction_angle",
                                            "cohesion",         "tensile_strength", "damping"};
 constexpr std::string_view kBlockKeys[] = {"name",     "shape",    "size",   "center",   "polygon",
@@ -56,6 +56,7 @@ constexpr std::string_view kOutputKeys[] = {"history_interval",  "histories",   
 constexpr std::string_view kAssessmentKeys[] = {"damage_displacement", "collapse_displacement", "stop_on_collapse",
                                                 "monitor_block", "collapse_mass_fraction"};
 constexpr std::string_view kCheckKeys[] = {"kind", "block", "expected", "tolerance"};
+constexpr std::string_view kEquilibriumKeys[] = {"enabled", "ratio", "max_steps", "local_damping"};
 
 struct SectionSchema {
   std::string_view name;
@@ -66,7 +67,7 @@ constexpr SectionSchema kSections[] = {
     {"simulation", false, kSimulationKeys}, {"joint", false, kJointKeys},
     {"block", true, kBlockKeys},            {"ground_motion", false, kGroundMotionKeys},
     {"output", false, kOutputKeys},         {"check", true, kCheckKeys},
-    {"assessment", false, kAssessmentKeys},
+    {"assessment", false, kAssessmentKeys}, {"equilibrium", false, kEquilibriumKeys},
 };
 
 // Keys that define a block's shape, by shape.
@@ -100,6 +101,7 @@ SimulationSpec read_simulation(const Deck& deck) {
   s.overlap_tolerance = r.number("overlap_tolerance", s.overlap_tolerance, Range::non_negative);
   s.settle_velocity = r.number("settle_velocity", s.settle_velocity, Range::non_negative);
   s.settle_time = r.number("settle_time", s.settle_time, Range::non_negative);
+  s.gravity_rise_time = r.number("gravity_rise_time", s.gravity_rise_time, Range::non_negative);
   return s;
 }
 
@@ -410,6 +412,58 @@ std::vector<CheckSpec> read_checks(const Deck& deck, const std::vector<BlockSpec
   return checks;
 }
 
+EquilibriumSpec read_equilibrium(const Deck& deck, const SimulationSpec& sim) {
+  EquilibriumSpec e;
+  if (!deck.root().get("equilibrium")) return e;
+  const TableReader r(deck, table_or_empty(deck, "equilibrium"), "equilibrium", kEquilibriumKeys);
+  e.deck_line = r.line();
+  e.enabled = r.boolean("enabled").value_or(true);
+  e.ratio = r.number("ratio", e.ratio, Range::positive);
+  if (const auto n = r.integer("max_steps")) {
+    if (*n < 1 || *n > 1000000000) r.fail("max_steps", "must be in [1, 1e9] (got " + std::to_string(*n) + ")");
+    e.max_steps = static_cast<long>(*n);
+  }
+  e.local_damping = r.number("local_damping", e.local_damping, Range::positive);
+  if (e.local_damping >= 1.0)
+    r.fail("local_damping", "must be in (0, 1) (got " + format_number(e.local_damping) + ")");
+  if (e.enabled && sim.gravity_rise_time > 0)
+    r.fail("enabled", "the static stage and simulation.gravity_rise_time both bring gravity on gently: give one "
+                      "(the dynamic stage after the static one starts under the full weight)");
+  return e;
+}
+
+// "FILE:LINE: key 'KEY': what", the form of the errors (built by appends:
+// GCC 12 warns falsely on long chains of string +).
+std::string deck_warning(const Deck& deck, const std::string& key, const toml::node* at, const std::string& what) {
+  std::ostringstream w;
+  w << deck.file();
+  const long line = at ? static_cast<long>(at->source().begin.line) : 0;
+  if (line > 0 && !(at->source().path && *at->source().path == kOverrideSource)) w << ":" << line;
+  w << ": key '" << key << "': " << what;
+  return w.str();
+}
+
+// A deck that is valid but probably not what was meant.
+std::vector<std::string> deck_warnings(const Deck& deck, const SceneSpec& s) {
+  std::vector<std::string> warnings;
+  const bool free_block = std::any_of(s.blocks.begin(), s.blocks.end(),
+                                      [](const BlockSpec& b) { return b.motion == BlockMotion::free; });
+  // Sudden gravity on undamped frictional joints: every joint is struck by
+  // twice its static load and unloads to zero every period; blocks on a
+  // slope ratchet (docs/equilibrium.md).
+  if (free_block && s.simulation.gravity.norm() > 0 && s.simulation.gravity_rise_time == 0 &&
+      !s.equilibrium.enabled && s.joint.damping == 0 && s.joint.friction_angle > 0) {
+    const toml::node* joint = deck.root().get("joint");
+    const toml::node* at = joint && joint->as_table() ? joint->as_table()->get("damping") : nullptr;
+    warnings.push_back(deck_warning(
+        deck, "joint.damping", at ? at : joint,
+        "gravity is applied in full at t = 0 to frictional joints with no damping: the joints unload every "
+        "period and blocks can ratchet down a slope; bring the scene to equilibrium first ([equilibrium]) or "
+        "let gravity rise (simulation.gravity_rise_time)"));
+  }
+  return warnings;
+}
+
 void check_sections(const Deck& deck) {
   std::vector<std::string_view> names;
   for (const auto& s : kSections) names.push_back(s.name);
@@ -566,6 +620,8 @@ SceneSpec parse_deck(const std::string& text, const std::string& path_for_messag
   scene.output = read_output(deck, scene.blocks);
   scene.assessment = read_assessment(deck, scene.blocks);
   scene.checks = read_checks(deck, scene.blocks);
+  scene.equilibrium = read_equilibrium(deck, scene.simulation);
+  scene.warnings = deck_warnings(deck, scene);
   return scene;
 }
 

@@ -37,6 +37,7 @@ Json profile_json(const RunProfile& p) {
   Json j = Json::object();
   const double total = p.total > 0 ? p.total : 1.0;
   for (const auto& [name, seconds] : {std::pair<const char*, double>{"setup", p.setup},
+                                      {"equilibrium", p.equilibrium},
                                       {"detection", p.detection},
                                       {"patch", p.patch},
                                       {"joint_law", p.joint_law},
@@ -50,7 +51,7 @@ Json profile_json(const RunProfile& p) {
   }
   j.set("total_seconds", p.total);
   j.set("steps", p.steps);
-  j.set("microseconds_per_step", p.steps > 0 ? 1e6 * (p.total - p.setup) / p.steps : 0.0);
+  j.set("microseconds_per_step", p.steps > 0 ? 1e6 * (p.total - p.setup - p.equilibrium) / p.steps : 0.0);
   return j;
 }
 
@@ -64,6 +65,20 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
     s.set("last_good_time_s", r.last_good_time);
   }
   s.set("settled", r.settled);
+  Json warnings = Json::array();
+  for (const std::string& w : spec.warnings) warnings.push_back(Json(w));
+  s.set("warnings", std::move(warnings));
+  if (r.equilibrium.ran) {
+    Json e = Json::object();
+    e.set("steps", r.equilibrium.steps);
+    e.set("unbalanced_force_ratio", r.equilibrium.ratio);
+    e.set("ratio_tolerance", spec.equilibrium.ratio);
+    e.set("local_damping", spec.equilibrium.local_damping);
+    e.set("wall_seconds", r.equilibrium.wall_seconds);
+    e.set("max_displacement_m", r.equilibrium.max_displacement);
+    e.set("max_displacement_block", r.equilibrium.max_displacement_block);
+    s.set("equilibrium", std::move(e));
+  }
   const Assessment& a = r.assessment;
   Json as = Json::object();
   as.set("collapse_mode", a.collapse_mode);

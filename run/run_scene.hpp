@@ -5,6 +5,9 @@
 //   run_scene(spec):
 //     1. setup        blocks, margin, time step, ground motion, first
 //                     detection, overlap check               (run/setup.hpp)
+//        equilibrium  the static stage, when the deck has [equilibrium]
+//                     (run/equilibrium.hpp): the dynamic stage starts at
+//                     t = 0 from the equilibrium state, at rest
 //     2. monitors     the assessment, the deck's [[check]]s, the recorder
 //     3. the loop     step; observe; record, snapshot, checkpoint when due
 //                     (run/schedule.hpp); stop on collapse, on settling, or
@@ -21,6 +24,7 @@
 
 #include "run/assessment.hpp"
 #include "run/checks.hpp"
+#include "run/equilibrium.hpp"
 #include "run/recorder.hpp"
 #include "core/scene_spec.hpp"
 #include "integrators/simulation.hpp"
@@ -36,7 +40,7 @@ namespace polydem {
 // (histories, monitors, snapshots, checkpoints, progress). Seconds summed
 // over the run; `total` is the whole run including setup.
 struct RunProfile {
-  double setup = 0, detection = 0, patch = 0, joint_law = 0, gather_update = 0, guard = 0, output = 0, total = 0;
+  double setup = 0, equilibrium = 0, detection = 0, patch = 0, joint_law = 0, gather_update = 0, guard = 0, output = 0, total = 0;
   long steps = 0;
 };
 
@@ -71,6 +75,7 @@ struct RunReport {
   double checkpoint_wall_seconds = 0;
   int detections = 0;
   int blocks = 0, free_blocks = 0;
+  EquilibriumReport equilibrium;  // the static stage (ran = false without one)
   EnergyLedger energy;
   double energy_balance_error = 0;  // max |balance − balance(0)| / reference energy
   double energy_reference = 0;      // J

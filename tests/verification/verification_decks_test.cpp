@@ -31,7 +31,7 @@ TEST_P(VerificationDeck, ChecksPass) {
 INSTANTIATE_TEST_SUITE_P(Decks, VerificationDeck,
                          ::testing::Values("resting_block.toml", "slope_slide.toml", "slope_stick.toml",
                                            "rocking_onset.toml", "free_rocking.toml", "energy_conservation.toml",
-                                           "stack_of_ten.toml", "dry_stone_wall.toml",
+                                           "stack_of_ten.toml", "dry_stone_wall.toml", "slope_equilibrium.toml",
                                            "pulse_rocking_body_force.toml", "pulse_rocking_kinematic.toml"),
                          [](const auto& info) {
                            std::string n = info.param;

@@ -1,0 +1,58 @@
+#include "run/equilibrium.hpp"
+
+#include "run/scene_error.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <sstream>
+
+namespace polydem {
+
+double unbalanced_force_ratio(const Simulation& sim, const Vec3& gravity) {
+  const Blocks& b = sim.blocks();
+  if (b.free_blocks.empty() || !(gravity.norm() > 0)) return 0;
+  double worst = 0, applied = 0;
+  for (int i : b.free_blocks) {
+    const Vec3 f = b.props.mass[i] * gravity + b.state.contact_force[i];
+    const double r = b.props.radius[i] > 0 ? b.props.radius[i] : 1.0;
+    worst = std::max({worst, f.norm(), b.state.contact_torque[i].norm() / r});
+    applied += b.props.mass[i] * gravity.norm();
+  }
+  return worst / (applied / static_cast<double>(b.free_blocks.size()));
+}
+
+EquilibriumReport solve_equilibrium(const EquilibriumSpec& spec, const Vec3& gravity, Simulation& sim) {
+  const auto t0 = std::chrono::steady_clock::now();
+  EquilibriumReport rep;
+  rep.ran = true;
+  const Blocks& b = sim.blocks();
+  const std::vector<Vec3> start = b.state.position;
+  int worst_block = -1;
+  sim.begin_static_stage(spec.local_damping);
+  rep.ratio = unbalanced_force_ratio(sim, gravity);
+  while (rep.ratio > spec.ratio) {
+    if (rep.steps >= spec.max_steps) {
+      std::ostringstream m;
+      m << "the static stage did not reach equilibrium in " << spec.max_steps
+        << " steps (unbalanced-force ratio " << rep.ratio << ", tolerance equilibrium.ratio = " << spec.ratio
+        << "); raise equilibrium.max_steps, or the scene has no equilibrium (a block sliding or toppling)";
+      throw SceneError("equilibrium.max_steps", "", spec.deck_line, m.str());
+    }
+    sim.step();
+    ++rep.steps;
+    for (int i : b.free_blocks) {
+      const double d = (b.state.position[i] - start[i]).norm();
+      if (d > rep.max_displacement) {
+        rep.max_displacement = d;
+        worst_block = i;
+      }
+    }
+    rep.ratio = unbalanced_force_ratio(sim, gravity);
+  }
+  sim.end_static_stage();
+  if (worst_block >= 0) rep.max_displacement_block = b.props.name[worst_block];
+  rep.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return rep;
+}
+
+}  // namespace polydem
