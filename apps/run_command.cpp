@@ -53,6 +53,7 @@ int run_command(const RunOptions& o) {
     std::cerr << "polydem: error: " << e.what() << "\n";
     return exit_bad_input;
   }
+  for (const std::string& w : spec.warnings) std::cerr << "polydem: warning: " << w << "\n";
   // Checkpoints and restarts: the fingerprint ties a checkpoint to the deck
   // text, the overrides, the record's bytes and the polydem version.
   const std::string out_dir = o.restart_dir.empty() ? o.out_dir : o.restart_dir;
