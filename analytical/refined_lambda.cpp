@@ -226,7 +226,7 @@ RefinedLambdaResult refined_lambda(const SpireModel& model, double density, cons
       Mechanism best_plane;
       best_plane.family = family;
       best_plane.direction = dir;
-      double mass = 0.0, restoring = 0.0, overturning = 0.0;
+      double restoring = 0.0, overturning = 0.0;
       bool pivot = false;
       std::size_t best_end = 0;
       double best_lambda = std::numeric_limits<double>::infinity();
@@ -236,7 +236,6 @@ RefinedLambdaResult refined_lambda(const SpireModel& model, double density, cons
         const double bk = beta[order[k]];
         while (e < order.size() && std::fabs(beta[order[e]] - bk) <= 1e-12) {
           const std::size_t i = order[e];
-          mass += data[i].mass;
           restoring += data[i].mass * (f.p_d - f.d.dot(data[i].centroid));
           overturning += data[i].mass * (data[i].centroid.z() - f.z_p);
           pivot = pivot || f.pivot_block[i];
