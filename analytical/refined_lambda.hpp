@@ -13,10 +13,16 @@
 //     λ = Σ m_i (p_d − d·c_i) / Σ m_i (c_z,i − z_p)
 //
 // (restoring lever over height of each centroid c_i; p_d = d·pivot, z_p its
-// height). The smallest λ over the candidate mechanisms is an upper bound on
-// the true collapse multiplier within the assumptions of the paper (no
-// tension, no sliding, rigid stones); it is the value the paper calls the
-// refined analytical model (3.2: λ = 0.168).
+// height). The result is the smallest λ over the candidate mechanisms: the
+// value the paper calls the refined analytical model (3.2: λ = 0.168). It
+// is not proved to bound the collapse multiplier of the block model either
+// way: a part rotating rigidly about one base pivot leaves its neighbours
+// across inclined joints (mitres, the stepped crack's risers), where the
+// relative motion has a sliding component that the kinematic theorem's
+// no-sliding assumption excludes and Coulomb friction resists; and the
+// search tries only the families below. The DEM's threshold moves with the
+// friction angle while this value cannot (README, "Analytical models against
+// the DEM"): compare with the DEM, not as a bound.
 //
 // A mechanism is admissible only if it contains a pivot block (one touching
 // the pivot axis): a part that does not reach the pivot would rotate while
