@@ -16,9 +16,8 @@
 //    the joint's patch; its vertices within the margin become subcontacts
 //    with tributary areas from a fan about the polygon's centre. Vertices
 //    farther than the margin are dropped with their areas: the patch's area
-//    is the sum of the areas kept. A degenerate (line or point) polygon gives
-//    each point the area of one corner of the smaller face (its area over
-//    its corner count).
+//    is the sum of the areas kept. A polygon without area (faces touching
+//    along their boundary only) shares a nominal 1 % of the smaller face.
 // 4. Fallback: when the face test says the blocks overlap much more than MPR
 //    does (edge-to-edge contact, no face aligned), the MPR direction is the
 //    normal and a single subcontact carries it, with the area of one corner
