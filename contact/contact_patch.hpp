@@ -14,11 +14,15 @@
 //    common-plane normal) is clipped by the side planes of the reference face
 //    (Sutherland–Hodgman). The clipped polygon projected on the common plane is
 //    the joint's patch; its vertices within the margin become subcontacts
-//    with tributary areas from a fan about the polygon's centre, which add up
-//    to the patch area.
+//    with tributary areas from a fan about the polygon's centre. Vertices
+//    farther than the margin are dropped with their areas: the patch's area
+//    is the sum of the areas kept. A polygon without area (faces touching
+//    along their boundary only) shares a nominal 1 % of the smaller face.
 // 4. Fallback: when the face test says the blocks overlap much more than MPR
 //    does (edge-to-edge contact, no face aligned), the MPR direction is the
-//    normal and a single vertex–face subcontact with a nominal area carries it.
+//    normal and a single subcontact carries it, with the area of one corner
+//    of a face contact between the same blocks: corner_area_of_size of the
+//    smaller block's size. docs/contact.md gives the reasoning.
 #pragma once
 
 #include "contact/narrow_phase.hpp"
@@ -48,7 +52,7 @@ struct Patch {
   int ref_face = -1, inc_face = -1;
   Vec3 normal = Vec3::Zero();  // world, outward from the reference face
   double offset = 0;           // plane normal·x = offset, world
-  double area = 0;
+  double area = 0;  // sum of the points' areas (the part within the margin), m²
   std::vector<PatchPoint> points;
 };
 
@@ -59,6 +63,11 @@ struct PatchScratch {
   std::vector<Vec3> poly, next;
   std::vector<std::uint32_t> poly_id, next_id;
 };
+
+// The area a corner subcontact carries in a face contact between blocks of
+// size l (cube root of volume): a face l × l over its four corners, l²/4.
+// The nominal area of edge–edge contacts (docs/contact.md).
+double corner_area_of_size(double size);
 
 // Separation of the other block's world vertices from `self`'s face plane
 // (> 0 apart, < 0 overlapping).

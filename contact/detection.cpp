@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 
 namespace polydem {
 
@@ -52,19 +53,49 @@ ContactDetector::ContactDetector(const Blocks& blocks, double margin)
 
 ContactDetector::~ContactDetector() = default;
 
-bool ContactDetector::needs_detection(const Blocks& b) const {
+// A bound on how much any pair can have closed since the last detection
+// (see the header): each block's travel is measured from a common reference
+// c (the centre of the box of all translations), so that a pair's closure
+// |d_i − d_j| + turn_i + turn_j is at most R_i + R_j with
+// R_i = |d_i − c| + turn_i + (the step about to be taken, |v|·dt + |ω|·r·dt).
+// The two largest R decide. Two serial passes over the blocks; bitwise the
+// same on any thread count (max and min only).
+bool ContactDetector::needs_detection(const Blocks& b, double dt) const {
   const auto& im = *impl_;
-  double moved = 0;
   const int n = b.count;
-#pragma omp parallel for reduction(max : moved) schedule(static) if (n >= 2048)
+  const auto& motion = b.props.motion;
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  bool any_fixed = false;
   for (int i = 0; i < n; ++i) {
-    if (b.props.motion[i] == BlockMotion::fixed) continue;
+    if (motion[i] == BlockMotion::fixed) {
+      any_fixed = true;  // no translation
+      lo = lo.cwiseMin(Vec3::Zero());
+      hi = hi.cwiseMax(Vec3::Zero());
+      continue;
+    }
+    const Vec3 d = b.state.position[i] - im.detected_position[i];
+    lo = lo.cwiseMin(d);
+    hi = hi.cwiseMax(d);
+  }
+  if (n == 0) return false;
+  const Vec3 c = 0.5 * (lo + hi);
+  double r1 = any_fixed ? c.norm() : 0.0, r2 = 0;  // a fixed block's travel from c
+  for (int i = 0; i < n; ++i) {
+    if (motion[i] == BlockMotion::fixed) continue;
     const Quat dq = b.state.orientation[i] * im.detected_orientation[i].conjugate();
     // |vec(dq)| = sin(angle/2); 2·|vec| bounds the angle well for small turns.
     const double turn = 2.0 * dq.vec().norm() * b.props.radius[i];
-    moved = std::max(moved, (b.state.position[i] - im.detected_position[i]).norm() + turn);
+    const double ahead =
+        dt * (b.state.velocity[i].norm() + b.state.angular_velocity[i].norm() * b.props.radius[i]);
+    const double r = (b.state.position[i] - im.detected_position[i] - c).norm() + turn + ahead;
+    if (r > r1) {
+      r2 = r1;
+      r1 = r;
+    } else if (r > r2) {
+      r2 = r;
+    }
   }
-  return moved > 0.5 * margin_;
+  return r1 + r2 > 0.5 * margin_;
 }
 
 DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bool bond_new) {

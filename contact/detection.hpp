@@ -7,11 +7,15 @@
 //     4. subcontacts from the patches, history carried over    subcontacts.hpp
 //     5. per-block gather lists                                gather.hpp
 //
-// Detection runs only when some block has moved (translation plus rotation
-// times its radius) more than half the margin since the last one: until
-// then no pair can close a gap wider than the margin (the broad phase grows
-// every box by half the margin), and existing subcontacts follow their
-// blocks exactly. Steps 2 and 3 run in parallel, one slot per candidate;
+// Detection runs only when some pair of blocks may have closed by more than
+// half the margin since the last one (relative approach: the two largest
+// travels, translation measured from the blocks' common drift plus rotation
+// times the bounding radius plus the coming step at the current speed, add
+// up to half the margin). A pair farther apart than the margin at a
+// detection (the broad phase grows every box by half the margin, the narrow
+// phase looks a margin out) is thus still at least half the margin apart at
+// the next one: contacts between fast blocks are found before they touch,
+// and existing subcontacts follow their blocks exactly in between. Steps 2 and 3 run in parallel, one slot per candidate;
 // everything is assembled in candidate order (sorted by block pair), so the
 // result does not depend on the number of threads.
 #pragma once
@@ -40,8 +44,9 @@ class ContactDetector {
   ContactDetector& operator=(const ContactDetector&) = delete;
 
   double margin() const { return margin_; }
-  // True when some block moved more than half the margin since detect().
-  bool needs_detection(const Blocks& blocks) const;
+  // True when some pair may have closed by more than half the margin since
+  // detect(), counting the coming step of length dt at the current speeds.
+  bool needs_detection(const Blocks& blocks, double dt = 0) const;
   // Rebuilds `contacts` for the current state, carrying history over.
   // New subcontacts start bonded when `bond_new` is set (cohesion/tension at t = 0).
   // Returns the time spent in each stage.

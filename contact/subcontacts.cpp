@@ -195,7 +195,13 @@ void carry_history(const ContactSet& old, ContactSet& contacts, std::vector<char
       for (int o = op->first; o < op->first + op->count; ++o) {
         if (old.sub.key[o] != sc.key[s] || old_used[o]) continue;
         old_used[o] = 1;
-        sc.shear_force[s] = old.sub.shear_force[o];
+        // The shear history is the elastic shear displacement F_s/(ks·A): carry
+        // it, so the force scales with the new tributary area. Carrying the
+        // force onto a much smaller area (a patch clipped to a sliver) would
+        // store F_s²/(2·ks·A) of strain energy from nowhere, which the next
+        // step books as slip (the spire's collapse: 0.6 MJ at once).
+        const double a_old = old.sub.area[o];
+        sc.shear_force[s] = a_old > 0 ? Vec3(old.sub.shear_force[o] * (sc.area[s] / a_old)) : Vec3::Zero();
         sc.bonded[s] = old.sub.bonded[o];
         sc.slip_energy[s] = old.sub.slip_energy[o];
         sc.damping_energy[s] = old.sub.damping_energy[o];

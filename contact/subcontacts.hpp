@@ -106,7 +106,8 @@ void build_subcontacts(const Blocks& blocks, const std::vector<std::pair<int, in
 
 // History carry-over from one detection to the next. A subcontact of
 // `current` whose pair existed in `previous` and whose key matches a
-// subcontact of that pair not matched yet takes over its shear force, bond
+// subcontact of that pair not matched yet takes over its elastic shear
+// displacement (the shear force scaled by the ratio of the areas), bond
 // and cumulative slip and damping dissipation (the first match in
 // `previous` order). A subcontact of `previous` that matches none is gone:
 // its dissipation is retired, i.e. added (in `previous` order) to the

@@ -1,7 +1,7 @@
 // The time loop: one explicit central-difference step, stage by stage.
 //
 //   step():
-//     1. detect contacts, only if some block moved more than half the margin
+//     1. detect contacts, only if some pair may have closed half the margin
 //     2. joint law: one force slot per subcontact          (parallel)
 //     3. gather: each block sums its slots in fixed order   (parallel)
 //     4. central differences for free blocks                (parallel)
@@ -104,13 +104,16 @@ class Simulation {
   double largest_opening(int i) const;
 
   // The guard. Every 256 steps the state is checked: a non-finite value,
-  // a joint overlapping more than the penetration limit (the contact margin:
-  // beyond it the patch geometry no longer describes the joint), or a
-  // mechanical energy that has grown by more than energy_growth_limit of the
-  // energy in play beyond the work of the loads (energy appearing from
-  // nowhere: the step is too large) throws InstabilityError naming the cause,
-  // the step and the time. The state of the last passed check is kept.
+  // a joint overlapping more than the penetration limit (a fraction, 10 % by
+  // default, of the smaller block's size, and at least the contact margin:
+  // blocks passing through each other, not a hard impact, which sinks a
+  // joint by millimetres), or a mechanical energy that has grown by more
+  // than energy_growth_limit of the energy in play beyond the work of the
+  // loads (energy appearing from nowhere: the step is too large) throws
+  // InstabilityError naming the cause, the step and the time. The state of
+  // the last passed check is kept.
   void set_energy_growth_limit(double fraction) { energy_growth_limit_ = fraction; }
+  void set_penetration_limit(double fraction_of_size) { penetration_limit_ = fraction_of_size; }
   const BlockState& last_good_state() const { return last_good_; }
   double last_good_time() const { return last_good_time_; }
   long last_good_step() const { return last_good_step_; }
@@ -179,6 +182,7 @@ class Simulation {
   std::vector<Quat> orientation_prev_;
   // Guard.
   double energy_growth_limit_ = 0.1;
+  double penetration_limit_ = 0.1;  // of the smaller block's size
   double energy_reference_ = 0, mechanical0_ = 0;
   bool energy_started_ = false;
   BlockState last_good_;

@@ -167,10 +167,17 @@ TEST(FindPatch, CubeTiltedOnItsEdge) {
   EXPECT_NEAR(patch.area, L * L * std::cos(theta), kTol);
   EXPECT_NEAR(area_sum(patch), L * L * std::cos(theta), kTol);
 
-  // With a margin narrower than the lift, only the pivot corners remain.
+  // With a margin narrower than the lift, only the pivot corners remain,
+  // each with its own tributary area (a quarter of the footprint), and the
+  // patch's area is theirs: the areas still add up to it.
   ASSERT_TRUE(find_patch(p.a, p.b, 0.05, -1, -1, patch, scratch));
   ASSERT_EQ(patch.points.size(), 2u);
-  for (const PatchPoint& q : patch.points) EXPECT_NEAR(q.separation, 0.0, kTol);
+  for (const PatchPoint& q : patch.points) {
+    EXPECT_NEAR(q.separation, 0.0, kTol);
+    EXPECT_NEAR(q.area, 0.25 * L * L * std::cos(theta), kTol);
+  }
+  EXPECT_NEAR(patch.area, area_sum(patch), kTol);
+  EXPECT_NEAR(patch.area, 0.5 * L * L * std::cos(theta), kTol);
 }
 
 TEST(FindPatch, NoPatchBeyondTheMargin) {
@@ -246,8 +253,10 @@ TEST(FindPatch, EdgeOnEdgeFallbackGivesOneSubcontact) {
   EXPECT_NEAR(std::abs(patch.normal.z()), 1.0, 1e-6);
   // Separation: minus the ridges' overlap (MPR depth tolerance 1e-6·margin).
   EXPECT_NEAR(patch.points[0].separation, -c.overlap, 1e-6);
-  // Nominal area 1 % of the smaller block's size squared.
-  EXPECT_NEAR(patch.points[0].area, 1e-2, kTol);
+  // The area of one corner of a face contact between these blocks: the
+  // smaller block's size squared over four (docs/contact.md).
+  EXPECT_NEAR(patch.points[0].area, 0.25, kTol);
+  EXPECT_NEAR(patch.area, 0.25, kTol);
 }
 
 // Where the single fallback subcontact acts: at the ridges' crossing, the

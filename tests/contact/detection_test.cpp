@@ -155,6 +155,30 @@ TEST(ContactDetector, RedetectsOnlyAfterHalfTheMargin) {
   EXPECT_FALSE(det.needs_detection(b));
 }
 
+// Relative approach: two free blocks each moving 0.3·margin towards each
+// other close their gap by 0.6·margin, more than half the margin, though
+// neither moved half the margin: detection must run. The same motion of
+// both in the same direction closes nothing (a common drift does not
+// count); and the coming step at the current speed counts.
+TEST(ContactDetector, RedetectsOnTheRelativeApproachOfTwoBlocks) {
+  Blocks b = build_blocks({block_spec("left", make_box(Vec3(1, 1, 1), Vec3(-0.51, 0, 0.5)), BlockMotion::free),
+                           block_spec("right", make_box(Vec3(1, 1, 1), Vec3(0.51, 0, 0.5)), BlockMotion::free)});
+  ContactDetector det(b, kMargin);
+  ContactSet cs;
+  det.detect(b, cs, false);
+  translate(b, 0, Vec3(0.3 * kMargin, 0, 0));
+  translate(b, 1, Vec3(-0.3 * kMargin, 0, 0));
+  EXPECT_TRUE(det.needs_detection(b));
+  det.detect(b, cs, false);
+  translate(b, 0, Vec3(0.6 * kMargin, 0, 0));
+  translate(b, 1, Vec3(0.6 * kMargin, 0, 0));
+  EXPECT_FALSE(det.needs_detection(b));
+  det.detect(b, cs, false);
+  b.state.velocity[0] = Vec3(1.0, 0, 0);
+  EXPECT_FALSE(det.needs_detection(b, 0.4 * kMargin));  // the step moves it 0.4·margin
+  EXPECT_TRUE(det.needs_detection(b, 0.6 * kMargin));
+}
+
 TEST(ContactDetector, NeverPairsTwoBlocksThatCannotMove) {
   Blocks b = build_blocks({block_spec("fixed", make_box(Vec3(1, 1, 1), Vec3(0, 0, -0.5)), BlockMotion::fixed),
                            block_spec("moving", make_box(Vec3(1, 1, 1), Vec3(0, 0, 0.5)), BlockMotion::kinematic)});

@@ -21,6 +21,7 @@ ContactSet one_pair(int a, int b, const std::vector<std::uint64_t>& keys) {
   cs.sub.resize(keys.size());
   for (std::size_t s = 0; s < keys.size(); ++s) {
     cs.sub.key[s] = keys[s];
+    cs.sub.area[s] = 0.25;
     cs.sub.shear_force[s] = Vec3::Zero();
     cs.sub.bonded[s] = 0;
     cs.sub.slip_energy[s] = 0;
@@ -51,6 +52,12 @@ TEST(CarryHistory, MatchedSubcontactsKeepTheirHistoryAndTheRestRetire) {
   EXPECT_EQ(current.sub.damping_energy[0], 1.0);
   // Key 33 is new.
   EXPECT_EQ(current.sub.shear_force[1], Vec3::Zero());
+  // The shear displacement carries over: on half the area, half the force
+  // (the patch changed shape), not the whole force on a smaller spring.
+  ContactSet smaller = one_pair(0, 1, {22});
+  smaller.sub.area[0] = 0.125;
+  carry_history(previous, smaller, matched);
+  EXPECT_EQ(smaller.sub.shear_force[0], Vec3(2, 2.5, 3));
   EXPECT_EQ(current.sub.slip_energy[1], 0.0);
   // Key 11 is gone: its dissipation is retired.
   EXPECT_EQ(current.retired_slip_energy, 10.5);
