@@ -2,6 +2,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/json.hpp"
+#include "io/summary.hpp"
 
 #include <cmath>
 
@@ -12,14 +13,8 @@ namespace {
 Json crack_json(const Assessment& a) {
   Json j = Json::object();
   j.set("collapse_mode", a.collapse_mode);
-  j.set("moved_blocks", static_cast<int>(a.moved_blocks.size()));
-  j.set("opened_joints", a.opened_joints);
-  j.set("crack_angle_deg", a.crack_angle_deg >= 0 ? Json(a.crack_angle_deg) : Json());
-  j.set("crack_lowest_z_m", a.crack_angle_deg >= 0 ? Json(a.crack_low_z) : Json());
-  j.set("crack_highest_z_m", a.crack_angle_deg >= 0 ? Json(a.crack_high_z) : Json());
-  Json names = Json::array();
-  for (const auto& n : a.moved_blocks) names.push_back(n);
-  j.set("moved_block_names", std::move(names));
+  set_crack(j, a);
+  j.set("moved_block_names", Json(a.moved_blocks));
   return j;
 }
 

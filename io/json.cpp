@@ -71,6 +71,11 @@ Json::Json(const std::vector<double>& xs) : type_(Type::Array) {
   for (double x : xs) items_.emplace_back(x);
 }
 
+Json::Json(const std::vector<std::string>& xs) : type_(Type::Array) {
+  items_.reserve(xs.size());
+  for (const std::string& x : xs) items_.emplace_back(x);
+}
+
 Json Json::object() {
   Json j;
   j.type_ = Type::Object;

@@ -39,7 +39,8 @@ class Json {
   Json(T i) : type_(Type::Integer), integer_(static_cast<std::int64_t>(i)) {}
   Json(const char* s) : type_(Type::String), string_(s) {}
   Json(std::string s) : type_(Type::String), string_(std::move(s)) {}
-  Json(const std::vector<double>& xs);  // array of numbers
+  Json(const std::vector<double>& xs);        // array of numbers
+  Json(const std::vector<std::string>& xs);   // array of strings
 
   static Json object();
   static Json array();

@@ -7,11 +7,12 @@
 
 namespace polydem {
 
-SnapshotWriter::SnapshotWriter(std::string dir, bool joints) : dir_(std::move(dir)), joints_(joints) {
-  std::filesystem::create_directories(dir_);
-}
+// The folder is made at the first snapshot, not here: a run rejected at
+// setup (overlapping blocks, a step above the critical one) leaves nothing.
+SnapshotWriter::SnapshotWriter(std::string dir, bool joints) : dir_(std::move(dir)), joints_(joints) {}
 
 void SnapshotWriter::write(const Simulation& sim, double time) {
+  std::filesystem::create_directories(dir_);  // one stat when it exists; snapshots are rare
   const Blocks& b = sim.blocks();
   std::vector<Polyhedron> shapes;
   std::vector<int> id, course;

@@ -33,6 +33,14 @@ void write_table(ResultsFile& f, const std::string& group, const HistoryTable& t
 
 }  // namespace
 
+void set_crack(Json& j, const Assessment& a) {
+  j.set("moved_blocks", static_cast<int>(a.moved_blocks.size()));
+  j.set("opened_joints", a.opened_joints);
+  j.set("crack_angle_deg", a.crack_angle_deg >= 0 ? Json(a.crack_angle_deg) : Json());
+  j.set("crack_lowest_z_m", a.crack_angle_deg >= 0 ? Json(a.crack_low_z) : Json());
+  j.set("crack_highest_z_m", a.crack_angle_deg >= 0 ? Json(a.crack_high_z) : Json());
+}
+
 Json profile_json(const RunProfile& p) {
   Json j = Json::object();
   const double total = p.total > 0 ? p.total : 1.0;
@@ -65,9 +73,7 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
     s.set("last_good_time_s", r.last_good_time);
   }
   s.set("settled", r.settled);
-  Json warnings = Json::array();
-  for (const std::string& w : spec.warnings) warnings.push_back(Json(w));
-  s.set("warnings", std::move(warnings));
+  s.set("warnings", Json(spec.warnings));
   if (r.equilibrium.ran) {
     Json e = Json::object();
     e.set("steps", r.equilibrium.steps);
@@ -92,11 +98,7 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   as.set("max_residual_displacement_m", a.max_residual_displacement);
   as.set("monitor_block", a.monitor_block);
   as.set("monitor_peak_displacement_m", a.monitor_peak_displacement);
-  as.set("moved_blocks", static_cast<int>(a.moved_blocks.size()));
-  as.set("opened_joints", a.opened_joints);
-  as.set("crack_angle_deg", a.crack_angle_deg >= 0 ? Json(a.crack_angle_deg) : Json());
-  as.set("crack_lowest_z_m", a.crack_angle_deg >= 0 ? Json(a.crack_low_z) : Json());
-  as.set("crack_highest_z_m", a.crack_angle_deg >= 0 ? Json(a.crack_high_z) : Json());
+  set_crack(as, a);
   Json dis = Json::object();
   dis.set("count", static_cast<int>(a.dislodged_blocks.size()));
   dis.set("mass_kg", a.dislodged_mass);
@@ -104,9 +106,7 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   dis.set("first_time_s", a.first_dislodged_time >= 0 ? Json(a.first_dislodged_time) : Json());
   dis.set("lowest_z_m", a.dislodged_blocks.empty() ? Json() : Json(a.dislodged_low_z));
   dis.set("highest_z_m", a.dislodged_blocks.empty() ? Json() : Json(a.dislodged_high_z));
-  Json names = Json::array();
-  for (const auto& n : a.dislodged_blocks) names.push_back(n);
-  dis.set("blocks", std::move(names));
+  dis.set("blocks", Json(a.dislodged_blocks));
   as.set("dislodged", std::move(dis));
   s.set("assessment", std::move(as));
   if (!r.walking.bed_joint.empty() || !r.walking.vertical_joint.empty()) {

@@ -13,6 +13,10 @@ namespace polydem {
 
 // The summary of a run of `spec` on `threads` OpenMP threads.
 Json summary_json(const SceneSpec& spec, const RunReport& report, int threads);
+// The crack of an assessment into `j`: moved_blocks, opened_joints,
+// crack_angle_deg, crack_lowest_z_m, crack_highest_z_m (null without a crack);
+// shared by summary.json and collapse.json.
+void set_crack(Json& j, const Assessment& a);
 // The run's profile: seconds per stage of the step and of the run's output,
 // each with its share of the total.
 Json profile_json(const RunProfile& profile);

@@ -195,6 +195,16 @@ TEST_F(RunCommandTest, OverlappingBlocksAreRejected) {
   expect_nothing_written();
 }
 
+// With snapshots asked for, a deck rejected at setup leaves no vtk/ folder
+// either (the writer makes it at its first snapshot).
+TEST_F(RunCommandTest, OverlappingBlocksWithSnapshotsLeaveNothing) {
+  std::string deck = replace_once(kDeck, "center = [0.0, 0.0, 0.5]", "center = [0.0, 0.0, 0.4]");
+  deck += "\n[output]\nsnapshot_interval = 0.001\n";
+  EXPECT_EQ(run(deck), exit_bad_input);
+  EXPECT_NE(err_.find("overlaps"), std::string::npos) << err_;
+  expect_nothing_written();
+}
+
 TEST_F(RunCommandTest, TimeStepAboveTheCriticalStepIsRejected) {
   const std::string deck = replace_once(kDeck, "end_time = 0.002\n", "end_time = 0.002\ntime_step = 1e-3\n");
   EXPECT_EQ(run(deck), exit_bad_input);
