@@ -1,5 +1,6 @@
 #include "run/equilibrium.hpp"
 
+#include "core/loads.hpp"
 #include "run/scene_error.hpp"
 
 #include <algorithm>
@@ -13,7 +14,8 @@ double unbalanced_force_ratio(const Simulation& sim, const Vec3& gravity) {
   if (b.free_blocks.empty() || !(gravity.norm() > 0)) return 0;
   double worst = 0, applied = 0;
   for (int i : b.free_blocks) {
-    const Vec3 f = b.props.mass[i] * gravity + b.state.contact_force[i];
+    // The static stage's loads: gravity alone (no ground motion).
+    const Vec3 f = external_force(b.props, i, gravity, Vec3::Zero()) + b.state.contact_force[i];
     const double r = b.props.radius[i] > 0 ? b.props.radius[i] : 1.0;
     worst = std::max({worst, f.norm(), b.state.contact_torque[i].norm() / r});
     applied += b.props.mass[i] * gravity.norm();
