@@ -191,11 +191,12 @@ int sweep_command(const SweepOptions& o) {
   write_file_atomic(setup.out_dir + "/sweep.json", s.dump(2) + "\n");
 
   if (searching) {
-    std::cout << fmt::format("{:<40} {:>12} {:>12} {:>5} {:>5}  transitions ({})\n", "column", "damage", "collapse",
-                             "mode", "runs", search.key);
+    std::cout << fmt::format("{:<40} {:>12} {:>12} {:>12} {:>5} {:>5}  transitions ({})\n", "column", "damage",
+                             "stones lost", "collapse", "mode", "runs", search.key);
     for (const ColumnResult& c : report.columns)
-      std::cout << fmt::format("{:<40} {:>12} {:>12} {:>5} {:>5}  {}\n", c.outer.label(),
+      std::cout << fmt::format("{:<40} {:>12} {:>12} {:>12} {:>5} {:>5}  {}\n", c.outer.label(),
                                std::isnan(c.damage_threshold) ? "-" : value_text(c.damage_threshold),
+                               std::isnan(c.stones_threshold) ? "-" : value_text(c.stones_threshold),
                                std::isnan(c.collapse_threshold) ? "-" : value_text(c.collapse_threshold),
                                c.collapse_mode, c.runs.size(), transitions_text(c.transitions));
     std::cout << fmt::format("{} runs ({} finished before) against {} for the full grid at the same resolution "

@@ -123,7 +123,9 @@ struct OutputSpec {
 
 // [assessment] : how a run is judged. A free block whose centroid ends more
 // than damage_displacement from where it started is visible damage; one that
-// moves more than collapse_displacement at any time means collapse. The
+// moves more than collapse_displacement at any time is dislodged, and the
+// structure has collapsed when the dislodged blocks make up
+// collapse_mass_fraction of the free blocks' mass (run/assessment.hpp). The
 // monitor block (default: the highest free block, the spire's tip) gives the
 // collapse mode: Mode I if its horizontal displacement along the ground
 // motion changed sign before collapse (it rocked back and impacted), Mode II
@@ -133,7 +135,9 @@ struct AssessmentSpec {
   double collapse_displacement = 0.1;  // m
   // Collapse when the free blocks moved beyond collapse_displacement make up
   // at least this fraction of the free blocks' mass; 0: the first one does.
-  double collapse_mass_fraction = 0.0;
+  // 0.1: a tenth of the structure (the spire's solid tip is 11 % of it) has
+  // come away, not one stone falling out of a standing structure.
+  double collapse_mass_fraction = 0.1;
   bool stop_on_collapse = false;
   std::string monitor_block;           // empty: the highest free block against gravity
   int deck_line = 0;

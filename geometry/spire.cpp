@@ -323,6 +323,12 @@ void validate_spire(const SpireSpec& s) {
               " stones (at most 5000)");
   require(std::isfinite(s.base_thickness) && s.base_thickness >= 0, "base_thickness",
           "must be >= 0 and finite (0 = no base block) (got " + num(s.base_thickness) + ")");
+  require(std::isfinite(s.base_apothem) && (s.base_apothem == 0 || s.base_apothem >= outer_apothem_at_base(s)),
+          "base_apothem",
+          "must be 0 (the shell's outline) or at least the shell's outer apothem at z = 0, " +
+              num(outer_apothem_at_base(s)) + " m (got " + num(s.base_apothem) + ")");
+  require(s.base_apothem <= 1000.0 * s.height, "base_apothem",
+          "must be at most 1000·height (got " + num(s.base_apothem) + ")");
 
   std::vector<int> seen;
   for (int f : s.window_faces) {
@@ -368,7 +374,7 @@ SpireModel build_spire(const SpireSpec& s) {
   const double A = outer_apothem_at_base(s);
   if (s.base_thickness > 0) {
     std::vector<Vec2> octagon;
-    const double R = A / std::cos(kPi / 8.0);
+    const double R = (s.base_apothem > 0 ? s.base_apothem : A) / std::cos(kPi / 8.0);
     for (int k = 0; k < 8; ++k) {
       const double phi = k * kPi / 4.0 + kPi / 8.0;
       octagon.emplace_back(R * std::cos(phi), R * std::sin(phi));

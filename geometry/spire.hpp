@@ -83,6 +83,10 @@ struct SpireSpec {
   WindowHead window_head_shape = WindowHead::pointed;  // pointed: equilateral arch, rise = width·√3/2
   int window_arch_segments = 1;      // straight segments per arc of a pointed head = voussoirs per arc
   double base_thickness = 0.3;       // the base block under course 0; 0 = no base block
+  // Outer apothem of the base block's octagon; 0 = the shell's outer outline
+  // at z = 0. A wider base is a platform (the top of the tower) on which
+  // stones that fall off the spire land instead of falling for ever.
+  double base_apothem = 0;
 };
 
 // An invalid SpireSpec. `field` is the SpireSpec member (= the deck key of

@@ -16,7 +16,7 @@ constexpr std::string_view kSpireKeys[] = {
     "height",           "base_inradius",         "wall_thickness",      "wall_thickness_top",
     "course_height",    "tip_height",            "stones_per_face",     "joint_pattern",
     "window_faces",     "window_sill",           "window_width",        "window_head",
-    "window_head_shape", "window_arch_segments", "base_thickness",      "base_motion",
+    "window_head_shape", "window_arch_segments", "base_thickness",      "base_apothem",        "base_motion",
     "density",          "stone_youngs_modulus",  "mortar_youngs_modulus", "mortar_thickness",
     "shear_stiffness_ratio"};
 
@@ -78,6 +78,9 @@ std::optional<SpireSection> read_spire(const Deck& deck) {
     s.window_arch_segments = static_cast<int>(*n);
   }
   s.base_thickness = r.number("base_thickness", s.base_thickness, Range::non_negative);
+  s.base_apothem = r.number("base_apothem", s.base_apothem, Range::non_negative);
+  if (r.has("base_apothem") && s.base_thickness == 0)
+    r.fail("base_apothem", "there is no base block (base_thickness = 0)");
   out.base_motion = r.choice<BlockMotion>("base_motion",
                                           {{"fixed", BlockMotion::fixed}, {"kinematic", BlockMotion::kinematic}},
                                           out.base_motion);

@@ -194,6 +194,7 @@ PointResult point_result_from_summary(const std::string& text, const std::string
     r.max_displacement = number_or(a->find("max_displacement_m"), 0);
     r.residual_displacement = number_or(a->find("max_residual_displacement_m"), 0);
     r.collapse_time = number_or(a->find("collapse_time_s"), -1);
+    if (const Json* d = a->find("dislodged")) r.dislodged = static_cast<int>(number_or(d->find("count"), 0));
   }
   r.wall_seconds = number_or(s.find("wall_seconds"), 0);
   r.steps = static_cast<long>(number_or(s.find("steps"), 0));

@@ -55,7 +55,7 @@ void write_sweep_tables(const std::string& out_dir, const SweepTables& t) {
   std::string csv;
   for (const auto& key : t.keys) csv += key + ",";
   csv += "status,collapse_mode,peak_tip_displacement_m,max_displacement_m,residual_displacement_m,collapse_time_s,"
-         "run_wall_seconds,steps,exit_code,point\n";
+         "run_wall_seconds,steps,exit_code,point,dislodged_blocks\n";
   for (const SweepRow* r : rows) {
     for (const auto& key : t.keys) csv += cell(value_of(r->point, key)) + ",";
     const PointResult& p = r->result;
@@ -63,6 +63,8 @@ void write_sweep_tables(const std::string& out_dir, const SweepTables& t) {
                        cell(p.max_displacement), cell(p.residual_displacement),
                        cell(none(p.collapse_time, p.collapse_time >= 0)), cell(p.wall_seconds), p.steps, p.exit_code,
                        r->id);
+    csv.pop_back();
+    csv += fmt::format(",{}\n", p.dislodged);
   }
   write_file_atomic(out_dir + "/sweep.csv", csv);
 
@@ -103,11 +105,12 @@ void write_sweep_tables(const std::string& out_dir, const SweepTables& t) {
     std::vector<std::string> outer_keys(t.keys.begin(), t.keys.end() - 1);
     std::string b;
     for (const auto& k : outer_keys) b += k + ",";
-    b += fmt::format("damage_{0},collapse_{0},collapse_mode,transitions,runs,run_wall_seconds\n", key);
+    b += fmt::format("damage_{0},collapse_{0},collapse_mode,transitions,runs,run_wall_seconds,stones_lost_{0}\n", key);
     for (const ColumnResult& c : s.columns) {
       for (const auto& k : outer_keys) b += cell(value_of(c.outer, k)) + ",";
-      b += fmt::format("{},{},{},{},{},{}\n", cell(c.damage_threshold), cell(c.collapse_threshold), c.collapse_mode,
-                       transitions_text(c.transitions), c.runs.size(), cell(c.wall_seconds));
+      b += fmt::format("{},{},{},{},{},{},{}\n", cell(c.damage_threshold), cell(c.collapse_threshold), c.collapse_mode,
+                       transitions_text(c.transitions), c.runs.size(), cell(c.wall_seconds),
+                       cell(c.stones_threshold));
     }
     write_file_atomic(out_dir + "/boundaries.csv", b);
     for (const auto& k : outer_keys) {
@@ -115,10 +118,11 @@ void write_sweep_tables(const std::string& out_dir, const SweepTables& t) {
       for (const ColumnResult& c : s.columns) v.push_back(value_of(c.outer, k));
       h5.write_vector("/boundaries/" + k, v, kDeckUnit);
     }
-    std::vector<double> dmg, col, runs, wall;
+    std::vector<double> dmg, stones, col, runs, wall;
     std::vector<std::string> mode, trans;
     for (const ColumnResult& c : s.columns) {
       dmg.push_back(c.damage_threshold);
+      stones.push_back(c.stones_threshold);
       col.push_back(c.collapse_threshold);
       runs.push_back(static_cast<double>(c.runs.size()));
       wall.push_back(c.wall_seconds);
@@ -126,6 +130,7 @@ void write_sweep_tables(const std::string& out_dir, const SweepTables& t) {
       trans.push_back(transitions_text(c.transitions));
     }
     h5.write_vector("/boundaries/damage_threshold", dmg, kDeckUnit);
+    h5.write_vector("/boundaries/stones_lost_threshold", stones, kDeckUnit);
     h5.write_vector("/boundaries/collapse_threshold", col, kDeckUnit);
     h5.write_strings("/boundaries/collapse_mode", mode);
     h5.write_strings("/boundaries/transitions", trans);

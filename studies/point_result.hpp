@@ -16,6 +16,7 @@ struct PointResult {
   double max_displacement = 0;       // m, of any block
   double residual_displacement = 0;  // m, largest at the end
   double collapse_time = -1;         // s, -1 when not collapsed
+  int dislodged = 0;                 // stones moved beyond collapse_displacement (assessment.dislodged.count)
   double wall_seconds = 0;           // of the run itself
   long steps = 0;
   int exit_code = 0;     // of `polydem run` (0 ok, 1 check failed, 2 bad input, 3 unstable)
@@ -23,10 +24,11 @@ struct PointResult {
   std::string message;   // for unstable and error: why
   std::string directory; // DIR/points/<id>
 
-  // The class a boundary search tells apart: intact, damaged, I, II,
-  // unstable or error.
+  // The class a boundary search tells apart: intact, damaged, stones
+  // (damaged, with stones lost but no collapse), I, II, unstable or error.
   std::string klass() const {
     if (status == "collapsed") return collapse_mode.empty() ? "collapsed" : collapse_mode;
+    if (status == "damaged" && dislodged > 0) return "stones";
     return status;
   }
 };

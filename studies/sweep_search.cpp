@@ -115,9 +115,11 @@ SearchReport boundary_search(const std::vector<SweepPoint>& outer, const SearchA
     // Thresholds: the first run (in lattice order) that is not intact / that
     // collapsed. With every change bracketed to one lattice step, that run's
     // neighbour below is of the other class.
-    out.damage_threshold = out.collapse_threshold = nan;
+    out.damage_threshold = out.stones_threshold = out.collapse_threshold = nan;
     for (const auto& [k, r] : col.runs) {
       if (std::isnan(out.damage_threshold) && r.klass() != "intact") out.damage_threshold = axis.value(k);
+      if (std::isnan(out.stones_threshold) && (r.dislodged > 0 || r.status == "collapsed"))
+        out.stones_threshold = axis.value(k);
       if (std::isnan(out.collapse_threshold) && r.status == "collapsed") {
         out.collapse_threshold = axis.value(k);
         out.collapse_mode = r.collapse_mode;

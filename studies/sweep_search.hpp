@@ -48,9 +48,10 @@ struct ColumnResult {
   SweepPoint outer;                                      // the column's values of the --vary keys
   std::vector<std::pair<double, PointResult>> runs;      // by value of the search key
   std::vector<Transition> transitions;                   // in order of the search key
-  // Smallest value of the search key that is not intact / that collapsed
-  // (NaN: none in the range; START: already at START).
-  double damage_threshold = 0, collapse_threshold = 0;
+  // Smallest value of the search key that is not intact / that lost a stone
+  // or collapsed ("first stones lost") / that collapsed (NaN: none in the
+  // range; START: already at START).
+  double damage_threshold = 0, stones_threshold = 0, collapse_threshold = 0;
   std::string collapse_mode;  // of the run at collapse_threshold
   double wall_seconds = 0;    // Σ of its runs' own times
 };

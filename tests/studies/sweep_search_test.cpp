@@ -132,6 +132,34 @@ TEST(BoundarySearch, ALoopBetweenTwoCoarsePointsIsNotSeen) {
   EXPECT_EQ(fine.columns[0].collapse_mode, "I");
 }
 
+TEST(BoundarySearch, FindsTheFirstStonesLostApartFromTheCollapse) {
+  // Stones fall out from 0.83 g (damaged, with dislodged stones: class
+  // "stones"), the structure collapses from 1.37 g: two curves, each to the
+  // resolution, and the stones' class is a transition of its own.
+  auto response = [](double a) {
+    PointResult r;
+    r.status = a < 0.5 - 1e-9 ? "intact" : (a < 1.37 - 1e-9 ? "damaged" : "collapsed");
+    r.dislodged = a < 0.83 - 1e-9 ? 0 : 3;
+    if (r.status == "collapsed") r.collapse_mode = "II";
+    return r;
+  };
+  const SearchReport rep =
+      boundary_search(grid_points({}), parse_search_axis("g.a=0.2:3.0:15", 0.01), [&](const std::vector<SweepPoint>& b) {
+        std::vector<PointResult> out;
+        for (const auto& p : b) out.push_back(response(p.values[0].second));
+        return out;
+      });
+  const ColumnResult& c = rep.columns[0];
+  EXPECT_NEAR(c.damage_threshold, 0.5, 1e-12);
+  EXPECT_NEAR(c.stones_threshold, 0.83, 1e-12);
+  EXPECT_NEAR(c.collapse_threshold, 1.37, 1e-12);
+  ASSERT_EQ(c.transitions.size(), 3u) << transitions_text(c.transitions);
+  EXPECT_EQ(c.transitions[1].from, "damaged");
+  EXPECT_EQ(c.transitions[1].to, "stones");
+  EXPECT_EQ(c.transitions[2].from, "stones");
+  EXPECT_EQ(c.transitions[2].to, "II");
+}
+
 TEST(BoundarySearch, RejectsASearchFinerThanItsResolution) {
   EXPECT_THROW((void)parse_search_axis("g.a=0.2:0.3:15", 0.01), std::invalid_argument);
   EXPECT_THROW((void)parse_search_axis("g.a=0.2,0.3", 0.01), std::invalid_argument);
