@@ -157,23 +157,40 @@ HullPolygons merged_hull(const std::vector<Vec3>& points, double merge_rel_tol) 
     for (int v : loops.back()) ++n_faces_at[v];
   }
 
-  // Keep the true corners, renumbered in hull order.
+  // Keep the true corners, numbered in a canonical order: CGAL's hull lists
+  // its vertices in an order that depends on heap addresses (it keeps a
+  // std::map keyed by vertex handles), so the same points built twice in
+  // one process (a study, a Python script) came out numbered differently,
+  // and a block's vertex and face order feed every sum of the contact
+  // search. Corners are input points, exact copies, so sorting them by
+  // (x, y, z) and the faces by their id sequence numbers the same hull the
+  // same way every time.
+  std::vector<int> kept;
+  for (size_t v = 0; v < corners.size(); ++v)
+    if (n_faces_at[v] >= 3) kept.push_back(static_cast<int>(v));
+  std::sort(kept.begin(), kept.end(), [&](int a, int b) {
+    const Vec3 &p = corners[a], &q = corners[b];
+    if (p.x() != q.x()) return p.x() < q.x();
+    if (p.y() != q.y()) return p.y() < q.y();
+    if (p.z() != q.z()) return p.z() < q.z();
+    return a < b;  // a repeated point: both are kept as CGAL gave them
+  });
   HullPolygons out;
   std::vector<int> new_id(corners.size(), -1);
-  for (size_t v = 0; v < corners.size(); ++v)
-    if (n_faces_at[v] >= 3) {
-      new_id[v] = static_cast<int>(out.vertices.size());
-      out.vertices.push_back(corners[v]);
-    }
+  for (int v : kept) {
+    new_id[v] = static_cast<int>(out.vertices.size());
+    out.vertices.push_back(corners[v]);
+  }
   for (const auto& loop : loops) {
     std::vector<int> face;
     for (int v : loop)
       if (new_id[v] >= 0) face.push_back(new_id[v]);
     if (face.size() < 3) throw GeometryError("convex hull: a merged face has fewer than 3 corners");
-    // Start each loop at its smallest vertex id: same input, same numbering.
+    // Start each loop at its smallest vertex id (the orientation kept).
     std::rotate(face.begin(), std::min_element(face.begin(), face.end()), face.end());
     out.faces.push_back(std::move(face));
   }
+  std::sort(out.faces.begin(), out.faces.end());
   return out;
 }
 

@@ -2,6 +2,7 @@
 #include <gmock/gmock.h>
 
 #include <algorithm>
+#include <random>
 
 #include "geometry/polyhedron.hpp"
 #include "shapes.hpp"
@@ -90,6 +91,25 @@ TEST(ConvexHull, RandomPointsAreAllInsideTheHull) {
     const auto p = convex_hull(pts);  // make_polyhedron validated it
     for (const auto& x : pts)
       for (size_t f = 0; f < p.faces.size(); ++f) ASSERT_LE(p.normals[f].dot(x) - p.offsets[f], 1e-9);
+  }
+}
+
+// The hull's numbering is the points' own, not CGAL's: the same points in
+// any order, built any number of times, give the same vertices and faces.
+TEST(ConvexHull, NumberingDoesNotDependOnInputOrderOrHeap) {
+  std::mt19937 rng(7);
+  std::normal_distribution<double> g;
+  std::vector<Vec3> pts;
+  for (int i = 0; i < 60; ++i) pts.push_back(Vec3(g(rng), g(rng), g(rng)));
+  for (const Vec3& c : box_corners(Vec3(1, 2, 3))) pts.push_back(c);  // coplanar groups too
+  const Polyhedron first = convex_hull(pts);
+  std::vector<std::vector<char>> heap;  // different heap layout between builds
+  for (int trial = 0; trial < 6; ++trial) {
+    heap.emplace_back(1000 + 4096 * trial);
+    std::shuffle(pts.begin(), pts.end(), rng);
+    const Polyhedron again = convex_hull(pts);
+    EXPECT_EQ(again.vertices, first.vertices);
+    EXPECT_EQ(again.faces, first.faces);
   }
 }
 

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 namespace polydem {
@@ -155,6 +156,43 @@ TEST(DeckSpire, OverridesApply) {
   expect_error("[spire]\n", 0, "spire.stones_per_face", "[1, 64]", {"spire.stones_per_face=0"});
 }
 
+// A wide base is a platform for fallen stones: the base block grows to the
+// given apothem, the spire's blocks stay the same.
+TEST(DeckSpire, BaseApothemWidensOnlyTheBase) {
+  const SceneSpec narrow = parse_deck("[spire]\n", kFile);
+  const SceneSpec wide = parse_deck("[spire]\nbase_apothem = 12\n", kFile);
+  ASSERT_EQ(narrow.blocks.size(), wide.blocks.size());
+  auto extent_x = [](const BlockSpec& b) {
+    double lo = 1e300, hi = -1e300;
+    for (const Vec3& v : b.shape.vertices) {
+      lo = std::min(lo, v.x());
+      hi = std::max(hi, v.x());
+    }
+    return hi - lo;
+  };
+  for (std::size_t i = 0; i < wide.blocks.size(); ++i) {
+    if (wide.blocks[i].name == "base") {
+      EXPECT_NEAR(extent_x(wide.blocks[i]), 24.0, 1e-9);  // face to face
+      EXPECT_NEAR(extent_x(narrow.blocks[i]), 2 * (1.064 + 0.125), 1e-9);
+    } else {
+      EXPECT_EQ(wide.blocks[i].shape.vertices, narrow.blocks[i].shape.vertices) << wide.blocks[i].name;
+    }
+  }
+}
+
+// The same deck read twice in one process gives the same blocks, vertex for
+// vertex and face for face (CGAL's hull order depends on heap addresses; a
+// study or a Python script builds scenes again and again).
+TEST(DeckSpire, TheSameDeckReadTwiceGivesTheSameBlocks) {
+  const SceneSpec a = parse_deck("[spire]\n", kFile);
+  const SceneSpec b = parse_deck("[spire]\n", kFile);
+  ASSERT_EQ(a.blocks.size(), b.blocks.size());
+  for (std::size_t i = 0; i < a.blocks.size(); ++i) {
+    EXPECT_EQ(a.blocks[i].shape.vertices, b.blocks[i].shape.vertices) << a.blocks[i].name;
+    EXPECT_EQ(a.blocks[i].shape.faces, b.blocks[i].shape.faces) << a.blocks[i].name;
+  }
+}
+
 TEST(DeckSpire, BadKeysNameFileLineAndKey) {
   expect_error("[spire]\nheight = 9.4\nradius = 1\n", 3, "spire.radius", "unknown key");
   expect_error("[spire]\nheight = -1\n", 2, "spire.height", "must be > 0");
@@ -173,6 +211,8 @@ TEST(DeckSpire, BadKeysNameFileLineAndKey) {
   expect_error("[spire]\nwindow_arch_segments = 0\n", 2, "spire.window_arch_segments", "[1, 64]");
   expect_error("[spire]\nbase_motion = \"free\"\n", 2, "spire.base_motion", "\"fixed\"");
   expect_error("[spire]\nbase_thickness = 0\nbase_motion = \"fixed\"\n", 3, "spire.base_motion", "no base block");
+  expect_error("[spire]\nbase_apothem = 1.0\n", 2, "spire.base_apothem", "at least the shell's outer apothem");
+  expect_error("[spire]\nbase_thickness = 0\nbase_apothem = 12\n", 3, "spire.base_apothem", "no base block");
   expect_error("[spire]\nmortar_thickness = 0.3\n", 2, "spire.mortar_thickness", "less than the course pitch");
   expect_error("[spire]\ndensity = 0\n", 2, "spire.density", "must be > 0");
   expect_error("[spire]\nshear_stiffness_ratio = -1\n", 2, "spire.shear_stiffness_ratio", "must be > 0");
