@@ -28,6 +28,9 @@ int collapse_command(const CollapseOptions& o) {
   so.rise_time = o.rise_time;
   so.hold_time = o.hold_time;
   so.ramp_rate_g = o.ramp_rate_g;
+  so.static_increments = o.static_increments;
+  so.static_ratio = o.static_ratio;
+  so.static_max_steps = o.static_max_steps;
   so.threads = o.threads;
   TrialObserver print;
   if (!o.quiet)
@@ -51,6 +54,7 @@ int collapse_command(const CollapseOptions& o) {
       CollapseDirection d;
       d.direction_deg = deg;
       if (o.method == "bisection" || o.method == "both") d.bisection = bisect_collapse(scene, deg, so, print);
+      if (o.method == "static") d.bisection = bisect_collapse_static(scene, deg, so, print);
       if (o.method == "ramp" || o.method == "both") d.ramp = ramp_collapse(scene, deg, so, print);
       study.directions.push_back(std::move(d));
     }

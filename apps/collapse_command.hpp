@@ -20,7 +20,10 @@ struct CollapseOptions {
   bool use_default = false;
   std::string out_dir = "out/collapse";
   std::vector<double> directions_deg{0.0};  // azimuth of the ground motion, degrees from x
-  std::string method = "both";              // bisection | ramp | both
+  std::string method = "both";              // bisection | ramp | both | static
+  int static_increments = 4;                // static: load steps, ratio, steps per increment
+  double static_ratio = 1e-4;
+  long static_max_steps = 200000;
   double low_g = 0.05, high_g = 0.5;        // initial bracket
   double tolerance_g = 0.005;               // bracket width at which bisection stops
   double rise_time = 0.5;                   // s

@@ -33,8 +33,15 @@ int main(int argc, char** argv) {
   collapse_cmd->add_flag("--default", col.use_default, "Use the built-in default deck");
   collapse_cmd->add_option("--out", col.out_dir, "Output directory")->capture_default_str();
   collapse_cmd->add_option("--direction", col.directions_deg, "Azimuth of the ground motion, degrees (repeatable)");
-  collapse_cmd->add_option("--method", col.method, "bisection | ramp | both")
-      ->check(CLI::IsMember({"bisection", "ramp", "both"}))->capture_default_str();
+  collapse_cmd->add_option("--method", col.method,
+                           "bisection | ramp | both (bisection and ramp) | static (bisection by static solves)")
+      ->check(CLI::IsMember({"bisection", "ramp", "both", "static"}))->capture_default_str();
+  collapse_cmd->add_option("--static-increments", col.static_increments, "static: load increments per trial")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+  collapse_cmd->add_option("--static-ratio", col.static_ratio, "static: unbalanced-force ratio that counts as solved")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+  collapse_cmd->add_option("--static-max-steps", col.static_max_steps, "static: steps an increment may take")
+      ->check(CLI::PositiveNumber)->capture_default_str();
   collapse_cmd->add_option("--low", col.low_g, "Lower end of the bracket, g")->capture_default_str();
   collapse_cmd->add_option("--high", col.high_g, "Upper end of the bracket, g")->capture_default_str();
   collapse_cmd->add_option("--tolerance", col.tolerance_g, "Bracket width to stop at, g")->capture_default_str();

@@ -203,8 +203,10 @@ void Simulation::advance_block(int i, const StepLoads& loads) {
 void Simulation::gather_and_advance() {
   StepLoads loads;
   loads.a_ground = static_stage_ ? Vec3(Vec3::Zero()) : ground_body_acceleration(motion_, time_);
-  loads.gravity = static_stage_ ? sim_.gravity : gravity_at(sim_.gravity, sim_.gravity_rise_time, time_);
-  loads.rising = !static_stage_ && time_ < sim_.gravity_rise_time;
+  loads.gravity = static_stage_ ? static_load_ : gravity_at(sim_.gravity, sim_.gravity_rise_time, time_);
+  // m·(g(t) − g) is load work: gravity rising, or the static stage's load
+  // tilted away from gravity.
+  loads.rising = static_stage_ ? static_load_ != sim_.gravity : time_ < sim_.gravity_rise_time;
   const int n = blocks_.count;
   const auto& motion = blocks_.props.motion;
   if (local_damping_ > 0) {
@@ -222,9 +224,12 @@ void Simulation::gather_and_advance() {
   }
 }
 
-void Simulation::begin_static_stage(double local_damping) {
+void Simulation::begin_static_stage(double local_damping) { begin_static_stage(local_damping, sim_.gravity); }
+
+void Simulation::begin_static_stage(double local_damping, const Vec3& load) {
   static_stage_ = true;
   local_damping_ = local_damping;
+  static_load_ = load;
 }
 
 void Simulation::end_static_stage() {

@@ -140,7 +140,11 @@ class Simulation {
   // the ledger's potential are measured from) set to it, the ledger's load
   // work and dissipation, the guard and the profile started afresh. The
   // joints keep their forces and shear history: they carry the weight.
+  // `load` replaces gravity as the stage's body acceleration (default: the
+  // scene's gravity); the static collapse search tilts it by λ·g
+  // horizontally (studies/collapse_search.hpp).
   void begin_static_stage(double local_damping);
+  void begin_static_stage(double local_damping, const Vec3& load);
   void end_static_stage();
 
  private:
@@ -194,6 +198,7 @@ class Simulation {
   // never taken during it.
   bool static_stage_ = false;
   double local_damping_ = 0;
+  Vec3 static_load_ = Vec3::Zero();
 };
 
 }  // namespace polydem

@@ -1,6 +1,14 @@
 #include "studies/collapse_search.hpp"
 
 #include "core/units.hpp"
+#include "run/equilibrium.hpp"
+#include "run/setup.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <memory>
 
 #include <fmt/core.h>
 
@@ -59,14 +67,17 @@ SceneSpec ramp_scene(SceneSpec s, double deg, double rate_g, double a_max_g) {
   return s;
 }
 
-BisectionResult bisect_collapse(const SceneSpec& scene, double deg, const CollapseSearchOptions& o,
-                                const TrialObserver& observe) {
+namespace {
+
+// Bisection on a_g with `run` deciding each trial.
+template <class Run>
+BisectionResult bisect(const CollapseSearchOptions& o, const char* method, const TrialObserver& observe, Run run) {
   BisectionResult b;
   auto trial = [&](double a_g) {
-    CollapseTrial t = run_trial(constant_acceleration_scene(scene, deg, a_g, o.rise_time, o.hold_time), deg, a_g, o);
+    CollapseTrial t = run(a_g);
     ++b.runs;
     b.wall_seconds += t.wall_seconds;
-    if (observe) observe("constant", t);
+    if (observe) observe(method, t);
     return t;
   };
   CollapseTrial lo = trial(o.low_g);
@@ -91,6 +102,72 @@ BisectionResult bisect_collapse(const SceneSpec& scene, double deg, const Collap
   b.high_g = hi.acceleration_g;
   b.collapse_g = 0.5 * (lo.acceleration_g + hi.acceleration_g);
   return b;
+}
+
+}  // namespace
+
+BisectionResult bisect_collapse(const SceneSpec& scene, double deg, const CollapseSearchOptions& o,
+                                const TrialObserver& observe) {
+  return bisect(o, "constant", observe, [&](double a_g) {
+    return run_trial(constant_acceleration_scene(scene, deg, a_g, o.rise_time, o.hold_time), deg, a_g, o);
+  });
+}
+
+CollapseTrial static_collapse_trial(const SceneSpec& scene, double deg, double a_g, const CollapseSearchOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  SceneSpec s = scene;
+  s.ground_motion = GroundMotionSpec{};  // none: the load is the tilted gravity
+  s.simulation.gravity_rise_time = 0;
+  trial_output(s);
+  if (o.threads > 0) omp_set_num_threads(o.threads);
+  RunSetup setup;
+  std::unique_ptr<Simulation> sim = build_simulation(s, setup);
+  const Blocks& b = sim->blocks();
+  const Vec3 g = s.simulation.gravity;
+  const Vec3 d = horizontal_direction(deg);
+  const std::vector<Vec3> start = b.state.position;
+  double free_mass = 0;
+  for (int i : b.free_blocks) free_mass += b.props.mass[i];
+
+  CollapseTrial t;
+  t.direction_deg = deg;
+  t.acceleration_g = a_g;
+  // The dislodged mass fraction, as the assessment counts it.
+  auto collapsed = [&] {
+    double moved = 0;
+    for (int i : b.free_blocks)
+      if ((b.state.position[i] - start[i]).norm() > s.assessment.collapse_displacement) moved += b.props.mass[i];
+    return moved > 0 && moved >= s.assessment.collapse_mass_fraction * free_mass;
+  };
+  for (int k = 1; k <= o.static_increments && !t.collapsed; ++k) {
+    // A ground acceleration +a d pushes the blocks by −m a d.
+    const Vec3 load = g - (a_g * k / o.static_increments) * g.norm() * d;
+    sim->begin_static_stage(o.local_damping, load);
+    for (long n = 0;; ++n) {
+      sim->step();
+      ++t.steps;
+      if (n % 16 != 15) continue;
+      if (collapsed()) {
+        t.collapsed = true;
+        break;
+      }
+      if (unbalanced_force_ratio(*sim, load) <= o.static_ratio) break;
+      if (n >= o.static_max_steps) {
+        t.collapsed = t.no_equilibrium = true;
+        break;
+      }
+    }
+  }
+  t.assessment.status = t.collapsed ? "collapsed" : "intact";
+  for (int i : b.free_blocks)
+    t.assessment.max_displacement = std::max(t.assessment.max_displacement, (b.state.position[i] - start[i]).norm());
+  t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return t;
+}
+
+BisectionResult bisect_collapse_static(const SceneSpec& scene, double deg, const CollapseSearchOptions& o,
+                                       const TrialObserver& observe) {
+  return bisect(o, "static", observe, [&](double a_g) { return static_collapse_trial(scene, deg, a_g, o); });
 }
 
 CollapseTrial ramp_collapse(const SceneSpec& scene, double deg, const CollapseSearchOptions& o,

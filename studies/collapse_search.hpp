@@ -5,7 +5,19 @@
 //               halving the bracket until it is narrower than the tolerance;
 //   ramp      - one run under a slowly rising acceleration; the collapse
 //               acceleration is the one at which a block first moves the
-//               damage displacement (the mechanism has formed).
+//               damage displacement (the mechanism has formed);
+//   static    - bisection too, but each trial is a static solve, as 3DEC's
+//               `model solve` (run/equilibrium.hpp): Cundall's local damping,
+//               the body load g tilted by λ·|g| horizontally (the static
+//               equivalent of a constant ground acceleration λ g), applied in
+//               `static_increments` equal steps, each solved until the
+//               unbalanced-force ratio falls below `static_ratio`. The trial
+//               stands when the last increment is solved; it collapses when
+//               the blocks moved beyond the deck's collapse_displacement make
+//               up its collapse_mass_fraction, or when an increment finds no
+//               equilibrium in `static_max_steps` steps (reported apart).
+//               Collapse under a constant acceleration is a quasi-static
+//               question: no rise time to choose, no hold time to wait out.
 // Each trial is the caller's scene with its ground motion, end time and
 // output edited field by field (no deck text is parsed again): the
 // histories and the energy ledger are off and the run stops at collapse.
@@ -24,6 +36,12 @@ struct CollapseSearchOptions {
   double rise_time = 0.5;             // s
   double hold_time = 2.5;             // s after the rise
   double ramp_rate_g = 0.1;           // g/s; the ramp runs up to 1.2·high_g
+  // static: load increments, the unbalanced-force ratio that counts as
+  // solved, the steps an increment may take, Cundall's α.
+  int static_increments = 4;
+  double static_ratio = 1e-4;
+  long static_max_steps = 200000;
+  double local_damping = 0.8;
   int threads = 0;
 };
 
@@ -34,6 +52,7 @@ struct CollapseTrial {
   long steps = 0;
   double wall_seconds = 0;
   Assessment assessment;
+  bool no_equilibrium = false;  // static: an increment found none in static_max_steps
 };
 
 // Called after every trial run (progress output); may be empty.
@@ -56,6 +75,10 @@ SceneSpec ramp_scene(SceneSpec scene, double deg, double rate_g, double a_max_g)
 
 BisectionResult bisect_collapse(const SceneSpec& scene, double deg, const CollapseSearchOptions& options,
                                 const TrialObserver& observe = {});
+// One static trial (see above) at a_g along `deg`.
+CollapseTrial static_collapse_trial(const SceneSpec& scene, double deg, double a_g, const CollapseSearchOptions& options);
+BisectionResult bisect_collapse_static(const SceneSpec& scene, double deg, const CollapseSearchOptions& options,
+                                       const TrialObserver& observe = {});
 CollapseTrial ramp_collapse(const SceneSpec& scene, double deg, const CollapseSearchOptions& options,
                             const TrialObserver& observe = {});
 

@@ -80,5 +80,64 @@ TEST(CollapseSearch, BisectionBracketsTheBlocksOverturningAcceleration) {
   EXPECT_LE(b.high_g - b.low_g, o.tolerance_g);
 }
 
+// The static search (a static solve per trial) on a 0.5 × 0.5 × 1 m block:
+// it tips at λ = b/h = 0.5 exactly when friction holds (φ = 45°), and slides
+// at λ = tan φ when it does not (φ = 20°: 0.36397). Each bracket of 0.004 g
+// must hold the exact value, widened by the solve's tolerance: an
+// unbalanced force below static_ratio (1e-4 of the weight) counts as
+// equilibrium, so the bracket may sit up to ~1e-4 g above it.
+constexpr const char* kTallBlock = R"(
+[simulation]
+end_time = 1.0
+[joint]
+normal_stiffness = 1e9
+friction_angle = 45
+[[block]]
+name = "base"
+shape = "box"
+size = [4.0, 4.0, 0.5]
+center = [0.0, 0.0, -0.25]
+motion = "fixed"
+[[block]]
+name = "block"
+shape = "box"
+size = [0.5, 0.5, 1.0]
+center = [0.0, 0.0, 0.5]
+)";
+
+TEST(CollapseSearch, StaticBisectionFindsTippingAndSlidingOfABlock) {
+  CollapseSearchOptions o;
+  o.low_g = 0.2;
+  o.high_g = 0.7;
+  o.tolerance_g = 0.004;
+  const double slack = 2 * o.static_ratio;
+  const BisectionResult tip = bisect_collapse_static(parse_deck(kTallBlock, "block.toml"), 0.0, o);
+  ASSERT_TRUE(tip.error.empty()) << tip.error;
+  EXPECT_LE(tip.low_g, 0.5 + slack);
+  EXPECT_GE(tip.high_g, 0.5);
+  EXPECT_LE(tip.high_g - tip.low_g, o.tolerance_g);
+  EXPECT_FALSE(tip.last_collapse.no_equilibrium);
+
+  const BisectionResult slide =
+      bisect_collapse_static(parse_deck(kTallBlock, "block.toml", {"joint.friction_angle=20"}), 90.0, o);
+  ASSERT_TRUE(slide.error.empty()) << slide.error;
+  const double tan_phi = std::tan(20.0 * std::numbers::pi / 180.0);
+  EXPECT_LE(slide.low_g, tan_phi + slack);
+  EXPECT_GE(slide.high_g, tan_phi);
+}
+
+// A trial below the threshold stands at rest; one above moves its block
+// beyond collapse_displacement.
+TEST(CollapseSearch, StaticTrialStandsBelowAndCollapsesAbove) {
+  const SceneSpec s = parse_deck(kTallBlock, "block.toml");
+  CollapseSearchOptions o;
+  const CollapseTrial below = static_collapse_trial(s, 0.0, 0.45, o);
+  EXPECT_FALSE(below.collapsed);
+  EXPECT_LT(below.assessment.max_displacement, 1e-3);
+  const CollapseTrial above = static_collapse_trial(s, 0.0, 0.55, o);
+  EXPECT_TRUE(above.collapsed);
+  EXPECT_FALSE(above.no_equilibrium);
+}
+
 }  // namespace
 }  // namespace polydem
