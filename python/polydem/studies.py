@@ -45,7 +45,8 @@ def _printer(progress, line):
 class CollapseResult:
     """directions: one row per direction (direction_deg, bisection_g, low_g,
     high_g, bisection_runs, bisection_error, ramp_g, crack_angle_deg,
-    collapse_mode); trials: one row per run (method, direction_deg,
+    collapse_mode); trials: one row per run (method: "constant" for a
+    bisection trial, "ramp"; direction_deg,
     acceleration_g, collapsed, status, collapse_mode, crack_angle_deg,
     steps, wall_seconds); lowest_g: the lowest collapse acceleration over
     the directions (NaN: none)."""
