@@ -87,7 +87,8 @@ class Run:
     def run(self, until=None, callback=None, every=1000, progress=None):
         """Steps to the scene's end time, or to `until` (s) when given
         (then run() or step() may go on later). Every `every` steps
-        callback(run) is called; returning False stops the run there (it is
+        callback(run) is called; returning False (any false value but None)
+        stops the run there (it is
         not finished: call finish(), or run() again to go on). At the end
         time, or when the run collapses (assessment.stop_on_collapse) or
         settles, the run is finished (finish()). progress: True for a bar on
@@ -102,9 +103,11 @@ class Run:
             self._after_steps()
             if bar:
                 bar(self)
-            if callback is not None and callback(self) is False:
-                self.stopped_by_callback = True
-                break
+            if callback is not None:
+                go_on = callback(self)
+                if go_on is not None and not go_on:  # False, or numpy's False_
+                    self.stopped_by_callback = True
+                    break
         if self._r.over:
             self.finish()
         if isinstance(bar, Progress):
