@@ -3,6 +3,7 @@
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
 #include "io/deck.hpp"
+#include "io/run_outputs.hpp"
 #include "io/snapshots.hpp"
 #include "io/summary.hpp"
 #include "io/vtk.hpp"
@@ -134,13 +135,7 @@ int run_command(const RunOptions& o) {
   if (!o.quiet && isatty(STDERR_FILENO)) std::cerr << "\n";
   if (snapshots) snapshots->finish();
 
-  std::filesystem::create_directories(out_dir);
-  write_results_h5(out_dir + "/results.h5", spec, report);
-  if (report.unstable) {
-    write_vtu(out_dir + "/last_good_state.vtu", report.final_shapes);
-    if (snapshots) snapshots->finish();
-  }
-  write_summary(out_dir, spec, report, omp_get_max_threads());
+  write_run_outputs(out_dir, spec, report, omp_get_max_threads());
   if (report.unstable) {
     std::cerr << "\npolydem: stopped: " << report.instability << "\npolydem: last good state in " << out_dir
               << "/last_good_state.vtu, results so far in " << out_dir << "/summary.json and results.h5\n";

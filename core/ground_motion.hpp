@@ -9,9 +9,17 @@
 
 #include "core/scene_spec.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace polydem {
+
+// A caller's own ground acceleration a(t) (m/s², world, any direction), for
+// loads a deck cannot describe: a vertical record beside the horizontal one,
+// a motion computed by another code. Always applied as a body force −m·a(t)
+// on every free block, added after the deck's motion; its work is load work
+// in the ledger. Called once per step, from one thread, at the step's time.
+using ExtraGroundAcceleration = std::function<Vec3(double t)>;
 
 struct GroundMotion {
   GroundMotionKind kind = GroundMotionKind::none;
@@ -22,6 +30,9 @@ struct GroundMotion {
   // at each sample by the trapezoidal rule so that v_g is the exact integral
   // of the piecewise-linear acceleration.
   std::vector<double> record_time, record_acceleration, record_velocity;
+  // The caller's own acceleration (run/run_scene.hpp RunControl); empty for
+  // the deck's motion alone, which then has the same bits as without it.
+  ExtraGroundAcceleration extra;
 
   bool active() const { return kind != GroundMotionKind::none; }
   double acceleration_at(double t) const;  // m/s²

@@ -30,7 +30,8 @@ namespace polydem {
 
 // The ground acceleration felt as a body force at time t (m/s², world):
 // a_g(t) along the record's direction when the motion is applied as a body
-// force, zero otherwise (no motion, or kinematic base blocks).
+// force, zero otherwise (no motion, or kinematic base blocks); plus the
+// caller's extra acceleration when there is one (GroundMotion::extra).
 Vec3 ground_body_acceleration(const GroundMotion& motion, double t);
 
 // The inertial force of the moving base frame on a block of mass m (kg):

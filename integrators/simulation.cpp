@@ -106,13 +106,16 @@ void Simulation::step() {
   // scenes stay serial, where a parallel region costs more than it saves.
   const bool parallel = contacts_.sub.size() >= parallel_threshold_ ||
                         16 * blocks_.free_blocks.size() >= parallel_threshold_;
+  // The loads once, before the threads: a caller's extra ground
+  // acceleration (GroundMotion::extra) is called once per step, on this thread.
+  const StepLoads loads = step_loads();
 #pragma omp parallel if (parallel)
   {
     compute_joint_forces_parallel();
 #pragma omp barrier
 #pragma omp master
     t2 = Clock::now();
-    gather_and_advance();
+    gather_and_advance(loads);
   }
   move_kinematic_blocks();
   time_ += dt_;
@@ -198,15 +201,20 @@ void Simulation::advance_block(int i, const StepLoads& loads) {
   st.rotation[i] = st.orientation[i].toRotationMatrix();
 }
 
-// Gather and update fused in one loop over the blocks: a block's update
-// needs only its own gathered force, so one barrier less per step.
-void Simulation::gather_and_advance() {
+// The loads of this step, the same for every block.
+Simulation::StepLoads Simulation::step_loads() const {
   StepLoads loads;
   loads.a_ground = static_stage_ ? Vec3(Vec3::Zero()) : ground_body_acceleration(motion_, time_);
   loads.gravity = static_stage_ ? static_load_ : gravity_at(sim_.gravity, sim_.gravity_rise_time, time_);
   // m·(g(t) − g) is load work: gravity rising, or the static stage's load
   // tilted away from gravity.
   loads.rising = static_stage_ ? static_load_ != sim_.gravity : time_ < sim_.gravity_rise_time;
+  return loads;
+}
+
+// Gather and update fused in one loop over the blocks: a block's update
+// needs only its own gathered force, so one barrier less per step.
+void Simulation::gather_and_advance(const StepLoads& loads) {
   const int n = blocks_.count;
   const auto& motion = blocks_.props.motion;
   if (local_damping_ > 0) {

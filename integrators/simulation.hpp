@@ -152,7 +152,6 @@ class Simulation {
   void start_half_step_back();
   void compute_joint_forces_parallel();
   void gather_block_forces();
-  void gather_and_advance();
   void gather_block(int i);
   // The loads of this step, the same for every block.
   struct StepLoads {
@@ -160,6 +159,8 @@ class Simulation {
     Vec3 a_ground;      // the ground's body acceleration
     bool rising;        // g(t) ≠ g: count m·(g(t) − g) as load work
   };
+  StepLoads step_loads() const;
+  void gather_and_advance(const StepLoads& loads);
   template <bool kLocalDamping>
   void advance_block(int i, const StepLoads& loads);
   void move_kinematic_blocks();

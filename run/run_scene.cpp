@@ -148,124 +148,171 @@ void finish_report(RunReport& rep, const Simulation& sim, Recorder& recorder, As
 
 }  // namespace
 
-RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
+// What a run keeps between advance() calls besides the Simulation.
+struct SceneRun::Loop {
+  Loop(const SceneSpec& spec, const Simulation& sim)
+      : assessment(spec.assessment, sim, spec.simulation.gravity), monitors(checks(spec, sim)), recorder(spec, sim) {}
+  static std::vector<std::unique_ptr<CheckMonitor>> checks(const SceneSpec& spec, const Simulation& sim) {
+    std::vector<std::unique_ptr<CheckMonitor>> m;
+    for (const CheckSpec& c : spec.checks) m.push_back(make_check(c, spec, sim));
+    return m;
+  }
+  Clock::time_point wall_start;
+  AssessmentMonitor assessment;
+  std::vector<std::unique_ptr<CheckMonitor>> monitors;
+  Recorder recorder;
+  LoopState state;
+  std::string checkpoint_buffer;  // reused: one allocation for the run
+  double output_seconds = 0;
+};
+
+SceneRun::SceneRun(const SceneSpec& spec, const RunControl& control) : spec_(spec), control_(control) {
   const auto wall_start = Clock::now();
-  if (control.threads > 0) omp_set_num_threads(control.threads);
-  RunReport rep;
+  if (control_.threads > 0) omp_set_num_threads(control_.threads);
+  RunReport& rep = report_;
 
   // 1. Setup.
   RunSetup setup;
-  const std::unique_ptr<Simulation> simulation = build_simulation(spec, setup);
-  Simulation& sim = *simulation;
-  sim.set_parallel_threshold(control.parallel_threshold);
+  sim_ = build_simulation(spec_, setup, control_.ground_acceleration);
+  Simulation& sim = *sim_;
+  sim.set_parallel_threshold(control_.parallel_threshold);
   rep.blocks = sim.blocks().count;
   rep.free_blocks = static_cast<int>(sim.blocks().free_blocks.size());
   rep.margin = setup.margin;
   rep.critical = setup.critical;
-  rep.time_step_set_by = spec.simulation.time_step > 0 ? "deck" : "all-faces bound";
+  rep.time_step_set_by = spec_.simulation.time_step > 0 ? "deck" : "all-faces bound";
   rep.time_step = setup.time_step;
   rep.initial_time_step = sim.dt();
   // The static stage, also on a restart: it is deterministic, and the
   // monitors and the checkpoint's state start from the state it reaches.
-  if (spec.equilibrium.enabled) {
-    rep.equilibrium = solve_equilibrium(spec.equilibrium, spec.simulation.gravity, sim);
+  if (spec_.equilibrium.enabled) {
+    rep.equilibrium = solve_equilibrium(spec_.equilibrium, spec_.simulation.gravity, sim);
     rep.profile.equilibrium = rep.equilibrium.wall_seconds;
   }
 
   // 2. Monitors and the recorder.
-  AssessmentMonitor assessment(spec.assessment, sim, spec.simulation.gravity);
-  std::vector<std::unique_ptr<CheckMonitor>> monitors;
-  for (const CheckSpec& c : spec.checks) monitors.push_back(make_check(c, spec, sim));
-  Recorder recorder(spec, sim);
+  loop_ = std::make_unique<Loop>(spec_, sim);
+  loop_->wall_start = wall_start;
+  LoopState& loop = loop_->state;
+  const double end = spec_.simulation.end_time;
+  loop.records = Periodic::every(spec_.output.history_interval, 0.0, end);
+  loop.snapshots = Periodic::every(spec_.output.snapshot_interval, 0.0, end,
+                                   spec_.output.snapshot_interval > 0 && static_cast<bool>(control_.snapshot));
+  loop.checkpoints = Periodic::every(spec_.output.checkpoint_interval, spec_.output.checkpoint_interval, end,
+                                     spec_.output.checkpoint_interval > 0 && static_cast<bool>(control_.checkpoint));
 
-  const double end = spec.simulation.end_time;
-  LoopState loop;
-  loop.records = Periodic::every(spec.output.history_interval, 0.0, end);
-  loop.snapshots = Periodic::every(spec.output.snapshot_interval, 0.0, end,
-                                   spec.output.snapshot_interval > 0 && static_cast<bool>(control.snapshot));
-  loop.checkpoints = Periodic::every(spec.output.checkpoint_interval, spec.output.checkpoint_interval, end,
-                                     spec.output.checkpoint_interval > 0 && static_cast<bool>(control.checkpoint));
-
-  std::string checkpoint_buffer;  // reused: one allocation for the run
-  auto write_checkpoint = [&]() {
-    const auto t0 = Clock::now();
-    checkpoint_buffer.clear();
-    ByteWriter w(checkpoint_buffer);
-    sim.save_state(w);
-    assessment.save(w);
-    w.put(static_cast<std::uint64_t>(monitors.size()));
-    for (const auto& m : monitors) m->save(w);
-    save_loop(w, rep, recorder, loop, seconds_since(wall_start));
-    w.put(static_cast<bool>(control.save_extra));
-    if (control.save_extra) control.save_extra(w);
-    control.checkpoint(checkpoint_buffer);
-    ++rep.checkpoints;
-    rep.checkpoint_bytes = static_cast<long>(checkpoint_buffer.size());
-    rep.checkpoint_wall_seconds += seconds_since(t0);
-  };
-
-  if (control.restart) {
-    restore(*control.restart, control, sim, assessment, monitors, rep, recorder, loop);
+  if (control_.restart) {
+    restore(*control_.restart, control_, sim, loop_->assessment, loop_->monitors, rep, loop_->recorder, loop);
   } else if (loop.snapshots.enabled) {
-    control.snapshot(sim, 0.0);
+    control_.snapshot(sim, 0.0);
     loop.snapshots.advance();
   }
   rep.profile.setup = seconds_since(wall_start) - rep.profile.equilibrium;
+}
 
-  // 3. The loop.
-  double output_seconds = 0;
+SceneRun::~SceneRun() = default;
+
+void SceneRun::write_checkpoint() {
+  const auto t0 = Clock::now();
+  std::string& buffer = loop_->checkpoint_buffer;
+  buffer.clear();
+  ByteWriter w(buffer);
+  sim_->save_state(w);
+  loop_->assessment.save(w);
+  w.put(static_cast<std::uint64_t>(loop_->monitors.size()));
+  for (const auto& m : loop_->monitors) m->save(w);
+  save_loop(w, report_, loop_->recorder, loop_->state, seconds_since(loop_->wall_start));
+  w.put(static_cast<bool>(control_.save_extra));
+  if (control_.save_extra) control_.save_extra(w);
+  control_.checkpoint(buffer);
+  ++report_.checkpoints;
+  report_.checkpoint_bytes = static_cast<long>(buffer.size());
+  report_.checkpoint_wall_seconds += seconds_since(t0);
+}
+
+bool SceneRun::over() const {
+  return over_ || finished_ || !(sim_->time() < spec_.simulation.end_time - 0.5 * sim_->dt());
+}
+
+// 3. The loop.
+long SceneRun::advance(long max_steps, double until) {
+  if (over()) return 0;
+  Simulation& sim = *sim_;
+  RunReport& rep = report_;
+  LoopState& loop = loop_->state;
+  const double end = spec_.simulation.end_time;
+  long taken = 0;
   try {
-    while (sim.time() < end - 0.5 * sim.dt()) {
+    while (taken < max_steps && sim.time() < end - 0.5 * sim.dt() && sim.time() < until - 0.5 * sim.dt()) {
       sim.step();
+      ++taken;
       const auto t_output = Clock::now();
       rep.subcontact_updates += static_cast<long>(sim.contacts().sub.size());
-      for (auto& m : monitors) m->observe(sim);
-      assessment.observe(sim);
-      if (spec.assessment.stop_on_collapse && assessment.collapsed()) break;
+      for (auto& m : loop_->monitors) m->observe(sim);
+      loop_->assessment.observe(sim);
+      if (spec_.assessment.stop_on_collapse && loop_->assessment.collapsed()) {
+        over_ = true;
+        break;
+      }
       if (loop.records.due(sim.time() - sim.dt())) {
-        recorder.record(sim);
+        loop_->recorder.record(sim);
         loop.records.advance();
       }
-      if (control.progress && sim.steps() % control.progress_every == 0) control.progress(sim);
+      if (control_.progress && sim.steps() % control_.progress_every == 0) control_.progress(sim);
       if (loop.snapshots.due(sim.time())) {
-        control.snapshot(sim, sim.time());
+        control_.snapshot(sim, sim.time());
         loop.snapshots.advance();
       }
-      if (settled(spec, sim, loop.quiet_since)) {
+      if (settled(spec_, sim, loop.quiet_since)) {
         rep.settled = true;
+        over_ = true;
         break;
       }
       if (loop.checkpoints.due(sim.time())) {
         loop.checkpoints.skip_past(sim.time());
         write_checkpoint();
       }
-      if (sim.steps() == control.kill_at_step) std::raise(SIGKILL);
-      output_seconds += seconds_since(t_output);
+      if (sim.steps() == control_.kill_at_step) std::raise(SIGKILL);
+      loop_->output_seconds += seconds_since(t_output);
     }
   } catch (const InstabilityError& e) {
     // Stop, but keep what was computed: the histories so far and the state
     // of the last passed check.
     rep.unstable = true;
     rep.instability = e.what();
+    over_ = true;
   }
+  return taken;
+}
 
-  // 4. The end.
+// 4. The end.
+const RunReport& SceneRun::finish() {
+  if (finished_) return report_;
+  finished_ = true;
+  Simulation& sim = *sim_;
+  RunReport& rep = report_;
   const auto t_end = Clock::now();
-  if (recorder.energies_on && !rep.unstable) recorder.record(sim);  // the final state is always in the ledger
-  if (loop.snapshots.passed_last(sim.time())) control.snapshot(sim, sim.time());
-  finish_report(rep, sim, recorder, assessment, monitors);
-  output_seconds += seconds_since(t_end);
-  rep.wall_seconds = loop.wall_before + seconds_since(wall_start);
+  if (loop_->recorder.energies_on && !rep.unstable) loop_->recorder.record(sim);  // the final state is always in the ledger
+  if (loop_->state.snapshots.passed_last(sim.time())) control_.snapshot(sim, sim.time());
+  finish_report(rep, sim, loop_->recorder, loop_->assessment, loop_->monitors);
+  loop_->output_seconds += seconds_since(t_end);
+  rep.wall_seconds = loop_->state.wall_before + seconds_since(loop_->wall_start);
   const StepProfile& sp = sim.profile();
   rep.profile.detection = sp.detection;
   rep.profile.patch = sp.patch;
   rep.profile.joint_law = sp.joint_law;
   rep.profile.gather_update = sp.gather_update;
   rep.profile.guard = sp.guard;
-  rep.profile.output = output_seconds;
+  rep.profile.output = loop_->output_seconds;
   rep.profile.steps = sim.steps();
-  rep.profile.total = seconds_since(wall_start);
+  rep.profile.total = seconds_since(loop_->wall_start);
   return rep;
+}
+
+RunReport run_scene(const SceneSpec& spec, const RunControl& control) {
+  SceneRun run(spec, control);
+  run.advance(std::numeric_limits<long>::max());
+  return run.finish();
 }
 
 }  // namespace polydem

@@ -1,6 +1,18 @@
 // One run of a scene, as a library that knows no file: setup (run/setup.hpp),
 // the time loop, the end. The deck reader (io/) makes the SceneSpec; the
-// command line (apps/) writes what comes back.
+// command line (apps/) and the Python module (python/) write what comes back.
+//
+// run_scene() is SceneRun driven to the end in one call; a caller that looks
+// at the state between steps (the Python module's callbacks, a coupling to
+// another code) drives a SceneRun itself, through the same loop body, so
+// both give the same bits:
+//
+//   SceneRun run(spec, control);        // 1. and 2.
+//   while (!run.over()) {
+//     run.advance(1000);                // 3., at most 1000 steps
+//     ... run.simulation() ...          // read the state
+//   }
+//   RunReport report = run.finish();    // 4.
 //
 //   run_scene(spec):
 //     1. setup        blocks, margin, time step, ground motion, first
@@ -30,6 +42,8 @@
 #include "integrators/simulation.hpp"
 
 #include <functional>
+#include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -113,6 +127,56 @@ struct RunControl {
   // Test hook (POLYDEM_KILL_AT_STEP): the process kills itself with SIGKILL
   // after this step, as a machine that dies would. -1: never.
   long kill_at_step = -1;
+  // The caller's own ground acceleration, added to the deck's as a body
+  // force (core/ground_motion.hpp ExtraGroundAcceleration); empty: none.
+  // Not part of a checkpoint: a restart must be given the same one.
+  ExtraGroundAcceleration ground_acceleration;
+};
+
+// One run, step by step. The constructor sets the run up (1. and 2.:
+// setup, the static stage, the monitors, the restart or the first
+// snapshot); advance() runs the loop (3.); finish() is the end (4.).
+// Errors: as run_scene() (SceneError, StateFormatError from the
+// constructor); an instability ends the run (over(), report().unstable)
+// instead of throwing. Not copyable; `spec` is copied.
+class SceneRun {
+ public:
+  explicit SceneRun(const SceneSpec& spec, const RunControl& control = {});
+  ~SceneRun();
+  SceneRun(const SceneRun&) = delete;
+  SceneRun& operator=(const SceneRun&) = delete;
+
+  // Steps until `max_steps` more steps were taken, the time reached `until`
+  // (s; the loop's own test: stop when time ≥ until − dt/2) or the run is
+  // over. Returns the steps taken. Does nothing once over() or finished.
+  long advance(long max_steps, double until = std::numeric_limits<double>::infinity());
+  // The run has reached its end time, collapsed (assessment.stop_on_collapse),
+  // settled, or been stopped by the guard.
+  bool over() const;
+  bool finished() const { return finished_; }
+
+  const SceneSpec& spec() const { return spec_; }
+  const Simulation& simulation() const { return *sim_; }
+  // The report so far: setup figures, `unstable` and `instability`, `settled`;
+  // complete after finish().
+  const RunReport& report() const { return report_; }
+
+  // The end (4.): the final ledger row and snapshot, walking, assessment,
+  // checks, final (or last good) state, profile. Once; later calls return
+  // the same report. A run finished before its end time reports the state
+  // where it stopped.
+  const RunReport& finish();
+
+ private:
+  struct Loop;
+  void write_checkpoint();
+
+  SceneSpec spec_;
+  RunControl control_;
+  RunReport report_;
+  std::unique_ptr<Simulation> sim_;
+  std::unique_ptr<Loop> loop_;
+  bool over_ = false, finished_ = false;
 };
 
 // The run state a checkpoint holds, in this order: the Simulation's state

@@ -55,13 +55,14 @@ void check_initial_overlaps(const SceneSpec& spec, const Simulation& sim) {
   }
 }
 
-std::unique_ptr<Simulation> build_simulation(const SceneSpec& spec, RunSetup& setup) {
+std::unique_ptr<Simulation> build_simulation(const SceneSpec& spec, RunSetup& setup, ExtraGroundAcceleration extra) {
   Blocks blocks = build_blocks(spec.blocks);
   setup = choose_margin_and_step(spec, blocks);
   GroundMotion motion = spec.ground_motion.kind == GroundMotionKind::record
                             ? make_ground_motion(spec.ground_motion, spec.ground_motion.record_time,
                                                  spec.ground_motion.record_acceleration)
                             : make_ground_motion(spec.ground_motion);
+  motion.extra = std::move(extra);
   auto sim = std::make_unique<Simulation>(std::move(blocks), spec.simulation, spec.joint, std::move(motion),
                                           setup.margin, setup.time_step);
   check_initial_overlaps(spec, *sim);

@@ -37,8 +37,10 @@ RunSetup choose_margin_and_step(const SceneSpec& spec, const Blocks& blocks);
 // blocks overlap beyond the tolerance at the start.
 void check_initial_overlaps(const SceneSpec& spec, const Simulation& sim);
 
-// The blocks, the ground motion (its record was read with the deck), the
-// margin and the step, the first contact detection and the overlap check.
-std::unique_ptr<Simulation> build_simulation(const SceneSpec& spec, RunSetup& setup);
+// The blocks, the ground motion (its record was read with the deck, and the
+// caller's extra acceleration if any: GroundMotion::extra), the margin and
+// the step, the first contact detection and the overlap check.
+std::unique_ptr<Simulation> build_simulation(const SceneSpec& spec, RunSetup& setup,
+                                             ExtraGroundAcceleration extra = {});
 
 }  // namespace polydem

@@ -4,6 +4,7 @@ folder includes only itself and the folders below it.
 
     geometry <- core <- contact <- integrators <- run <- studies <- io <- apps
     analytical stands alone (it may use geometry and core/units.hpp)
+    python is a top layer beside apps: it may use everything but apps
 
 Prints every include that breaks the rule (file:line: include) and exits 1
 if there is one. Run by CTest (tests/scripts)."""
@@ -15,6 +16,7 @@ ORDER = ["geometry", "core", "contact", "integrators", "run", "studies", "io", "
 ALLOWED = {folder: set(ORDER[: i + 1]) | ({"analytical"} if i >= ORDER.index("run") else set())
            for i, folder in enumerate(ORDER)}
 ALLOWED["analytical"] = {"analytical", "geometry"}
+ALLOWED["python"] = set(ORDER[: ORDER.index("io") + 1]) | {"analytical", "python"}
 EXCEPTIONS = {("analytical", "core/units.hpp")}  # the one g
 
 root = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), ".."))

@@ -213,7 +213,18 @@ def tiles(poly, normal, cell):
     return out
 
 
-def render(points, cell_faces, data, color, view, title, out, dpi, size, zoom=1.15):
+def clip_to_window(poly, window):
+    """Part of a convex polygon inside the plan window (xmin, xmax, ymin, ymax), or None."""
+    x, y = np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, 0.0])
+    for axis, limit, keep_below in ((x, window[0], False), (x, window[1], True),
+                                    (y, window[2], False), (y, window[3], True)):
+        poly = clip(poly, axis, limit, keep_below)
+        if poly is None:
+            return None
+    return poly
+
+
+def render(points, cell_faces, data, color, view, title, out, dpi, size, zoom=1.15, window=None, zlim=None):
     eye, right, up = view_vectors(*view)
     light = 0.55 * eye + 0.65 * np.array([0.0, 0.0, 1.0]) - 0.5 * right
     light /= np.linalg.norm(light)
@@ -229,6 +240,10 @@ def render(points, cell_faces, data, color, view, title, out, dpi, size, zoom=1.
         base = np.array(cmap(norm(values[c]))[:3])
         for f in faces:
             p = points[f]
+            if window is not None:
+                p = clip_to_window(p, window)  # a wide base drawn only where the blocks are
+                if p is None:
+                    continue
             # Newell's normal: robust for any planar polygon, orientation from the vertex order.
             q = np.roll(p, -1, axis=0)
             n = np.array([np.sum((p[:, 1] - q[:, 1]) * (p[:, 2] + q[:, 2])),
@@ -266,6 +281,11 @@ def render(points, cell_faces, data, color, view, title, out, dpi, size, zoom=1.
                                          zorder=2))
 
     lo, hi = points.min(axis=0), points.max(axis=0)
+    if window is not None:
+        lo[:2] = np.maximum(lo[:2], [window[0], window[2]])
+        hi[:2] = np.minimum(hi[:2], [window[1], window[3]])
+    if zlim is not None:
+        lo[2], hi[2] = zlim
     span = np.maximum(hi - lo, 1e-3 * max(hi - lo))
     ax.set_xlim(lo[0], lo[0] + span[0])
     ax.set_ylim(lo[1], lo[1] + span[1])
@@ -315,6 +335,8 @@ def main(argv=None):
     ap.add_argument("--dpi", type=int, default=110)
     ap.add_argument("--size", nargs=2, type=float, metavar=("W", "H"), default=(7.0, 5.5),
                     help="figure size in inches (default 7 5.5)")
+    ap.add_argument("--window", nargs=4, type=float, metavar=("XMIN", "XMAX", "YMIN", "YMAX"),
+                    help="draw only this plan window [m] (faces clipped to it: a wide base)")
     args = ap.parse_args(argv)
 
     vtu, t = pick_snapshot(args.input, args.time, args.last)
@@ -330,7 +352,8 @@ def main(argv=None):
     if t is not None:
         title += f"   t = {t:.3f} s"
     out = args.out or os.path.splitext(vtu)[0] + ".png"
-    n = render(points, cell_faces, data, color, tuple(args.view), title, out, args.dpi, tuple(args.size), args.zoom)
+    n = render(points, cell_faces, data, color, tuple(args.view), title, out, args.dpi, tuple(args.size), args.zoom,
+               args.window)
     print(f"wrote {out} ({len(cell_faces)} blocks, {n} faces drawn)")
 
 

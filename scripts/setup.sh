@@ -8,6 +8,10 @@ packages=(
   libtomlplusplus-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-matplotlib python3-h5py
+  # the Python module (python/, docs/python.md): pybind11 and the headers
+  # it compiles against (python3-dev: pybind11-dev does not pull it in),
+  # and pytest for its tests (tests/python/, run by ctest)
+  python3-pybind11 python3-dev python3-pytest
   # scripts/fuzz.sh (run by .ci/run): clang++ with libFuzzer (libclang-rt) and
   # clang's OpenMP; llvm for llvm-symbolizer, without which a finding's stack
   # is bare addresses (only recommended by clang, so not pulled in here)

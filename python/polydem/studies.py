@@ -1,0 +1,126 @@
+"""Studies: the collapse search and sweeps, as numpy structured arrays.
+
+The runs go on in C++ with the GIL released, one after the other in this
+process (each on `threads` OpenMP threads); `progress` is called after each
+run with its row as a dict (True: a line on stderr per run; False: nothing;
+None: a line per run when stderr is a terminal)."""
+import sys
+
+import numpy as np
+
+from . import _polydem
+from .scene import as_scene, overrides_list
+
+
+def structured(rows, columns=None):
+    """A list of dicts as a numpy structured array, one field per key
+    (floats f8, ints i8, bools ?, strings U)."""
+    if columns is None:
+        columns = list(rows[0].keys()) if rows else []
+    fields = []
+    for c in columns:
+        values = [r[c] for r in rows]
+        if all(isinstance(v, bool) for v in values) and values:
+            fields.append((c, "?"))
+        elif all(isinstance(v, int) and not isinstance(v, bool) for v in values) and values:
+            fields.append((c, "i8"))
+        elif all(isinstance(v, str) for v in values) and values:
+            fields.append((c, f"U{max(1, max(len(v) for v in values))}"))
+        else:
+            fields.append((c, "f8"))
+    out = np.zeros(len(rows), dtype=fields)
+    for i, r in enumerate(rows):
+        out[i] = tuple(r[c] for c in columns)
+    return out
+
+
+def _printer(progress, line):
+    if progress is None:
+        progress = sys.stderr.isatty()
+    if progress is True:
+        return lambda row: print(line(row), file=sys.stderr, flush=True)
+    return progress or None
+
+
+class CollapseResult:
+    """directions: one row per direction (direction_deg, bisection_g, low_g,
+    high_g, bisection_runs, bisection_error, ramp_g, crack_angle_deg,
+    collapse_mode); trials: one row per run (method: "constant" for a
+    bisection trial, "ramp"; direction_deg,
+    acceleration_g, collapsed, status, collapse_mode, crack_angle_deg,
+    steps, wall_seconds); lowest_g: the lowest collapse acceleration over
+    the directions (NaN: none)."""
+
+    def __init__(self, directions, trials, lowest_g):
+        self.directions, self.trials, self.lowest_g = directions, trials, lowest_g
+
+    def __repr__(self):
+        return f"<polydem.CollapseResult {len(self.directions)} direction(s), {len(self.trials)} runs, lowest {self.lowest_g:.4f} g>"
+
+
+def collapse_search(scene, directions=(0.0,), method="bisection", *, low_g=0.05, high_g=0.5, tolerance_g=0.005,
+                    rise_time=0.5, hold_time=2.5, ramp_rate_g=0.1, threads=0, out=None, progress=None, set=None):
+    """The collapse acceleration of the scene per direction (degrees from
+    x), as `polydem collapse`: method "bisection" (constant accelerations,
+    the bracket halved to tolerance_g), "ramp" (one run under a ramp of
+    ramp_rate_g g/s; the acceleration at which the mechanism forms) or
+    "both". out: a directory for collapse.json (as the command line's).
+    Returns a CollapseResult."""
+    scene = as_scene(scene)
+    if set:
+        scene = scene.with_set(set)
+    o = _polydem.CollapseSearchOptions()
+    o.low_g, o.high_g, o.tolerance_g = float(low_g), float(high_g), float(tolerance_g)
+    o.rise_time, o.hold_time, o.ramp_rate_g, o.threads = float(rise_time), float(hold_time), float(ramp_rate_g), int(threads)
+    report = _printer(progress, lambda t: (
+        f"  direction {t['direction_deg']:6.1f} deg  {t['method']:<9} a = {t['acceleration_g']:.4f} g  "
+        f"{t['status']:<9} {t['steps']} steps  {t['wall_seconds']:.1f} s"))
+    rows, trials, lowest = _polydem.collapse_search(scene.parsed(), [float(d) for d in directions], method, o,
+                                                    "" if out is None else str(out), report)
+    return CollapseResult(structured(rows), structured(trials, [
+        "method", "direction_deg", "acceleration_g", "collapsed", "status", "collapse_mode", "crack_angle_deg",
+        "steps", "wall_seconds"]), lowest)
+
+
+class SweepResult:
+    """points: one row per run (the varied keys, status, collapse_mode,
+    peak_tip_displacement, max_displacement, residual_displacement,
+    collapse_time, steps, wall_seconds, exit_code, message); columns (a
+    boundary search only): one row per column of the outer grid with
+    damage_threshold, collapse_threshold, collapse_mode, runs."""
+
+    def __init__(self, points, columns):
+        self.points, self.columns = points, columns
+
+    def __repr__(self):
+        return f"<polydem.SweepResult {len(self.points)} runs, {len(self.columns)} columns>"
+
+
+def sweep(scene, vary=None, search=None, resolution=None, threads=1, progress=None, set=None):
+    """Runs the scene over a grid of deck keys, as `polydem sweep`:
+    vary = {key: values} (the first key varies slowest). search =
+    "KEY=START:STOP:N" (or (key, start, stop, n)) with `resolution` adds a
+    boundary search along KEY for each point of the grid: the damage and
+    collapse thresholds with far fewer runs than the full grid
+    (docs/sweep.md). Returns a SweepResult."""
+    scene = as_scene(scene)
+    if set:
+        scene = scene.with_set(set)
+    axes = [(str(k), [float(v) for v in vs]) for k, vs in (vary or {}).items()]
+    if isinstance(search, (tuple, list)):
+        key, start, stop, n = search
+        search = f"{key}={start!r}:{stop!r}:{int(n)}"
+    if search and resolution is None:
+        raise ValueError("a search needs a resolution")
+    if not axes and not search:
+        raise ValueError("give vary={key: values} or a search")
+    report = _printer(progress, lambda p: (
+        "  " + " ".join(f"{k.rsplit('.', 1)[-1]}={p[k]:g}" for k in p if "." in k) +
+        f": {p['status']}{' (Mode ' + p['collapse_mode'] + ')' if p['collapse_mode'] else ''}  ({p['wall_seconds']:.1f} s)"))
+    rows, columns = _polydem.sweep(scene.parsed(), axes, search or "", float(resolution or 0), int(threads), report)
+    keys = [k for k, _ in axes] + ([search.split("=", 1)[0]] if search else [])
+    fields = keys + ["status", "collapse_mode", "peak_tip_displacement", "max_displacement", "residual_displacement",
+                     "collapse_time", "steps", "wall_seconds", "exit_code", "message"]
+    cols = structured(columns, [k for k, _ in axes] + ["damage_threshold", "collapse_threshold", "collapse_mode",
+                                                     "runs", "wall_seconds"]) if columns else structured([])
+    return SweepResult(structured(rows, fields) if rows else structured([]), cols)

@@ -1,0 +1,216 @@
+// polydem._polydem: the collapse search (studies/collapse_search.hpp) and
+// sweeps (studies/sweep_grid.hpp, studies/sweep_search.hpp) from Python.
+//
+// The searches run with the GIL released; the progress function (may be
+// None) is called with the GIL after every run. Sweep points run one after
+// the other in this process (each on `threads` OpenMP threads): the same
+// scene with the point's overrides, as `polydem sweep` runs `polydem run
+// --set ...`, and what a study keeps of a run (PointResult) is read from the
+// run's summary the way polydem sweep reads summary.json (io/summary.hpp).
+// The Python half (polydem/studies.py) makes numpy structured arrays.
+#include "python/bindings.hpp"
+
+#include "io/collapse_results.hpp"
+#include "io/deck.hpp"
+#include "io/summary.hpp"
+#include "studies/collapse_search.hpp"
+#include "studies/sweep_search.hpp"
+
+#include <omp.h>
+#include <pybind11/stl.h>
+
+#include <filesystem>
+
+namespace polydem::python {
+
+namespace {
+
+py::dict trial_dict(const char* method, const CollapseTrial& t) {
+  py::dict d;
+  d["method"] = method;
+  d["direction_deg"] = t.direction_deg;
+  d["acceleration_g"] = t.acceleration_g;
+  d["collapsed"] = t.collapsed;
+  d["status"] = t.assessment.status;
+  d["collapse_mode"] = t.assessment.collapse_mode;
+  d["crack_angle_deg"] = t.assessment.crack_angle_deg;
+  d["steps"] = t.steps;
+  d["wall_seconds"] = t.wall_seconds;
+  return d;
+}
+
+PointResult run_point(const Scene& scene, const SweepPoint& point, int threads) {
+  std::vector<std::string> overrides = scene.overrides;
+  for (const std::string& o : point.overrides()) overrides.push_back(o);
+  const SceneSpec spec = parse_deck(scene.spec.deck_text, scene.name, overrides);
+  try {
+    RunControl control;
+    control.threads = threads;
+    const RunReport r = run_scene(spec, control);
+    PointResult p = point_result_from_summary(summary_json(spec, r, omp_get_max_threads()).dump(2), point.label());
+    p.exit_code = r.unstable ? 3 : r.all_checks_passed() ? 0 : 1;
+    return p;
+  } catch (const SceneError& e) {
+    PointResult p;
+    p.status = "error";
+    p.exit_code = 2;
+    p.message = locate_scene_error(e, spec);
+    return p;
+  }
+}
+
+py::dict point_dict(const SweepPoint& point, const PointResult& r) {
+  py::dict d;
+  for (const auto& [key, value] : point.values) d[py::str(key)] = value;
+  d["status"] = r.status;
+  d["collapse_mode"] = r.collapse_mode;
+  d["peak_tip_displacement"] = r.peak_tip_displacement;
+  d["max_displacement"] = r.max_displacement;
+  d["residual_displacement"] = r.residual_displacement;
+  d["collapse_time"] = r.collapse_time;
+  d["steps"] = r.steps;
+  d["wall_seconds"] = r.wall_seconds;
+  d["exit_code"] = r.exit_code;
+  d["message"] = r.message;
+  return d;
+}
+
+}  // namespace
+
+void bind_studies(py::module_& m) {
+  m.def(
+      "collapse_search",
+      [](const Scene& scene, const std::vector<double>& directions, const std::string& method,
+         const CollapseSearchOptions& options, const std::string& out, py::object progress) {
+        if (method != "bisection" && method != "ramp" && method != "both")
+          raise_python("DeckError", "key 'method': must be \"bisection\", \"ramp\" or \"both\" (got \"" + method + "\")");
+        CollapseStudy study;
+        study.deck = scene.name;
+        study.method = method;
+        study.tolerance_g = options.tolerance_g;
+        study.ramp_rate_g = options.ramp_rate_g;
+        py::list trials;
+        const TrialObserver observe = [&](const char* how, const CollapseTrial& t) {
+          py::gil_scoped_acquire gil;
+          py::dict d = trial_dict(how, t);
+          trials.append(d);
+          if (!progress.is_none()) progress(d);
+        };
+        try {
+          py::gil_scoped_release nogil;
+          for (double deg : directions) {
+            CollapseDirection d;
+            d.direction_deg = deg;
+            if (method == "bisection" || method == "both") d.bisection = bisect_collapse(scene.spec, deg, options, observe);
+            if (method == "ramp" || method == "both") d.ramp = ramp_collapse(scene.spec, deg, options, observe);
+            study.directions.push_back(std::move(d));
+          }
+          if (!out.empty()) {
+            std::filesystem::create_directories(out);
+            write_collapse_json(out + "/collapse.json", study);
+          }
+        } catch (const SceneError& e) {
+          raise_python("SceneError", locate_scene_error(e, scene.spec));
+        }
+        py::list rows;
+        for (const CollapseDirection& d : study.directions) {
+          py::dict r;
+          r["direction_deg"] = d.direction_deg;
+          const bool bisected = d.bisection && d.bisection->error.empty();
+          r["bisection_g"] = bisected ? d.bisection->collapse_g : NAN;
+          r["low_g"] = bisected ? d.bisection->low_g : NAN;
+          r["high_g"] = bisected ? d.bisection->high_g : NAN;
+          r["bisection_runs"] = d.bisection ? d.bisection->runs : 0;
+          r["bisection_error"] = d.bisection ? d.bisection->error : std::string();
+          r["ramp_g"] = d.ramp ? d.ramp->acceleration_g : NAN;
+          double crack = bisected ? d.bisection->last_collapse.assessment.crack_angle_deg : -1;
+          if (crack < 0 && d.ramp) crack = d.ramp->assessment.crack_angle_deg;
+          r["crack_angle_deg"] = crack;
+          r["collapse_mode"] = bisected ? d.bisection->last_collapse.assessment.collapse_mode
+                               : d.ramp ? d.ramp->assessment.collapse_mode
+                                        : std::string();
+          rows.append(r);
+        }
+        return py::make_tuple(rows, trials, study.lowest_g());
+      },
+      py::arg("scene"), py::arg("directions"), py::arg("method"), py::arg("options"), py::arg("out"),
+      py::arg("progress"));
+
+  py::class_<CollapseSearchOptions>(m, "CollapseSearchOptions")
+      .def(py::init<>())
+      .def_readwrite("low_g", &CollapseSearchOptions::low_g)
+      .def_readwrite("high_g", &CollapseSearchOptions::high_g)
+      .def_readwrite("tolerance_g", &CollapseSearchOptions::tolerance_g)
+      .def_readwrite("rise_time", &CollapseSearchOptions::rise_time)
+      .def_readwrite("hold_time", &CollapseSearchOptions::hold_time)
+      .def_readwrite("ramp_rate_g", &CollapseSearchOptions::ramp_rate_g)
+      .def_readwrite("threads", &CollapseSearchOptions::threads);
+
+  m.def(
+      "sweep",
+      [](const Scene& scene, const std::vector<std::pair<std::string, std::vector<double>>>& vary,
+         const std::string& search, double resolution, int threads, py::object progress) {
+        std::vector<SweepAxis> axes;
+        for (const auto& [key, values] : vary) axes.push_back(SweepAxis{key, values});
+        const std::vector<SweepPoint> grid = grid_points(axes);
+        SearchAxis axis;
+        try {
+          if (!search.empty()) axis = parse_search_axis(search, resolution);
+        } catch (const std::invalid_argument& e) {
+          raise_python("DeckError", e.what());
+        }
+        // Every point's deck is valid before anything runs (as polydem sweep).
+        std::vector<SweepPoint> check = grid;
+        if (!search.empty()) {
+          check.clear();
+          for (const SweepPoint& p : grid) {
+            check.push_back(p.with(axis.key, axis.start));
+            check.push_back(p.with(axis.key, axis.stop));
+          }
+        }
+        for (const SweepPoint& p : check) {
+          std::vector<std::string> overrides = scene.overrides;
+          for (const std::string& o : p.overrides()) overrides.push_back(o);
+          (void)parse_deck(scene.spec.deck_text, scene.name, overrides);
+        }
+        py::list rows;
+        long done = 0;
+        const BatchRunner run = [&](const std::vector<SweepPoint>& batch) {
+          std::vector<PointResult> results;
+          for (const SweepPoint& p : batch) {
+            results.push_back(run_point(scene, p, threads));
+            py::gil_scoped_acquire gil;
+            py::dict d = point_dict(p, results.back());
+            rows.append(d);
+            ++done;
+            if (!progress.is_none()) progress(d);
+          }
+          return results;
+        };
+        py::list columns;
+        {
+          py::gil_scoped_release nogil;
+          if (search.empty()) {
+            (void)run(grid);
+          } else {
+            const SearchReport rep = boundary_search(grid, axis, run);
+            py::gil_scoped_acquire gil;
+            for (const ColumnResult& c : rep.columns) {
+              py::dict d;
+              for (const auto& [key, value] : c.outer.values) d[py::str(key)] = value;
+              d["damage_threshold"] = c.damage_threshold;
+              d["collapse_threshold"] = c.collapse_threshold;
+              d["collapse_mode"] = c.collapse_mode;
+              d["runs"] = static_cast<long>(c.runs.size());
+              d["wall_seconds"] = c.wall_seconds;
+              columns.append(d);
+            }
+          }
+        }
+        return py::make_tuple(rows, columns);
+      },
+      py::arg("scene"), py::arg("vary"), py::arg("search"), py::arg("resolution"), py::arg("threads"),
+      py::arg("progress"));
+}
+
+}  // namespace polydem::python

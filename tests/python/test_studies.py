@@ -1,0 +1,41 @@
+"""The collapse search and sweeps from Python, as numpy structured arrays."""
+import numpy as np
+import polydem
+import pytest
+from conftest import deck
+
+PILLAR = deck("examples/verification/rocking_onset.toml")  # b/h = 0.25: rocks from 0.25 g
+
+
+def test_collapse_search_bisection_and_ramp(tmp_path):
+    rows = []
+    r = polydem.collapse_search(PILLAR, [0.0], "both", low_g=0.1, high_g=0.5, tolerance_g=0.1, rise_time=0.2,
+                                hold_time=0.8, ramp_rate_g=1.0, threads=1, out=tmp_path, progress=rows.append)
+    d = r.directions
+    assert d.dtype.names[:2] == ("direction_deg", "bisection_g") and len(d) == 1
+    assert d["low_g"][0] < d["bisection_g"][0] < d["high_g"][0] and d["high_g"][0] - d["low_g"][0] <= 0.1
+    assert 0.2 < d["bisection_g"][0] < 0.45          # above the static onset b/h = 0.25 g, up to the bracket
+    assert 0.25 < d["ramp_g"][0] < 0.45              # the mechanism forms above the onset
+    assert len(r.trials) == len(rows) == d["bisection_runs"][0] + 1
+    assert set(r.trials["method"]) == {"constant", "ramp"}  # a bisection trial is a constant acceleration
+    assert r.lowest_g == pytest.approx(min(d["bisection_g"][0], d["ramp_g"][0]))
+    assert (tmp_path / "collapse.json").exists()
+
+
+def test_sweep_matches_single_runs():
+    scene = polydem.Scene.from_deck(PILLAR, set={"ground_motion.kind": "constant", "ground_motion.acceleration_g": 0.1,
+                                                       "simulation.end_time": 0.6})
+    seen = []
+    r = polydem.sweep(scene, vary={"ground_motion.acceleration_g": [0.1, 0.45]}, threads=1, progress=seen.append)
+    p = r.points
+    assert list(p["ground_motion.acceleration_g"]) == [0.1, 0.45] and len(seen) == 2
+    assert p["status"][0] == "intact" and p["status"][1] != "intact"
+    one = polydem.run(scene, set={"ground_motion.acceleration_g": 0.45}, threads=1, progress=False)
+    assert p["max_displacement"][1] == one.assessment["max_displacement_m"]
+    assert p["steps"][1] == one.steps
+
+
+def test_sweep_bad_key_raises_before_running():
+    with pytest.raises(polydem.DeckError) as e:
+        polydem.sweep(PILLAR, vary={"joint.frction_angle": [30, 40]}, progress=False)
+    assert e.value.key == "joint.frction_angle"
