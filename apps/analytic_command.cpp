@@ -56,7 +56,7 @@ models (lengths in m, accelerations in g unless named, times in s):
                     [--deck FILE (any deck; default: the default [spire])] [--no-windows]
                     [--phi 30 or 20,25,30 (deg; default: the deck's joint.friction_angle)]
                     [--direction 0 or 0,22.5,90 (deg: azimuth of the static force from +x)]
-                    [--sides 8] [--pyramid both|circumscribed|inscribed] [--method interior|simplex]
+                    [--sides 16] [--pyramid both|circumscribed|inscribed] [--method interior|simplex]
                     [--interfaces (list every opening or sliding interface)]
                     [--write-lp FILE (the last case's LP, free MPS, for glpsol)]
 common: [--g 9.81] [--json]
@@ -694,7 +694,8 @@ std::string limit_result_json(const polydem::LimitModel& model, const polydem::L
   s << "{\"status\":" << jstr(polydem::to_string(r.status)) << ",\"lambda\":" << jnum(r.lambda)
     << ",\"generator_mu\":" << jnum(r.generator_mu) << ",\"rows\":" << r.rows << ",\"columns\":" << r.columns
     << ",\"nonzeros\":" << r.nonzeros << ",\"build_s\":" << jnum(r.build_seconds)
-    << ",\"solve_s\":" << jnum(r.solve_seconds);
+    << ",\"solve_s\":" << jnum(r.solve_seconds) << ",\"primal_residual\":" << jnum(r.primal_residual)
+    << ",\"dual_residual\":" << jnum(r.dual_residual);
   if (r.status == polydem::LimitStatus::optimal) {
     s << ",\"mechanism\":{\"blocks_moving\":" << m.blocks_moving << ",\"mass_moving_kg\":" << jnum(m.mass_moving)
       << ",\"opening\":" << m.opening << ",\"opening_bed\":" << m.opening_bed << ",\"sliding\":" << m.sliding
@@ -702,7 +703,11 @@ std::string limit_result_json(const polydem::LimitModel& model, const polydem::L
     bool first = true;
     for (std::size_t i = 0; i < m.moving.size(); ++i)
       if (m.moving[i]) {
-        s << (first ? "" : ",") << "{\"name\":" << jstr(model.names[i]) << ",\"speed\":" << jnum(m.speed[i]) << "}";
+        const auto& v = m.velocity[i];
+        const auto& w = m.angular_velocity[i];
+        s << (first ? "" : ",") << "{\"name\":" << jstr(model.names[i]) << ",\"speed\":" << jnum(m.speed[i])
+          << ",\"velocity\":[" << jnum(v.x()) << "," << jnum(v.y()) << "," << jnum(v.z()) << "],\"angular_velocity\":["
+          << jnum(w.x()) << "," << jnum(w.y()) << "," << jnum(w.z()) << "]}";
         first = false;
       }
     s << "],\"interfaces\":[";
@@ -722,6 +727,12 @@ std::string limit_result_json(const polydem::LimitModel& model, const polydem::L
 }
 
 std::string mechanism_text(const polydem::LimitAnalysisResult& r) {
+  if (r.status == polydem::LimitStatus::failed && r.primal_residual + r.dual_residual > 0) {
+    std::ostringstream s;
+    s << "failed: the solution misses the check (equilibrium residual " << fmt(r.primal_residual, 3)
+      << ", mechanism residual " << fmt(r.dual_residual, 3) << ", limit 1e-5)";
+    return s.str();
+  }
   if (r.status != polydem::LimitStatus::optimal) return polydem::to_string(r.status);
   const auto& m = r.mechanism;
   std::ostringstream s;
@@ -740,7 +751,7 @@ int model_limit_lp(Options& o) {
                                                 : polydem::read_deck(deck, overrides);
   const std::vector<double> phis = number_list(o, "phi", scene.joint.friction_angle);
   const std::vector<double> dirs = number_list(o, "direction", 0.0);
-  const double sides = o.number("sides", 8);
+  const double sides = o.number("sides", 16);
   const std::string pyramid = o.text("pyramid", "both");
   const std::string method = o.text("method", "interior");
   const std::string lp_file = o.text("write_lp", "");

@@ -311,18 +311,31 @@ LimitAnalysisResult limit_analysis(const LimitModel& model, const LimitAnalysisO
         r.status = LimitStatus::infeasible;
       }
     } else {
-      glp_iptcp parm;
-      glp_init_iptcp(&parm);
-      parm.msg_lev = GLP_MSG_OFF;
-      const int rc = glp_interior(p.lp, &parm);
-      const int st = rc == 0 ? glp_ipt_status(p.lp) : GLP_UNDEF;
-      if (st == GLP_OPT) {
-        r.status = LimitStatus::optimal;
-        r.lambda = glp_ipt_obj_val(p.lp);
-        for (int i = 1; i <= rows; ++i) dual[i] = glp_ipt_row_dual(p.lp, i);
-        for (int c = 1; c <= col; ++c) primal[c] = glp_ipt_col_prim(p.lp, c);
-      } else if (rc == GLP_ENOFEAS || st == GLP_NOFEAS) {
-        r.status = LimitStatus::infeasible;
+      // GLPK's interior point now and then stops on "numerical instability"
+      // (the spire at φ = 20°, 1 solve in 20): another ordering of the
+      // normal equations, then a tighter box on λ, usually gets through.
+      for (const auto& [ordering, cap] : {std::pair{GLP_ORD_AMD, kLambdaCap}, std::pair{GLP_ORD_SYMAMD, kLambdaCap},
+                                         std::pair{GLP_ORD_AMD, kLambdaCap / 10}, std::pair{GLP_ORD_SYMAMD, kLambdaCap / 10}}) {
+        glp_set_col_bnds(p.lp, 1, GLP_DB, -cap, cap);
+        glp_iptcp parm;
+        glp_init_iptcp(&parm);
+        parm.msg_lev = GLP_MSG_OFF;
+        parm.ord_alg = ordering;
+        const int rc = glp_interior(p.lp, &parm);
+        const int st = rc == 0 ? glp_ipt_status(p.lp) : GLP_UNDEF;
+        ++r.attempts;
+        if (st == GLP_OPT) {
+          r.status = LimitStatus::optimal;
+          r.lambda = glp_ipt_obj_val(p.lp);
+          if (r.lambda >= cap * (1.0 - 1e-9)) r.lambda = kLambdaCap;  // at the box: unbounded (below)
+          for (int i = 1; i <= rows; ++i) dual[i] = glp_ipt_row_dual(p.lp, i);
+          for (int c = 1; c <= col; ++c) primal[c] = glp_ipt_col_prim(p.lp, c);
+          break;
+        }
+        if (rc == GLP_ENOFEAS || st == GLP_NOFEAS) {
+          r.status = LimitStatus::infeasible;
+          break;
+        }
       }
     }
   }

@@ -137,7 +137,7 @@ const char* to_string(LpMethod m);
 struct LimitAnalysisOptions {
   double friction_angle_deg = 30.0;   // φ, degrees, in [0, 90)
   Vec3 direction{1.0, 0.0, 0.0};      // of the body force; its part perpendicular to gravity is used
-  int pyramid_sides = 8;              // k ≥ 3
+  int pyramid_sides = 16;             // k ≥ 3 (16: the cone within 2 %)
   FrictionPyramid pyramid = FrictionPyramid::circumscribed;
   double pyramid_rotation = 0.0;      // rad, added to θ_0 (0: exact along d; tests use it)
   LpMethod method = LpMethod::interior_point;
@@ -170,8 +170,8 @@ const char* to_string(LimitStatus s);
 
 struct LimitAnalysisResult {
   LimitStatus status = LimitStatus::failed;
-  // optimal: the multiplier; unbounded: +inf (no mechanism below 100 g:
-  // λ is boxed in [−100, 100] for the solver);
+  // optimal: the multiplier; unbounded: +inf (λ reached the box the solver
+  // is given, [−100, 100], or [−10, 10] on a retry: no mechanism below it);
   // infeasible or failed: NaN (the dead load alone has no admissible field).
   double lambda = std::numeric_limits<double>::quiet_NaN();
   double friction_angle_deg = 0;
@@ -184,6 +184,7 @@ struct LimitAnalysisResult {
   // generator's power ≥ 0 and the load's = 1, relative to the largest dual;
   // its work against gravity = λ). Above 1e-5 the status is `failed`.
   double primal_residual = 0, dual_residual = 0;
+  int attempts = 0;            // interior-point solves tried (another ordering, a tighter box on λ)
   int rows = 0, columns = 0;   // columns: λ and the generators
   long nonzeros = 0;
   double build_seconds = 0, solve_seconds = 0;
