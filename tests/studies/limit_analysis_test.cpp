@@ -288,3 +288,32 @@ TEST(LimitAnalysis, ConfinedBoxIsUnbounded) {
 
 }  // namespace
 }  // namespace polydem
+
+namespace polydem {
+namespace {
+
+// The default spire (402 blocks, 2406 equations) at φ = 30°, the static
+// force along −y, onto window face 6 (the DEM's ground acceleration along
+// +y, "direction 90"): λ of the circumscribed 16-sided pyramid as measured
+// when the LP was written (0.22052; docs/analytical.md 7), above the DEM's
+// collapse acceleration 0.1828 g there, as a bound must be. The mechanism
+// moves the tip fastest. (One solve: 4-9 s.)
+TEST(LimitAnalysis, DefaultSpireAtThirtyDegrees) {
+  const LimitModel m = limit_model(parse_deck("[spire]\n", "<default [spire]>"));
+  LimitAnalysisOptions o;
+  o.friction_angle_deg = 30.0;
+  o.direction = Vec3(0, -1, 0);
+  const auto r = limit_analysis(m, o);
+  ASSERT_EQ(r.status, LimitStatus::optimal);
+  EXPECT_EQ(r.rows, 6 * 401);
+  EXPECT_NEAR(r.lambda, 0.22052, 3e-4);
+  EXPECT_GT(r.lambda, 0.1828);
+  int tip = -1;
+  for (std::size_t i = 0; i < m.names.size(); ++i)
+    if (m.names[i] == "tip") tip = static_cast<int>(i);
+  ASSERT_GE(tip, 0);
+  EXPECT_NEAR(r.mechanism.speed[tip], 1.0, 1e-6);
+}
+
+}  // namespace
+}  // namespace polydem
