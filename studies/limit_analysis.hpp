@@ -54,9 +54,11 @@
 //   cone) is the largest λ with such a field.
 //   (1) If the rigid blocks, in their initial geometry, can be in
 //       equilibrium at λ with joint forces obeying Coulomb's law without
-//       tension (the DEM's joint law: its damping force vanishes at rest,
-//       its elastic shear force is capped at μ times the normal force, with
-//       or without dilatancy, and it acts at the same patch vertices), that
+//       tension or cohesion (the DEM's joint law with zero cohesion and
+//       tensile strength, as in the spire's decks: its damping force
+//       vanishes at rest, its elastic shear force is capped at μ times the
+//       normal force, whatever the flow rule, and it acts at the patch
+//       vertices, of which the LP keeps the extreme ones), that
 //       field is statically admissible, so λ ≤ λ_cone. The circumscribed
 //       pyramid contains the cone, so its field set is larger and
 //       λ_circumscribed ≥ λ_cone: an upper bound on every λ at which the
