@@ -16,6 +16,7 @@
 #include "analytical/analytical.hpp"
 #include "analytical/refined_lambda.hpp"
 #include "studies/dem_frequency.hpp"
+#include "studies/limit_analysis.hpp"
 #include "io/deck.hpp"
 
 namespace pa = polydem::analytical;
@@ -49,6 +50,15 @@ models (lengths in m, accelerations in g unless named, times in s):
                     [--deck FILE] [--no-windows] [--duration 0.5] [--settle 0.05]
                     [--pulse_g 0.005] [--pulse_period 0.02] [--interval 2e-4]
                     [--keep_damping] [--threads N] [--csv FILE (t, u of the tip)]
+  limit-lp          friction-aware limit analysis of the block model: the rigid-block
+                    equilibrium LP (no tension, Coulomb pyramid at the joints' vertices,
+                    GLPK); the largest static horizontal force lambda m g (docs/analytical.md 7)
+                    [--deck FILE (any deck; default: the default [spire])] [--no-windows]
+                    [--phi 30 or 20,25,30 (deg; default: the deck's joint.friction_angle)]
+                    [--direction 0 or 0,22.5,90 (deg: azimuth of the static force from +x)]
+                    [--sides 16] [--pyramid both|circumscribed|inscribed] [--method interior|simplex]
+                    [--interfaces (list every opening or sliding interface)]
+                    [--write-lp FILE (the last case's LP, free MPS, for glpsol)]
 common: [--g 9.81] [--json]
 )";
 
@@ -98,7 +108,7 @@ struct Options {
   }
 };
 
-const std::set<std::string> kFlags = {"json", "linear", "help", "no_windows", "keep_damping"};
+const std::set<std::string> kFlags = {"json", "linear", "help", "no_windows", "keep_damping", "interfaces"};
 
 std::string normalise(std::string k) {
   for (char& c : k)
@@ -648,6 +658,198 @@ int model_dem_frequency(Options& o) {
   return r.unstable ? 1 : 0;
 }
 
+// Comma-separated numbers of --key ("20,25,30").
+std::vector<double> number_list(Options& o, const std::string& k, double def) {
+  if (!o.has(k)) {
+    o.used.insert(k);
+    return {def};
+  }
+  const std::string text = o.text(k, "");
+  std::vector<double> out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    const std::string item = text.substr(start, comma - start);
+    try {
+      std::size_t pos = 0;
+      const double v = std::stod(item, &pos);
+      if (pos != item.size() || !std::isfinite(v)) throw std::invalid_argument("");
+      out.push_back(v);
+    } catch (const std::exception&) {
+      throw BadInput("--" + k + " expects numbers separated by commas, got '" + text + "'");
+    }
+    start = comma + 1;
+  }
+  return out;
+}
+
+struct LimitCase {
+  double direction_deg = 0, phi_deg = 0;
+  std::vector<polydem::LimitAnalysisResult> results;  // one per pyramid asked
+};
+
+std::string limit_result_json(const polydem::LimitModel& model, const polydem::LimitAnalysisResult& r) {
+  std::ostringstream s;
+  const auto& m = r.mechanism;
+  s << "{\"status\":" << jstr(polydem::to_string(r.status)) << ",\"lambda\":" << jnum(r.lambda)
+    << ",\"generator_mu\":" << jnum(r.generator_mu) << ",\"rows\":" << r.rows << ",\"columns\":" << r.columns
+    << ",\"nonzeros\":" << r.nonzeros << ",\"build_s\":" << jnum(r.build_seconds)
+    << ",\"solve_s\":" << jnum(r.solve_seconds) << ",\"primal_residual\":" << jnum(r.primal_residual)
+    << ",\"dual_residual\":" << jnum(r.dual_residual);
+  if (r.status == polydem::LimitStatus::optimal) {
+    s << ",\"mechanism\":{\"blocks_moving\":" << m.blocks_moving << ",\"mass_moving_kg\":" << jnum(m.mass_moving)
+      << ",\"opening\":" << m.opening << ",\"opening_bed\":" << m.opening_bed << ",\"sliding\":" << m.sliding
+      << ",\"sliding_bed\":" << m.sliding_bed << ",\"moving_blocks\":[";
+    bool first = true;
+    for (std::size_t i = 0; i < m.moving.size(); ++i)
+      if (m.moving[i]) {
+        const auto& v = m.velocity[i];
+        const auto& w = m.angular_velocity[i];
+        s << (first ? "" : ",") << "{\"name\":" << jstr(model.names[i]) << ",\"speed\":" << jnum(m.speed[i])
+          << ",\"velocity\":[" << jnum(v.x()) << "," << jnum(v.y()) << "," << jnum(v.z()) << "],\"angular_velocity\":["
+          << jnum(w.x()) << "," << jnum(w.y()) << "," << jnum(w.z()) << "]}";
+        first = false;
+      }
+    s << "],\"interfaces\":[";
+    first = true;
+    for (std::size_t q = 0; q < m.motion.size(); ++q) {
+      if (m.motion[q] == polydem::InterfaceMotion::closed) continue;
+      const auto& f = model.interfaces[q];
+      s << (first ? "" : ",") << "{\"blocks\":[" << jstr(model.names[f.ref]) << "," << jstr(model.names[f.inc])
+        << "],\"bed\":" << (f.bed ? "true" : "false") << ",\"motion\":" << jstr(polydem::to_string(m.motion[q]))
+        << ",\"normal\":[" << jnum(f.normal.x()) << "," << jnum(f.normal.y()) << "," << jnum(f.normal.z()) << "]}";
+      first = false;
+    }
+    s << "]}";
+  }
+  s << "}";
+  return s.str();
+}
+
+std::string mechanism_text(const polydem::LimitAnalysisResult& r) {
+  if (r.status == polydem::LimitStatus::failed && r.primal_residual + r.dual_residual > 0) {
+    std::ostringstream s;
+    s << "failed: the solution misses the check (equilibrium residual " << fmt(r.primal_residual, 3)
+      << ", mechanism residual " << fmt(r.dual_residual, 3) << ", limit 1e-5)";
+    return s.str();
+  }
+  if (r.status != polydem::LimitStatus::optimal) return polydem::to_string(r.status);
+  const auto& m = r.mechanism;
+  std::ostringstream s;
+  s << m.blocks_moving << " blocks (" << fmt(m.mass_moving, 5) << " kg) moving; interfaces opening " << m.opening
+    << " (" << m.opening_bed << " bed), sliding " << m.sliding << " (" << m.sliding_bed << " bed)";
+  return s.str();
+}
+
+int model_limit_lp(Options& o) {
+  const bool json = o.flag("json");
+  const bool list = o.flag("interfaces");
+  const std::string deck = o.text("deck", "");
+  std::vector<std::string> overrides;
+  if (o.flag("no_windows")) overrides.push_back("spire.window_faces=[]");
+  const polydem::SceneSpec scene = deck.empty() ? polydem::parse_deck("[spire]\n", "<default [spire]>", overrides)
+                                                : polydem::read_deck(deck, overrides);
+  const std::vector<double> phis = number_list(o, "phi", scene.joint.friction_angle);
+  const std::vector<double> dirs = number_list(o, "direction", 0.0);
+  const double sides = o.number("sides", 16);
+  const std::string pyramid = o.text("pyramid", "both");
+  const std::string method = o.text("method", "interior");
+  const std::string lp_file = o.text("write_lp", "");
+  o.check_all_used();
+  if (!overrides.empty() && !scene.spire) throw BadInput("--no-windows needs a deck with a [spire]");
+  for (double phi : phis)
+    if (!(phi >= 0.0 && phi < 90.0)) throw BadInput("--phi must be in [0, 90) degrees");
+  if (sides < 3 || sides > 360 || sides != std::floor(sides)) throw BadInput("--sides must be an integer in [3, 360]");
+  std::vector<polydem::FrictionPyramid> pyramids;
+  if (pyramid == "both" || pyramid == "circumscribed") pyramids.push_back(polydem::FrictionPyramid::circumscribed);
+  if (pyramid == "both" || pyramid == "inscribed") pyramids.push_back(polydem::FrictionPyramid::inscribed);
+  if (pyramids.empty()) throw BadInput("--pyramid must be both, circumscribed or inscribed");
+  polydem::LimitAnalysisOptions opt;
+  opt.pyramid_sides = static_cast<int>(sides);
+  opt.lp_file = lp_file;
+  if (method == "simplex") opt.method = polydem::LpMethod::simplex;
+  else if (method == "interior") opt.method = polydem::LpMethod::interior_point;
+  else throw BadInput("--method must be simplex or interior");
+
+  const polydem::LimitModel model = polydem::limit_model(scene);
+  std::vector<LimitCase> cases;
+  for (double dir : dirs)
+    for (double phi : phis) {
+      LimitCase c;
+      c.direction_deg = dir;
+      c.phi_deg = phi;
+      const double a = dir * std::numbers::pi / 180.0;
+      opt.direction = polydem::Vec3(std::cos(a), std::sin(a), 0.0);
+      opt.friction_angle_deg = phi;
+      for (const auto p : pyramids) {
+        opt.pyramid = p;
+        c.results.push_back(polydem::limit_analysis(model, opt));
+      }
+      cases.push_back(std::move(c));
+    }
+  int free_blocks = 0;
+  for (char f : model.free) free_blocks += f;
+  const std::string src = scene.deck_path.empty() ? std::string("<default [spire]>") : scene.deck_path;
+  if (json) {
+    std::cout << "{\"model\":\"limit-lp\",\"deck\":" << jstr(src) << ",\"blocks\":" << model.mass.size()
+              << ",\"free_blocks\":" << free_blocks << ",\"interfaces\":" << model.interfaces.size()
+              << ",\"vertices\":" << model.vertices << ",\"pyramid_sides\":" << opt.pyramid_sides
+              << ",\"method\":" << jstr(polydem::to_string(opt.method)) << ",\"initial_mesh_s\":"
+              << jnum(model.detection_seconds) << ",\"cases\":[";
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      std::cout << (i ? "," : "") << "{\"direction_deg\":" << jnum(cases[i].direction_deg)
+                << ",\"friction_angle_deg\":" << jnum(cases[i].phi_deg);
+      for (std::size_t k = 0; k < pyramids.size(); ++k)
+        std::cout << "," << jstr(polydem::to_string(pyramids[k])) << ":" << limit_result_json(model, cases[i].results[k]);
+      std::cout << "}";
+    }
+    std::cout << "]}\n";
+    return 0;
+  }
+  const auto& first = cases.front().results.front();
+  std::cout << "limit analysis of the block model: rigid blocks, no tension, Coulomb friction (docs/analytical.md 7)\n"
+            << "  deck     " << src << ": " << model.mass.size() << " blocks (" << free_blocks << " free), "
+            << model.interfaces.size() << " interfaces touching at t = 0, " << model.vertices
+            << " patch vertices; blocks and initial mesh in " << fmt(model.detection_seconds, 3) << " s\n"
+            << "  LP       " << opt.pyramid_sides << "-sided friction pyramid at every vertex (generators), GLPK "
+            << polydem::to_string(opt.method) << "; " << first.rows << " rows, " << first.columns << " columns, "
+            << first.nonzeros << " nonzeros\n"
+            << "  load     lambda m |g| horizontally along the direction's azimuth from +x (the static equivalent of\n"
+            << "           a ground acceleration -lambda g the opposite way), on the dead load m g\n"
+            << "  bound    circumscribed pyramid: an upper bound on any lambda at which the blocks can stand in their\n"
+            << "           initial geometry; inscribed: below the exact cone's value (the two bracket it)\n";
+  std::cout << "  dir [deg]  phi [deg]";
+  for (const auto p : pyramids) std::cout << (p == polydem::FrictionPyramid::circumscribed ? "  lambda circ." : "  lambda inscr.");
+  std::cout << "  solve [s]  mechanism (" << polydem::to_string(pyramids.front()) << ")\n";
+  for (const auto& c : cases) {
+    char line[96];
+    std::snprintf(line, sizeof line, "  %-9.4g  %-9.4g", c.direction_deg, c.phi_deg);
+    std::cout << line;
+    double t = 0;
+    for (const auto& r : c.results) {
+      std::snprintf(line, sizeof line, "  %-12.6g", r.lambda);
+      std::cout << line << (pyramids.size() > 1 && &r == &c.results.back() ? " " : "");
+      t += r.build_seconds + r.solve_seconds;
+    }
+    std::snprintf(line, sizeof line, "  %-9.3f", t);
+    std::cout << line << "  " << mechanism_text(c.results.front()) << "\n";
+  }
+  if (list)
+    for (const auto& c : cases) {
+      const auto& r = c.results.front();
+      if (r.status != polydem::LimitStatus::optimal) continue;
+      std::cout << "  interfaces moving at direction " << fmt(c.direction_deg) << " deg, phi " << fmt(c.phi_deg)
+                << " deg (" << polydem::to_string(pyramids.front()) << "):\n";
+      for (std::size_t q = 0; q < r.mechanism.motion.size(); ++q) {
+        if (r.mechanism.motion[q] == polydem::InterfaceMotion::closed) continue;
+        const auto& f = model.interfaces[q];
+        std::cout << "    " << model.names[f.ref] << " | " << model.names[f.inc] << "  "
+                  << (f.bed ? "bed" : "vertical") << "  " << polydem::to_string(r.mechanism.motion[q]) << "\n";
+      }
+    }
+  return 0;
+}
+
 }  // namespace
 
 int run_analytic_command(const std::vector<std::string>& args) {
@@ -666,11 +868,12 @@ int run_analytic_command(const std::vector<std::string>& args) {
       {"cracked-cone-p", model_cracked},
       {"refined-lambda", model_refined},
       {"dem-frequency", model_dem_frequency},
+      {"limit-lp", model_limit_lp},
   };
   auto it = models.find(model);
   if (it == models.end()) {
     std::cerr << "polydem analytic: unknown model '" << model
-              << "' (expected lambda, beam, rocking, collapse-diagram, cracked-cone-p, refined-lambda, dem-frequency)\n";
+              << "' (expected lambda, beam, rocking, collapse-diagram, cracked-cone-p, refined-lambda, dem-frequency, limit-lp)\n";
     return 2;
   }
   try {

@@ -6,6 +6,9 @@ packages=(
   build-essential cmake pkg-config
   libeigen3-dev libcgal-dev libfcl-dev libccd-dev libhdf5-dev
   libtomlplusplus-dev libcli11-dev libfmt-dev
+  # the limit analysis' linear program (studies/limit_analysis.cpp): GLPK, a
+  # small stable C library with a sparse simplex and interior point
+  libglpk-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-matplotlib python3-h5py
   # the Python module (python/, docs/python.md): pybind11 and the headers

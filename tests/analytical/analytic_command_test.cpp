@@ -48,3 +48,29 @@ TEST(AnalyticCommand, BadInputReturnsTwo) {
   EXPECT_EQ(run({"rocking", "--load", "record", "--file", "/nonexistent/file.csv"}), 2);
   EXPECT_EQ(run({"lambda", "--help"}), 0);
 }
+
+// limit-lp on the pillar of rocking_onset.toml (0.5 x 0.5 x 2 m on a fixed
+// base, friction 30 degrees in the deck): lambda = min(b/h, tan phi).
+TEST(AnalyticCommand, LimitLpOnThePillar) {
+  const std::string deck = std::string(POLYDEM_SOURCE_DIR) + "/examples/verification/rocking_onset.toml";
+  std::string out;
+  ASSERT_EQ(run({"limit-lp", "--deck", deck}, &out), 0);
+  EXPECT_NE(out.find("lambda circ.  lambda inscr."), std::string::npos) << out;
+  EXPECT_NE(out.find("0.25 "), std::string::npos) << out;
+  ASSERT_EQ(run({"limit-lp", "--deck", deck, "--phi", "10,30", "--direction", "90", "--pyramid", "inscribed",
+                 "--method", "simplex", "--json"}, &out), 0);
+  EXPECT_NE(out.find("\"friction_angle_deg\":10,\"inscribed\":{\"status\":\"optimal\",\"lambda\":0.176326980"),
+            std::string::npos) << out;
+  EXPECT_NE(out.find("\"friction_angle_deg\":30,\"inscribed\":{\"status\":\"optimal\",\"lambda\":0.25"), std::string::npos);
+  EXPECT_NE(out.find("\"moving_blocks\":[{\"name\":\"pillar\""), std::string::npos);
+  // Errors name the option.
+  EXPECT_EQ(run({"limit-lp", "--deck", deck, "--phi", "90"}), 2);
+  EXPECT_EQ(run({"limit-lp", "--deck", deck, "--phi", "20,x"}), 2);
+  EXPECT_EQ(run({"limit-lp", "--deck", deck, "--sides", "2"}), 2);
+  EXPECT_EQ(run({"limit-lp", "--deck", deck, "--pyramid", "round"}), 2);
+  EXPECT_EQ(run({"limit-lp", "--deck", deck, "--method", "barrier"}), 2);
+  EXPECT_EQ(run({"limit-lp", "--deck", deck, "--no-windows"}), 2);
+  testing::internal::CaptureStderr();
+  run_analytic_command({"limit-lp", "--deck", deck, "--phi", "20,x"});
+  EXPECT_NE(testing::internal::GetCapturedStderr().find("--phi"), std::string::npos);
+}
