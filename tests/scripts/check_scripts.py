@@ -102,6 +102,9 @@ def main():
         run([PYTHON, os.path.join(scripts, "render_blocks.py"), os.path.join(rock, "vtk", "blocks.pvd"),
              "--time", "0.1", "--color", "block_id", "--view", "-30", "25", "--out", png("blocks_t.png")])
         check_png(png("blocks_t.png"))
+        run([PYTHON, os.path.join(scripts, "picture_strip.py"), os.path.join(rock, "vtk", "blocks.pvd"),
+             "--times", "0,0.1,0.2", "--window", "-1", "1", "-1", "1", "--dpi", "40", "--out", png("strip.png")])
+        check_png(png("strip.png"))
         seconds = run([PYTHON, os.path.join(scripts, "render_blocks.py"), os.path.join(mesh, "blocks.vtu"),
                        "--color", "course", "--out", png("spire.png")])
         check_png(png("spire.png"))
