@@ -58,6 +58,7 @@ def read_boundaries(directory):
                 trans.append((float(a), below, above))
             rows.append({"T": float(r[PERIOD]), "damage": num("damage_" + AMPLITUDE),
                          "collapse": num("collapse_" + AMPLITUDE), "mode": r["collapse_mode"],
+                         "stones": num("stones_lost_" + AMPLITUDE),  # NaN in tables from before issue 15
                          "transitions": trans, "runs": int(r["runs"])})
     rows.sort(key=lambda r: r["T"])
     return rows
@@ -86,6 +87,10 @@ def draw_dem(ax, rows, label, color, ymax):
     T = [r["T"] for r in rows]
     ax.plot(T, [r["damage"] for r in rows], "v--", color=color, ms=5, lw=0.8, mfc="none",
             label=f"{label}: damage from (DEM)")
+    stones = [r["stones"] for r in rows]
+    if np.isfinite(stones).any():
+        ax.plot(T, stones, "^:", color=color, ms=5, lw=0.8,
+                label=f"{label}: first stones lost from (DEM)")
     ax.plot(T, [r["collapse"] for r in rows], "-", color=color, lw=1.2)
     for mode, marker in (("I", "o"), ("II", "s")):
         sel = [r for r in rows if r["mode"] == mode and not np.isnan(r["collapse"])]
