@@ -23,6 +23,7 @@ void Subcontacts::resize(std::size_t n) {
   normal_force.resize(n);
   slip_energy.resize(n);
   damping_energy.resize(n);
+  damping_force.resize(n);
 }
 
 void ContactSet::save(ByteWriter& w) const {
@@ -53,6 +54,7 @@ void ContactSet::save(ByteWriter& w) const {
   w.put(sub.normal_force);
   w.put(sub.slip_energy);
   w.put(sub.damping_energy);
+  w.put(sub.damping_force);
   w.put(gather_offset);
   w.put(gather_sub);
   w.put(gather_sign);
@@ -93,6 +95,7 @@ void ContactSet::load(ByteReader& r, int blocks) {
   r.get_sized(sub.normal_force, n, "subcontacts.normal_force");
   r.get_sized(sub.slip_energy, n, "subcontacts.slip_energy");
   r.get_sized(sub.damping_energy, n, "subcontacts.damping_energy");
+  r.get_sized(sub.damping_force, n, "subcontacts.damping_force");
   r.get_sized(gather_offset, static_cast<std::size_t>(blocks) + 1, "contacts.gather_offset");
   r.get_sized(gather_sub, 2 * n, "contacts.gather_sub");
   r.get_sized(gather_sign, 2 * n, "contacts.gather_sign");
@@ -175,6 +178,7 @@ void build_subcontacts(const Blocks& b, const std::vector<std::pair<int, int>>& 
       sc.bonded[s] = bond_new ? 1 : 0;
       sc.slip_energy[s] = 0;
       sc.damping_energy[s] = 0;
+      sc.damping_force[s] = Vec3::Zero();
       sc.force[s] = Vec3::Zero();
       sc.point[s] = pt.point;
       sc.overlap[s] = -pt.separation;

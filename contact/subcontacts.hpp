@@ -59,6 +59,9 @@ struct Subcontacts {
   std::vector<double> normal_force;  // total normal force incl. damping, N
   std::vector<double> slip_energy;     // cumulative slip dissipation, J
   std::vector<double> damping_energy;  // cumulative damping dissipation, J
+  // The dashpot force of the last step (world, on the incident block, N):
+  // half of its work is booked with the next step's velocity (joint_law.hpp).
+  std::vector<Vec3> damping_force;
 
   std::size_t size() const { return key.size(); }
   void clear();

@@ -78,13 +78,20 @@ void Simulation::start_half_step_back() {
     const Mat3& R = st.rotation[i];
     st.angular_velocity[i] = R * pr.inv_principal_inertia[i].cwiseProduct(R.transpose() * st.angular_momentum[i]);
   }
+  // The forces at t = 0 started the half step back, not a step of the run:
+  // no dashpot work of theirs is owed to the ledger.
+  std::fill(contacts_.sub.damping_force.begin(), contacts_.sub.damping_force.end(), Vec3::Zero());
 }
 
-// After each detection the step is checked against the joints just found
-// (closed or within the margin): if they allow less, the step is lowered
-// for the rest of the run. Leapfrog carries the change exactly (the velocity
-// update spans the mean of the old and new steps).
+// Before a detection replaces the subcontacts, each books the second half of
+// its last step's dashpot work (the velocities now are that step's
+// t + dt/2), at the step it was computed with. After it, the step is checked
+// against the joints just found (closed or within the margin): if they
+// allow less, the step is lowered for the rest of the run. Leapfrog carries
+// the change exactly (the velocity update spans the mean of the old and new
+// steps).
 DetectionTimes Simulation::detect_contacts() {
+  settle_damping_work(blocks_.state, contacts_.sub, dt_);
   const DetectionTimes times = detector_.detect(blocks_, contacts_, bond_initial_ && contacts_.detections == 0);
   if (!adaptive_dt_) return times;
   const CriticalStep c = critical_time_step_from_contacts(blocks_, contacts_, joint_, sim_.safety_factor);
@@ -251,6 +258,7 @@ void Simulation::end_static_stage() {
   contacts_.retired_slip_energy = contacts_.retired_damping_energy = 0;
   std::fill(contacts_.sub.slip_energy.begin(), contacts_.sub.slip_energy.end(), 0.0);
   std::fill(contacts_.sub.damping_energy.begin(), contacts_.sub.damping_energy.end(), 0.0);
+  std::fill(contacts_.sub.damping_force.begin(), contacts_.sub.damping_force.end(), Vec3::Zero());
   energy_reference_ = mechanical0_ = 0;
   energy_started_ = false;
   last_good_ = st;

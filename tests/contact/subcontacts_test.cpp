@@ -26,6 +26,7 @@ ContactSet one_pair(int a, int b, const std::vector<std::uint64_t>& keys) {
     cs.sub.bonded[s] = 0;
     cs.sub.slip_energy[s] = 0;
     cs.sub.damping_energy[s] = 0;
+    cs.sub.damping_force[s] = Vec3::Zero();
   }
   return cs;
 }
