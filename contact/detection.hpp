@@ -5,6 +5,7 @@
 //     2. narrow phase: which candidates are within the margin  narrow_phase.hpp
 //     3. patch: common plane, clipped joint polygon            contact_patch.hpp
 //     4. subcontacts from the patches, history carried over    subcontacts.hpp
+//        by position on the joint
 //     5. per-block gather lists                                gather.hpp
 //
 // Detection runs only when some pair of blocks may have closed by more than
@@ -47,10 +48,11 @@ class ContactDetector {
   // True when some pair may have closed by more than half the margin since
   // detect(), counting the coming step of length dt at the current speeds.
   bool needs_detection(const Blocks& blocks, double dt = 0) const;
-  // Rebuilds `contacts` for the current state, carrying history over.
-  // New subcontacts start bonded when `bond_new` is set (cohesion/tension at t = 0).
-  // Returns the time spent in each stage.
-  DetectionTimes detect(const Blocks& blocks, ContactSet& contacts, bool bond_new);
+  // Rebuilds `contacts` for the current state, carrying history over by
+  // position (carry_history; `shear_stiffness`, ks in Pa/m, prices the shear
+  // it cannot carry). New subcontacts start bonded when `bond_new` is set
+  // (cohesion/tension at t = 0). Returns the time spent in each stage.
+  DetectionTimes detect(const Blocks& blocks, ContactSet& contacts, bool bond_new, double shear_stiffness);
 
   // Checkpoints: the poses at the last detection (they decide when the next
   // one runs). Nothing else carries over: the contacts of the detection

@@ -92,7 +92,8 @@ void Simulation::start_half_step_back() {
 // steps).
 DetectionTimes Simulation::detect_contacts() {
   settle_damping_work(blocks_.state, contacts_.sub, dt_);
-  const DetectionTimes times = detector_.detect(blocks_, contacts_, bond_initial_ && contacts_.detections == 0);
+  const DetectionTimes times =
+      detector_.detect(blocks_, contacts_, bond_initial_ && contacts_.detections == 0, law_.ks);
   if (!adaptive_dt_) return times;
   const CriticalStep c = critical_time_step_from_contacts(blocks_, contacts_, joint_, sim_.safety_factor);
   if (c.chosen > 0 && c.chosen < dt_) {
@@ -256,6 +257,7 @@ void Simulation::end_static_stage() {
   dt_prev_ = dt_;
   load_work_.assign(load_work_.size(), 0.0);
   contacts_.retired_slip_energy = contacts_.retired_damping_energy = 0;
+  contacts_.dropped_shear_energy = 0;
   std::fill(contacts_.sub.slip_energy.begin(), contacts_.sub.slip_energy.end(), 0.0);
   std::fill(contacts_.sub.damping_energy.begin(), contacts_.sub.damping_energy.end(), 0.0);
   std::fill(contacts_.sub.damping_force.begin(), contacts_.sub.damping_force.end(), Vec3::Zero());
@@ -321,8 +323,7 @@ void Simulation::check_health() {
     mechanical0_ = mechanical;
     energy_started_ = true;
   }
-  energy_reference_ = std::max(energy_reference_, e.kinetic + e.strain + std::abs(e.gravitational) +
-                                                      std::abs(e.load_work) + e.slip + e.damping);
+  energy_reference_ = std::max(energy_reference_, energy_in_play(e));
   // A floor so that a scene at rest (all energies ~0) is not judged on noise.
   double floor = 0;
   for (int i : blocks_.free_blocks) floor += blocks_.props.mass[i] * sim_.gravity.norm() * 1e-6;
@@ -445,8 +446,9 @@ EnergyLedger Simulation::energies() const {
     e.slip += contacts_.sub.slip_energy[s];
     e.damping += contacts_.sub.damping_energy[s];
   }
+  e.dropped_shear = contacts_.dropped_shear_energy;
   for (double w : load_work_) e.load_work += w;
-  e.balance = e.kinetic + e.gravitational + e.strain + e.slip + e.damping - e.load_work;
+  e.balance = e.kinetic + e.gravitational + e.strain + e.slip + e.damping + e.dropped_shear - e.load_work;
   return e;
 }
 

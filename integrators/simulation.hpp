@@ -26,6 +26,7 @@
 #include "core/ground_motion.hpp"
 #include "integrators/critical_time_step.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace polydem {
@@ -42,9 +43,17 @@ struct EnergyLedger {
   double strain = 0;         // J, stored in the joints
   double slip = 0;           // J, dissipated by Coulomb slip
   double damping = 0;        // J, dissipated by joint damping
+  double dropped_shear = 0;  // J, elastic shear energy detections could not carry over (ContactSet)
   double load_work = 0;      // J, work of the ground motion (body force or base)
-  double balance = 0;        // kinetic + gravitational + strain + slip + damping − load_work
+  double balance = 0;        // kinetic + gravitational + strain + slip + damping + dropped_shear − load_work
 };
+
+// The energy in play, what a balance error is measured against: every term
+// of the ledger, the potential and the load work by magnitude.
+inline double energy_in_play(const EnergyLedger& e) {
+  return e.kinetic + e.strain + std::abs(e.gravitational) + e.slip + e.damping + e.dropped_shear +
+         std::abs(e.load_work);
+}
 
 // Wall seconds spent in each stage of Simulation::step(), summed over the
 // steps this object has run (std::chrono::steady_clock; cf. Box2D's

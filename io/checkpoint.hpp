@@ -28,7 +28,7 @@ namespace polydem {
 
 // 2: the assessment keeps the monitor block's peak displacement.
 // 3: and the dislodged stones.
-// 4: the subcontacts' pending dashpot force.
+// 4: the subcontacts' pending dashpot force and the dropped shear energy.
 inline constexpr std::uint32_t kCheckpointVersion = 4;
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
 

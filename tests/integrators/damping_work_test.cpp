@@ -60,8 +60,7 @@ ImpactLedger overdamped_impact(double step_fraction, double end_time = 0.05) {
       balance0 = e.balance;
       first = false;
     }
-    reference = std::max(reference, e.kinetic + e.strain + std::abs(e.gravitational) + e.slip + e.damping +
-                                        std::abs(e.load_work));
+    reference = std::max(reference, energy_in_play(e));
     r.final = std::abs(e.balance - balance0) / reference;
     r.worst = std::max(r.worst, r.final);
   }
