@@ -38,7 +38,7 @@ struct InstabilityError : std::runtime_error {
 };
 
 struct EnergyLedger {
-  double kinetic = 0;        // J
+  double kinetic = 0;        // J, ½·m·v₋·v₊ (the half steps around the force time) and its rotational part
   double gravitational = 0;  // J, −Σ m g·x relative to t = 0
   double strain = 0;         // J, stored in the joints
   double slip = 0;           // J, dissipated by Coulomb slip
@@ -102,7 +102,8 @@ class Simulation {
   const GroundMotion& ground_motion() const { return motion_; }
   const JointLaw& joint_law() const { return law_; }
 
-  // Energies at the time of the last force evaluation (time() − dt()).
+  // Energies at the time of the last force evaluation (time() − dt()); the
+  // kinetic term is ½·m·v(t − dt/2)·v(t + dt/2) (see energies() in the .cpp).
   EnergyLedger energies() const;
   // Velocity and angular velocity of block i at that time.
   Vec3 velocity_at_force_time(int i) const { return velocity_mid_[i]; }

@@ -58,8 +58,12 @@ struct BalanceError {
 // the corners of the top cube, now outside the bottom one's face, are
 // clipped into eight edge crossings: a new clip topology on the same joint.
 // The stored shear must survive: the cube must swing back through its
-// initial orientation to the same twist the other way (it oscillated about
-// the twist of the first re-detection when the history was lost there).
+// initial orientation to the same twist the other way. When the history was
+// matched by clip feature it was lost there: the cube swung between −0.0137
+// and +0.0299 rad, about 8.1 mrad, and the balance error was 80 %. Now it
+// swings about −0.7 mrad (3 % of the swing: the eight crossings sample the
+// twist's field with less stiffness than the four corners, 6.2 J of shear
+// energy booked as dropped), balance error 0.5 %.
 TEST(ContactHistory, TwistedBlockSpringsBackThroughReDetection) {
   SimulationSpec sim;
   sim.gravity = Vec3(0, 0, -kG);
@@ -111,7 +115,8 @@ TEST(ContactHistory, TwistedBlockSpringsBackThroughReDetection) {
 // elastic shear displacement of 3 cm at friction) so that the shear energy of
 // the area lost over the edge, which detections drop, is a sizeable share of
 // the energy in play (73 J of 1463 J): the ledger only closes if it is
-// booked. What is left (0.4 %) is not shear history: about 3 J is the stored
+// booked (balance error 2.8 % when it was not, 0.4 % now). What is left is
+// not shear history: about 3 J is the stored
 // shear released without slip booked when the normal force at the edge
 // falls (Coulomb's cap dropping under a stuck subcontact), about 1 J the
 // normal strain of the area lost at each detection.
