@@ -25,9 +25,10 @@ namespace {
 inline Mat3 rotation_matrix(const Vec3& t) {
   const double a2 = t.squaredNorm();
   double s, c;
-  if (a2 < 1e-6) {
-    s = 1.0 - a2 / 6.0 + a2 * a2 / 120.0;
-    c = 0.5 - a2 / 24.0 + a2 * a2 / 720.0;
+  if (a2 < 1e-6) {  // constants, not divisions: this runs for every pair at every step
+    constexpr double k6 = 1.0 / 6.0, k24 = 1.0 / 24.0, k120 = 1.0 / 120.0, k720 = 1.0 / 720.0;
+    s = 1.0 - a2 * k6 + (a2 * a2) * k120;
+    c = 0.5 - a2 * k24 + (a2 * a2) * k720;
   } else {
     const double a = std::sqrt(a2);
     s = std::sin(a) / a;
@@ -104,9 +105,9 @@ inline void open_joint(const JointLaw& law, Subcontacts& sub, std::size_t s, dou
   fs -= fs.dot(n) * n;
   fs -= (law.ks * A * dt) * vs;
   const double cap = (still_bonded ? law.cohesion * A : 0.0) + std::max(fn_el, 0.0) * law.tan_phi;
-  const double fs_mag = fs.norm();
   bool slipping = false;
-  if (fs_mag > cap) {
+  if (fs.squaredNorm() > cap * cap) {  // the square root only when slipping
+    const double fs_mag = fs.norm();
     slipping = true;
     // Plastic slip (fs_mag − cap)/(ks·A) under the force `cap`.
     if (law.ks > 0 && A > 0) sub.slip_energy[s] += cap * (fs_mag - cap) / (law.ks * A);
