@@ -98,7 +98,7 @@ bool ContactDetector::needs_detection(const Blocks& b, double dt) const {
   return r1 + r2 > 0.5 * margin_;
 }
 
-DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bool bond_new, double shear_stiffness) {
+DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bool bond_new, const JointLaw& law) {
   auto& im = *impl_;
   DetectionTimes times;
   const Clock::time_point t0 = Clock::now();
@@ -146,7 +146,11 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
   // 4. Subcontacts in candidate order (sorted by block pair), with the
   // history of the detection before, carried by position on the joint.
   build_subcontacts(b, im.candidates, im.patches, im.found, bond_new, contacts);
-  carry_history(b, old, contacts, shear_stiffness, margin_, im.carry);
+  carry_history(b, old, contacts, law.ks, margin_, im.carry);
+  // The normal strain at this pose, as the previous subcontacts hold it and
+  // as the new ones do: the difference is the re-sampling's, not motion's.
+  contacts.resampled_normal_energy +=
+      normal_strain_energy_now(law, b.state, old.sub) - normal_strain_energy_now(law, b.state, contacts.sub);
   contacts.detections = old.detections + 1;
   const Clock::time_point t4 = Clock::now();
 

@@ -21,6 +21,7 @@
 // result does not depend on the number of threads.
 #pragma once
 
+#include "contact/joint_law.hpp"
 #include "contact/subcontacts.hpp"
 #include "core/blocks.hpp"
 
@@ -49,10 +50,13 @@ class ContactDetector {
   // detect(), counting the coming step of length dt at the current speeds.
   bool needs_detection(const Blocks& blocks, double dt = 0) const;
   // Rebuilds `contacts` for the current state, carrying history over by
-  // position (carry_history; `shear_stiffness`, ks in Pa/m, prices the shear
-  // it cannot carry). New subcontacts start bonded when `bond_new` is set
+  // position (carry_history). The joint law's stiffnesses price what the
+  // re-sampling changes at the same pose: the shear it cannot carry
+  // (`dropped_shear_energy`) and the normal strain it removes or adds
+  // (`resampled_normal_energy`), so that a detection leaves the ledger's
+  // balance as it was. New subcontacts start bonded when `bond_new` is set
   // (cohesion/tension at t = 0). Returns the time spent in each stage.
-  DetectionTimes detect(const Blocks& blocks, ContactSet& contacts, bool bond_new, double shear_stiffness);
+  DetectionTimes detect(const Blocks& blocks, ContactSet& contacts, bool bond_new, const JointLaw& law);
 
   // Checkpoints: the poses at the last detection (they decide when the next
   // one runs). Nothing else carries over: the contacts of the detection

@@ -199,6 +199,19 @@ void settle_damping_work(const BlockState& st, Subcontacts& sub, double dt) {
   }
 }
 
+double normal_strain_energy_now(const JointLaw& law, const BlockState& st, const Subcontacts& sub) {
+  double e = 0;
+  for (std::size_t s = 0; s < sub.size(); ++s) {
+    const int r = sub.ref_block[s];
+    const int c = sub.inc_block[s];
+    const Vec3 n = st.rotation[r] * sub.ref_normal_local[s];
+    const Vec3 p = st.position[c] + st.rotation[c] * sub.inc_point_local[s];
+    const double un = sub.ref_offset_local[s] + n.dot(st.position[r]) - n.dot(p);
+    if (un > 0 || sub.bonded[s]) e += 0.5 * law.kn * sub.area[s] * un * un;
+  }
+  return e;
+}
+
 double joint_strain_energy(const JointLaw& law, const Subcontacts& sub) {
   double e = 0;
   for (std::size_t s = 0; s < sub.size(); ++s) {

@@ -63,6 +63,7 @@ void ContactSet::save(ByteWriter& w) const {
   w.put(retired_slip_energy);
   w.put(retired_damping_energy);
   w.put(dropped_shear_energy);
+  w.put(resampled_normal_energy);
   w.put(detections);
 }
 
@@ -105,6 +106,7 @@ void ContactSet::load(ByteReader& r, int blocks) {
   r.get(retired_slip_energy);
   r.get(retired_damping_energy);
   r.get(dropped_shear_energy);
+  r.get(resampled_normal_energy);
   r.get(detections);
 
   // Indices in range: a checkpoint that passed its checksum but was written
@@ -387,6 +389,7 @@ void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& cont
   }
   contacts.dropped_shear_energy =
       old.dropped_shear_energy + (shear_strain_energy(os, ks) - shear_strain_energy(sc, ks));
+  contacts.resampled_normal_energy = old.resampled_normal_energy;
 }
 
 }  // namespace polydem

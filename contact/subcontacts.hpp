@@ -86,6 +86,11 @@ struct ContactSet {
   // new subcontact (a patch that shrank, a subcontact or a pair that is
   // gone), J, cumulative: its own line of the ledger.
   double dropped_shear_energy = 0;
+  // Normal strain energy Σ ½·kn·A·u_n² that detections removed (> 0) or
+  // added (< 0) by re-sampling the joints at the same pose: the patches'
+  // points and tributary areas change while the blocks have not moved, J,
+  // cumulative: a ledger line of its own.
+  double resampled_normal_energy = 0;
   int detections = 0;
 
   // Checkpoints: every array above, bit for bit (see core/byte_stream.hpp).

@@ -93,7 +93,7 @@ void Simulation::start_half_step_back() {
 DetectionTimes Simulation::detect_contacts() {
   settle_damping_work(blocks_.state, contacts_.sub, dt_);
   const DetectionTimes times =
-      detector_.detect(blocks_, contacts_, bond_initial_ && contacts_.detections == 0, law_.ks);
+      detector_.detect(blocks_, contacts_, bond_initial_ && contacts_.detections == 0, law_);
   if (!adaptive_dt_) return times;
   const CriticalStep c = critical_time_step_from_contacts(blocks_, contacts_, joint_, sim_.safety_factor);
   if (c.chosen > 0 && c.chosen < dt_) {
@@ -258,6 +258,7 @@ void Simulation::end_static_stage() {
   load_work_.assign(load_work_.size(), 0.0);
   contacts_.retired_slip_energy = contacts_.retired_damping_energy = 0;
   contacts_.dropped_shear_energy = 0;
+  contacts_.resampled_normal_energy = 0;
   std::fill(contacts_.sub.slip_energy.begin(), contacts_.sub.slip_energy.end(), 0.0);
   std::fill(contacts_.sub.damping_energy.begin(), contacts_.sub.damping_energy.end(), 0.0);
   std::fill(contacts_.sub.damping_force.begin(), contacts_.sub.damping_force.end(), Vec3::Zero());
@@ -461,8 +462,10 @@ EnergyLedger Simulation::energies() const {
     e.damping += contacts_.sub.damping_energy[s];
   }
   e.dropped_shear = contacts_.dropped_shear_energy;
+  e.resampled_normal = contacts_.resampled_normal_energy;
   for (double w : load_work_) e.load_work += w;
-  e.balance = e.kinetic + e.gravitational + e.strain + e.slip + e.damping + e.dropped_shear - e.load_work;
+  e.balance =
+      e.kinetic + e.gravitational + e.strain + e.slip + e.damping + e.dropped_shear + e.resampled_normal - e.load_work;
   return e;
 }
 

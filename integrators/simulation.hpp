@@ -44,15 +44,16 @@ struct EnergyLedger {
   double slip = 0;           // J, dissipated by Coulomb slip
   double damping = 0;        // J, dissipated by joint damping
   double dropped_shear = 0;  // J, elastic shear energy detections could not carry over (ContactSet)
+  double resampled_normal = 0;  // J, normal strain detections removed (> 0) or added (< 0) at the same pose
   double load_work = 0;      // J, work of the ground motion (body force or base)
-  double balance = 0;        // kinetic + gravitational + strain + slip + damping + dropped_shear − load_work
+  double balance = 0;  // kinetic + gravitational + strain + slip + damping + dropped_shear + resampled_normal − load_work
 };
 
 // The energy in play, what a balance error is measured against: every term
 // of the ledger, the potential and the load work by magnitude.
 inline double energy_in_play(const EnergyLedger& e) {
   return e.kinetic + e.strain + std::abs(e.gravitational) + e.slip + e.damping + e.dropped_shear +
-         std::abs(e.load_work);
+         std::abs(e.resampled_normal) + std::abs(e.load_work);
 }
 
 // Wall seconds spent in each stage of Simulation::step(), summed over the

@@ -362,9 +362,10 @@ inline Case slope_high_friction_case(double end_time) {
 // velocity (contact/joint_law.hpp); booked with the velocity half a step
 // behind, as before, it over-counted what the impact dissipates by ~xi*w*dt:
 // balance errors of 7 % at 98 GPa/m and 11 % at 1e14 Pa/m (tolerance then
-// 15 %). Now: 0.019 % at 1e14 Pa/m (tolerance 1 %) and 2.9 % at 98 GPa/m
-// (tolerance 4 %), whose error is the stiff elastic impact itself at
-// w*dt = 0.46, not the dashpot: without any damping it is 7.4 %.
+// 15 %). Now (with the ledger's kinetic term the leapfrog's own,
+// integrators/simulation.cpp): 0.019 % at 1e14 Pa/m (tolerance 1 %) and
+// 3.0 % at 98 GPa/m (tolerance 4 %), whose error is the stiff elastic impact
+// itself at w*dt = 0.46, not the dashpot: without any damping it is 5.6 %.
 inline Case impact_case(double kn, double end_time) {
   Header h;
   h.end_time = end_time;
