@@ -28,7 +28,8 @@ namespace polydem {
 
 // 2: the assessment keeps the monitor block's peak displacement.
 // 3: and the dislodged stones.
-// 4: the subcontacts' pending dashpot force and the dropped shear energy.
+// 4: the subcontacts' pending dashpot force, the dropped shear and the
+//    re-sampled normal strain energies.
 inline constexpr std::uint32_t kCheckpointVersion = 4;
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
 
