@@ -24,6 +24,83 @@ int best_face(const PosedBlock& self, const std::vector<Vec3>& other, double& se
   return best;
 }
 
+// The closest points of segments [p0, p1] and [q0, q1].
+void closest_points(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1, Vec3& on_p, Vec3& on_q) {
+  const Vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
+  const double c = d1.dot(r), b = d1.dot(d2), den = a * e - b * b;
+  double s = den > 0 ? std::clamp((b * f - c * e) / den, 0.0, 1.0) : 0.0;
+  double t = e > 0 ? (b * s + f) / e : 0.0;
+  if (t < 0 || t > 1) {
+    t = std::clamp(t, 0.0, 1.0);
+    s = a > 0 ? std::clamp((b * t - c) / a, 0.0, 1.0) : 0.0;
+  }
+  on_p = p0 + s * d1;
+  on_q = q0 + t * d2;
+}
+
+// The separating-axis test over the axes the face test leaves out: the
+// cross products of one edge of each block. For two convex polyhedra the
+// largest separation over face normals and these axes is exact: the gap if
+// they are apart, minus the depth of the least overlap if they overlap. The
+// edge-to-edge fallback below relies on it for its depth instead of MPR's,
+// which is only an estimate (MPR measures along the direction from one
+// centre to the other): two tumbling stones of the tower test, apart by
+// 0.25 mm, were given 5.9 mm of overlap by MPR, 43 kJ of strain from
+// nowhere (contact_patch_test.cpp has their poses). `on_a`, `on_b`: the closest points of the two edges that support
+// the axis (the crossing).
+struct EdgeAxis {
+  bool found = false;
+  double separation = -std::numeric_limits<double>::infinity();  // of b from a along `axis`
+  Vec3 axis = Vec3::Zero();                                       // unit, from a towards b
+  Vec3 on_a = Vec3::Zero(), on_b = Vec3::Zero();
+};
+
+EdgeAxis best_edge_axis(const PosedBlock& a, const std::vector<Vec3>& wa, const PosedBlock& b,
+                        const std::vector<Vec3>& wb) {
+  EdgeAxis best;
+  const Vec3 ab = b.x - a.x;
+  int best_ea = -1, best_eb = -1;
+  for (std::size_t i = 0; i < a.shape->edges.size(); ++i) {
+    const auto& ea = a.shape->edges[i];
+    const Vec3 da = wa[ea[1]] - wa[ea[0]];
+    for (std::size_t j = 0; j < b.shape->edges.size(); ++j) {
+      const auto& eb = b.shape->edges[j];
+      const Vec3 db = wb[eb[1]] - wb[eb[0]];
+      Vec3 axis = da.cross(db);
+      const double len = axis.norm();
+      if (len <= 1e-9 * da.norm() * db.norm()) continue;  // parallel edges: a face axis covers them
+      axis /= len;
+      if (axis.dot(ab) < 0) axis = -axis;
+      // The edges' own offsets first: an axis whose edges do not support it
+      // is one of the parallel edges' axes and is found again with the right ones.
+      const double top_a = std::max(axis.dot(wa[ea[0]]), axis.dot(wa[ea[1]]));
+      const double low_b = std::min(axis.dot(wb[eb[0]]), axis.dot(wb[eb[1]]));
+      if (low_b - top_a <= best.separation) continue;
+      double max_a = -std::numeric_limits<double>::infinity(), min_b = std::numeric_limits<double>::infinity();
+      for (const Vec3& v : wa) max_a = std::max(max_a, axis.dot(v));
+      for (const Vec3& v : wb) min_b = std::min(min_b, axis.dot(v));
+      const double sep = min_b - max_a;
+      // Supporting edges only: both must reach the extremes along the axis.
+      const double tol = 1e-9 * (1.0 + std::abs(max_a) + std::abs(min_b));
+      if (top_a < max_a - tol || low_b > min_b + tol) continue;
+      if (sep > best.separation) {
+        best.found = true;
+        best.separation = sep;
+        best.axis = axis;
+        best_ea = static_cast<int>(i);
+        best_eb = static_cast<int>(j);
+      }
+    }
+  }
+  if (best.found) {
+    const auto& ea = a.shape->edges[best_ea];
+    const auto& eb = b.shape->edges[best_eb];
+    closest_points(wa[ea[0]], wa[ea[1]], wb[eb[0]], wb[eb[1]], best.on_a, best.on_b);
+  }
+  return best;
+}
+
 }  // namespace
 
 double corner_area_of_size(double size) { return 0.25 * size * size; }
@@ -87,24 +164,41 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
   out.ref_side = ref_side;
 
   // 4. Edge-to-edge: no face separates as well as MPR says. One subcontact
-  // with a nominal area on the MPR normal, acting at MPR's contact point
-  // (the middle of the overlap), moved half the overlap onto the incident
-  // block so that its gap starts at the MPR overlap.
+  // with the area of a corner of a face contact, on the common perpendicular
+  // of the two edges that cross. Its depth and normal come from the
+  // separating-axis test over the edges' cross products (exact, with the
+  // face test); MPR's estimate, used before and still where no edge axis
+  // separates better than the faces, can be far off (best_edge_axis). The
+  // subcontact acts at the crossing on the incident block, its plane through
+  // the crossing on the reference block.
   if (-best > mpr_overlap + 0.25 * margin + 1e-12) {
-    const Vec3 n = (ref_side == 0 ? mpr_dir : Vec3(-mpr_dir)).normalized();
-    const Vec3 point = mpr_pos - (0.5 * mpr_overlap) * n;
-    const double off = n.dot(point) + mpr_overlap;
     // Detection passes the blocks' sizes; computing them here is for callers
     // that do not (tests), and only on this rare edge-to-edge path.
     const double la = a.size > 0 ? a.size : std::cbrt(std::abs(mass_properties(*a.shape).volume));
     const double lb = b.size > 0 ? b.size : std::cbrt(std::abs(mass_properties(*b.shape).volume));
     out.ref_face = -1;
     out.inc_face = -1;
-    out.normal = n;
-    out.offset = off;
     // The tributary area of one corner of a face contact between these
     // blocks: a face of size l over its four corners (docs/contact.md).
     out.area = corner_area_of_size(std::min(la, lb));
+    const EdgeAxis edge = best_edge_axis(a, s.world_a, b, s.world_b);
+    if (edge.found && edge.separation >= std::max(sep_a, sep_b)) {
+      if (edge.separation > margin) return false;
+      const Vec3 n = ref_side == 0 ? edge.axis : Vec3(-edge.axis);
+      const Vec3& on_ref = ref_side == 0 ? edge.on_a : edge.on_b;
+      const Vec3& on_inc = ref_side == 0 ? edge.on_b : edge.on_a;
+      out.normal = n;
+      out.offset = n.dot(on_ref);
+      out.points.push_back({on_inc, n.dot(on_inc) - out.offset, out.area, 0x40000000u});
+      return true;
+    }
+    // Otherwise MPR's contact point (the middle of the overlap), moved half
+    // the overlap onto the incident block so that its gap starts at the MPR
+    // overlap.
+    const Vec3 n = (ref_side == 0 ? mpr_dir : Vec3(-mpr_dir)).normalized();
+    const Vec3 point = mpr_pos - (0.5 * mpr_overlap) * n;
+    out.normal = n;
+    out.offset = n.dot(point) + mpr_overlap;
     out.points.push_back({point, -mpr_overlap, out.area, 0x40000000u});
     return mpr_overlap >= -margin;
   }

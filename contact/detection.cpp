@@ -26,7 +26,7 @@ struct ContactDetector::Impl {
   std::vector<Quat> detected_orientation;
   ContactSet previous;
   std::vector<int> count;
-  std::vector<char> old_used;
+  CarryScratch carry;
 };
 
 namespace {
@@ -98,7 +98,7 @@ bool ContactDetector::needs_detection(const Blocks& b, double dt) const {
   return r1 + r2 > 0.5 * margin_;
 }
 
-DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bool bond_new) {
+DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bool bond_new, const JointLaw& law) {
   auto& im = *impl_;
   DetectionTimes times;
   const Clock::time_point t0 = Clock::now();
@@ -144,9 +144,13 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
   const Clock::time_point t3 = Clock::now();
 
   // 4. Subcontacts in candidate order (sorted by block pair), with the
-  // history of the detection before.
+  // history of the detection before, carried by position on the joint.
   build_subcontacts(b, im.candidates, im.patches, im.found, bond_new, contacts);
-  carry_history(old, contacts, im.old_used);
+  carry_history(b, old, contacts, law.ks, margin_, im.carry);
+  // The normal strain at this pose, as the previous subcontacts hold it and
+  // as the new ones do: the difference is the re-sampling's, not motion's.
+  contacts.resampled_normal_energy +=
+      normal_strain_energy_now(law, b.state, old.sub) - normal_strain_energy_now(law, b.state, contacts.sub);
   contacts.detections = old.detections + 1;
   const Clock::time_point t4 = Clock::now();
 

@@ -5,6 +5,7 @@
 //     2. narrow phase: which candidates are within the margin  narrow_phase.hpp
 //     3. patch: common plane, clipped joint polygon            contact_patch.hpp
 //     4. subcontacts from the patches, history carried over    subcontacts.hpp
+//        by position on the joint
 //     5. per-block gather lists                                gather.hpp
 //
 // Detection runs only when some pair of blocks may have closed by more than
@@ -20,6 +21,7 @@
 // result does not depend on the number of threads.
 #pragma once
 
+#include "contact/joint_law.hpp"
 #include "contact/subcontacts.hpp"
 #include "core/blocks.hpp"
 
@@ -47,10 +49,14 @@ class ContactDetector {
   // True when some pair may have closed by more than half the margin since
   // detect(), counting the coming step of length dt at the current speeds.
   bool needs_detection(const Blocks& blocks, double dt = 0) const;
-  // Rebuilds `contacts` for the current state, carrying history over.
-  // New subcontacts start bonded when `bond_new` is set (cohesion/tension at t = 0).
-  // Returns the time spent in each stage.
-  DetectionTimes detect(const Blocks& blocks, ContactSet& contacts, bool bond_new);
+  // Rebuilds `contacts` for the current state, carrying history over by
+  // position (carry_history). The joint law's stiffnesses price what the
+  // re-sampling changes at the same pose: the shear it cannot carry
+  // (`dropped_shear_energy`) and the normal strain it removes or adds
+  // (`resampled_normal_energy`), so that a detection leaves the ledger's
+  // balance as it was. New subcontacts start bonded when `bond_new` is set
+  // (cohesion/tension at t = 0). Returns the time spent in each stage.
+  DetectionTimes detect(const Blocks& blocks, ContactSet& contacts, bool bond_new, const JointLaw& law);
 
   // Checkpoints: the poses at the last detection (they decide when the next
   // one runs). Nothing else carries over: the contacts of the detection

@@ -18,12 +18,49 @@ JointLaw make_joint_law(const JointSpec& spec) {
 
 namespace {
 
+// The rotation matrix of the rotation vector θ (Rodrigues):
+// R = I + (sin a / a)·[θ]× + ((1 − cos a)/a²)·[θ]×², a = |θ|. A step turns a
+// joint by far less than 1e-3 rad, where the series of the two factors are
+// exact to round-off and avoid sin/cos. θ = 0 gives the identity exactly.
+inline Mat3 rotation_matrix(const Vec3& t) {
+  const double a2 = t.squaredNorm();
+  double s, c;
+  if (a2 < 1e-6) {  // constants, not divisions: this runs for every pair at every step
+    constexpr double k6 = 1.0 / 6.0, k24 = 1.0 / 24.0, k120 = 1.0 / 120.0, k720 = 1.0 / 720.0;
+    s = 1.0 - a2 * k6 + (a2 * a2) * k120;
+    c = 0.5 - a2 * k24 + (a2 * a2) * k720;
+  } else {
+    const double a = std::sqrt(a2);
+    s = std::sin(a) / a;
+    c = (1.0 - std::cos(a)) / a2;
+  }
+  // [θ]×² = θθᵀ − a²·I.
+  Mat3 r = (c * t) * t.transpose();
+  r.diagonal().array() += 1.0 - c * a2;
+  r(0, 1) -= s * t.z();
+  r(0, 2) += s * t.y();
+  r(1, 0) += s * t.z();
+  r(1, 2) -= s * t.x();
+  r(2, 0) -= s * t.y();
+  r(2, 1) += s * t.x();
+  return r;
+}
+
+// The joint's rotation over the last step (see the header): the reference
+// block's, with the twist about the normal n the mean of both blocks'.
+inline Mat3 joint_spin(const Vec3& w_ref, const Vec3& w_inc, const Vec3& n, double dt) {
+  return rotation_matrix(dt * (w_ref + (0.5 * (w_inc - w_ref).dot(n)) * n));
+}
+
 // A joint that opens can carry no shear: Coulomb's cap is zero. Whatever
 // elastic shear energy it still held is released by slip, so the ledger
-// books it as slip dissipation.
-inline void open_joint(const JointLaw& law, Subcontacts& sub, std::size_t s) {
+// books it as slip dissipation. `pending`: the last step's dashpot power
+// still to book (its second half), which an opening joint owes all the same.
+inline void open_joint(const JointLaw& law, Subcontacts& sub, std::size_t s, double pending, double dt) {
   const Vec3& fs = sub.shear_force[s];
   if (law.ks > 0 && sub.area[s] > 0) sub.slip_energy[s] += 0.5 * fs.squaredNorm() / (law.ks * sub.area[s]);
+  sub.damping_energy[s] += 0.5 * dt * pending;
+  sub.damping_force[s] = Vec3::Zero();
   sub.force[s] = Vec3::Zero();
   sub.normal_force[s] = 0;
   sub.shear_force[s] = Vec3::Zero();
@@ -31,15 +68,20 @@ inline void open_joint(const JointLaw& law, Subcontacts& sub, std::size_t s) {
 
 // The law for one subcontact whose geometry and relative velocity at its
 // point are known: normal n (unit, from the reference block), overlap u_n,
-// relative velocity of the incident block at the point.
-[[gnu::always_inline]] inline void subcontact_law(const JointLaw& law, Subcontacts& sub, std::size_t s, const Vec3& n, double un,
-                           const Vec3& vrel, double dt) {
+// relative velocity of the incident block at the point, the joint's
+// rotation over the last step.
+[[gnu::always_inline]] inline void subcontact_law(const JointLaw& law, Subcontacts& sub, std::size_t s,
+                                                  const Vec3& n, double un, const Vec3& vrel, const Mat3& spin,
+                                                  double dt) {
   const double vn = vrel.dot(n);
   const Vec3 vs = vrel - vn * n;
   const double A = sub.area[s];
   const bool bonded = sub.bonded[s] != 0;
+  // The last step's dashpot force with this step's velocity: the second
+  // half of that step's work (the header's centred velocity).
+  const double pending = -sub.damping_force[s].dot(vrel);
   if (un <= 0 && !bonded) {  // open joint: no force, no shear memory
-    open_joint(law, sub, s);
+    open_joint(law, sub, s, pending, dt);
     return;
   }
   double fn_el = law.kn * A * un;
@@ -50,20 +92,22 @@ inline void open_joint(const JointLaw& law, Subcontacts& sub, std::size_t s) {
   if (broken || (un <= 0 && law.tensile_strength == 0)) {
     sub.bonded[s] = 0;
     if (un <= 0) {
-      open_joint(law, sub, s);
+      open_joint(law, sub, s, pending, dt);
       return;
     }
   }
   const bool still_bonded = sub.bonded[s] != 0;
 
-  // Shear: rotate the stored force into the current plane, then increment.
-  Vec3 fs = sub.shear_force[s];
+  // Shear: turn the stored force with the joint, keep it in the current
+  // plane (round-off, and the O(dt²) between the two spins' split), then
+  // increment.
+  Vec3 fs = spin * sub.shear_force[s];
   fs -= fs.dot(n) * n;
   fs -= (law.ks * A * dt) * vs;
   const double cap = (still_bonded ? law.cohesion * A : 0.0) + std::max(fn_el, 0.0) * law.tan_phi;
-  const double fs_mag = fs.norm();
   bool slipping = false;
-  if (fs_mag > cap) {
+  if (fs.squaredNorm() > cap * cap) {  // the square root only when slipping
+    const double fs_mag = fs.norm();
     slipping = true;
     // Plastic slip (fs_mag − cap)/(ks·A) under the force `cap`.
     if (law.ks > 0 && A > 0) sub.slip_energy[s] += cap * (fs_mag - cap) / (law.ks * A);
@@ -81,8 +125,11 @@ inline void open_joint(const JointLaw& law, Subcontacts& sub, std::size_t s) {
   }
   if (sub.bonded[s] == 0 && fn_total < 0) fn_total = 0;  // no tension
   const double fn_damp = fn_total - fn_el;
-  // Power of the damping forces (≥ 0): they oppose the relative motion.
-  sub.damping_energy[s] += dt * (fn_damp * (-vn) - fs_damp.dot(vs));
+  // The dashpot's work over the step at the centred velocity: half now with
+  // the velocity the force came from, half at the next step (pending).
+  const Vec3 f_damp = fn_damp * n + fs_damp;
+  sub.damping_energy[s] += 0.5 * dt * (pending - f_damp.dot(vrel));
+  sub.damping_force[s] = f_damp;
   sub.normal_force[s] = fn_total;
   sub.force[s] = fn_total * n + fs + fs_damp;
 }
@@ -103,7 +150,7 @@ void compute_joint_forces(const JointLaw& law, const BlockState& st, Subcontacts
                       (st.velocity[r] + st.angular_velocity[r].cross(p - xr));
     sub.point[s] = p;
     sub.overlap[s] = un;
-    subcontact_law(law, sub, s, n, un, vrel, dt);
+    subcontact_law(law, sub, s, n, un, vrel, joint_spin(st.angular_velocity[r], st.angular_velocity[c], n, dt), dt);
   }
 }
 
@@ -125,6 +172,7 @@ void compute_pair_forces(const JointLaw& law, const BlockState& st, const std::v
     const Vec3& wc = st.angular_velocity[c];
     const Vec3& wr = st.angular_velocity[r];
     const Vec3 xcr = xc - xr;
+    const Mat3 spin = joint_spin(wr, wc, n, dt);
     for (std::size_t s = s0; s < s0 + static_cast<std::size_t>(cp.count); ++s) {
       const Vec3 arm_c = Rc * sub.inc_point_local[s];  // p − x_c
       const Vec3 p = xc + arm_c;
@@ -132,9 +180,36 @@ void compute_pair_forces(const JointLaw& law, const BlockState& st, const std::v
       const Vec3 vrel = dv + wc.cross(arm_c) - wr.cross(arm_c + xcr);
       sub.point[s] = p;
       sub.overlap[s] = un;
-      subcontact_law(law, sub, s, n, un, vrel, dt);
+      subcontact_law(law, sub, s, n, un, vrel, spin, dt);
     }
   }
+}
+
+void settle_damping_work(const BlockState& st, Subcontacts& sub, double dt) {
+  for (std::size_t s = 0; s < sub.size(); ++s) {
+    const Vec3& f = sub.damping_force[s];
+    if (f.isZero(0.0)) continue;
+    const int r = sub.ref_block[s];
+    const int c = sub.inc_block[s];
+    const Vec3 p = st.position[c] + st.rotation[c] * sub.inc_point_local[s];
+    const Vec3 vrel = (st.velocity[c] + st.angular_velocity[c].cross(p - st.position[c])) -
+                      (st.velocity[r] + st.angular_velocity[r].cross(p - st.position[r]));
+    sub.damping_energy[s] += 0.5 * dt * (-f.dot(vrel));
+    sub.damping_force[s] = Vec3::Zero();
+  }
+}
+
+double normal_strain_energy_now(const JointLaw& law, const BlockState& st, const Subcontacts& sub) {
+  double e = 0;
+  for (std::size_t s = 0; s < sub.size(); ++s) {
+    const int r = sub.ref_block[s];
+    const int c = sub.inc_block[s];
+    const Vec3 n = st.rotation[r] * sub.ref_normal_local[s];
+    const Vec3 p = st.position[c] + st.rotation[c] * sub.inc_point_local[s];
+    const double un = sub.ref_offset_local[s] + n.dot(st.position[r]) - n.dot(p);
+    if (un > 0 || sub.bonded[s]) e += 0.5 * law.kn * sub.area[s] * un * un;
+  }
+  return e;
 }
 
 double joint_strain_energy(const JointLaw& law, const Subcontacts& sub) {

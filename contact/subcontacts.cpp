@@ -1,6 +1,8 @@
 #include "contact/subcontacts.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace polydem {
 
@@ -23,6 +25,7 @@ void Subcontacts::resize(std::size_t n) {
   normal_force.resize(n);
   slip_energy.resize(n);
   damping_energy.resize(n);
+  damping_force.resize(n);
 }
 
 void ContactSet::save(ByteWriter& w) const {
@@ -53,11 +56,14 @@ void ContactSet::save(ByteWriter& w) const {
   w.put(sub.normal_force);
   w.put(sub.slip_energy);
   w.put(sub.damping_energy);
+  w.put(sub.damping_force);
   w.put(gather_offset);
   w.put(gather_sub);
   w.put(gather_sign);
   w.put(retired_slip_energy);
   w.put(retired_damping_energy);
+  w.put(dropped_shear_energy);
+  w.put(resampled_normal_energy);
   w.put(detections);
 }
 
@@ -93,11 +99,14 @@ void ContactSet::load(ByteReader& r, int blocks) {
   r.get_sized(sub.normal_force, n, "subcontacts.normal_force");
   r.get_sized(sub.slip_energy, n, "subcontacts.slip_energy");
   r.get_sized(sub.damping_energy, n, "subcontacts.damping_energy");
+  r.get_sized(sub.damping_force, n, "subcontacts.damping_force");
   r.get_sized(gather_offset, static_cast<std::size_t>(blocks) + 1, "contacts.gather_offset");
   r.get_sized(gather_sub, 2 * n, "contacts.gather_sub");
   r.get_sized(gather_sign, 2 * n, "contacts.gather_sign");
   r.get(retired_slip_energy);
   r.get(retired_damping_energy);
+  r.get(dropped_shear_energy);
+  r.get(resampled_normal_energy);
   r.get(detections);
 
   // Indices in range: a checkpoint that passed its checksum but was written
@@ -175,6 +184,7 @@ void build_subcontacts(const Blocks& b, const std::vector<std::pair<int, int>>& 
       sc.bonded[s] = bond_new ? 1 : 0;
       sc.slip_energy[s] = 0;
       sc.damping_energy[s] = 0;
+      sc.damping_force[s] = Vec3::Zero();
       sc.force[s] = Vec3::Zero();
       sc.point[s] = pt.point;
       sc.overlap[s] = -pt.separation;
@@ -185,37 +195,201 @@ void build_subcontacts(const Blocks& b, const std::vector<std::pair<int, int>>& 
   }
 }
 
-void carry_history(const ContactSet& old, ContactSet& contacts, std::vector<char>& old_used) {
-  Subcontacts& sc = contacts.sub;
-  old_used.assign(old.sub.size(), 0);
-  for (const ContactPair& cp : contacts.pairs) {
-    const ContactPair* op = find_pair(old, cp.a, cp.b);
-    if (!op) continue;
-    for (int s = cp.first; s < cp.first + cp.count; ++s) {
-      for (int o = op->first; o < op->first + op->count; ++o) {
-        if (old.sub.key[o] != sc.key[s] || old_used[o]) continue;
-        old_used[o] = 1;
-        // The shear history is the elastic shear displacement F_s/(ks·A): carry
-        // it, so the force scales with the new tributary area. Carrying the
-        // force onto a much smaller area (a patch clipped to a sliver) would
-        // store F_s²/(2·ks·A) of strain energy from nowhere, which the next
-        // step books as slip (the spire's collapse: 0.6 MJ at once).
-        const double a_old = old.sub.area[o];
-        sc.shear_force[s] = a_old > 0 ? Vec3(old.sub.shear_force[o] * (sc.area[s] / a_old)) : Vec3::Zero();
-        sc.bonded[s] = old.sub.bonded[o];
-        sc.slip_energy[s] = old.sub.slip_energy[o];
-        sc.damping_energy[s] = old.sub.damping_energy[o];
-        break;
+double shear_strain_energy(const Subcontacts& sub, double ks) {
+  double e = 0;
+  if (ks <= 0) return e;
+  for (std::size_t s = 0; s < sub.size(); ++s)
+    if (sub.area[s] > 0) e += 0.5 * sub.shear_force[s].squaredNorm() / (ks * sub.area[s]);
+  return e;
+}
+
+// Carrying history by position.
+//
+// The joint between two blocks is a surface, and what it remembers (how far
+// it has been sheared elastically, whether its bond still holds) belongs to
+// places on that surface. The subcontacts are only where a detection
+// happened to sample it: the vertices of the clipped polygon. Their
+// topology changes for reasons that have nothing to do with the joint's
+// state: a cube twisted by a hundredth of a radian on an equal cube turns
+// its four corner subcontacts into eight crossings, four near the corners
+// and four near the middles of the edges; a block sliding over an edge
+// turns two corners into two crossings; the reference face may change
+// sides. Matching by clip feature lost the whole shear history at each such
+// change, and its strain energy vanished from the ledger.
+//
+// So the previous subcontacts are read as samples of a field. Their incident
+// points are fixed in their block, so evaluated at the current pose they are
+// where those material points of the joint are now; projected on the joint
+// plane they span the previous patch. The elastic shear stress F/A is
+// interpolated linearly over it (a fan about the centroid, the centroid
+// taking the mean: exact for a uniform shear and for a twist, whose field is
+// linear), and a new subcontact takes the stress at its point times its own
+// area, i.e. the elastic shear displacement F/(ks·A) carries. Taking the
+// nearest previous subcontact's instead (tried first) left the crossings in
+// the middle of a twisted cube's edges, half a metre from any corner, with
+// no shear, and the cube sprang back about a twisted position.
+// A point outside the previous patch (the patch grew, or slid) takes the
+// value of the nearest edge within max(margin, a tenth of the patch's
+// radius) — the margin bounds how far a point can slide between detections —
+// and beyond that is contact area that is new, without history.
+//
+// Strain energy must not appear from the resampling: a pair whose new shear
+// energy exceeds its previous one has its new forces scaled down to it.
+// Whatever is not handed on — a patch that shrank, a coarser sampling of the
+// same field, a force turned out of a new plane, a pair that is gone — is
+// the difference of the shear strain energies before and after, booked as
+// dropped.
+namespace {
+
+// Signed area (×2) of the triangle (a, b, c) seen along n.
+inline double signed_area(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& n) {
+  return (b - a).cross(c - a).dot(n);
+}
+
+// The previous patch of one pair: its points [first, first + count) in the
+// scratch arrays, their centroid and mean stress.
+struct PreviousPatch {
+  int first = 0, count = 0;
+  Vec3 centroid = Vec3::Zero(), mean_stress = Vec3::Zero();
+  double tolerance = 0;
+};
+
+// The stress interpolated at q; false if q is farther than the tolerance
+// from the patch (in the plane normal to n).
+bool interpolate_stress(const PreviousPatch& pp, const CarryScratch& sc, const Vec3& q, const Vec3& n,
+                        double tiny_area, Vec3& stress) {
+  const Vec3* p = sc.old_point.data() + pp.first;
+  const Vec3* t = sc.old_stress.data() + pp.first;
+  const int m = pp.count;
+  if (m >= 3) {  // inside one of the fan's triangles (c, p_j, p_j+1)?
+    const Vec3& c = pp.centroid;
+    for (int j = 0; j < m; ++j) {
+      const int k = (j + 1) % m;
+      const double whole = signed_area(c, p[j], p[k], n);
+      if (std::abs(whole) <= tiny_area) continue;
+      const double wj = signed_area(c, q, p[k], n) / whole;
+      const double wk = signed_area(c, p[j], q, n) / whole;
+      const double wc = 1.0 - wj - wk;
+      constexpr double kOnEdge = -1e-12;
+      if (wj >= kOnEdge && wk >= kOnEdge && wc >= kOnEdge) {
+        stress = wc * pp.mean_stress + wj * t[j] + wk * t[k];
+        return true;
       }
     }
   }
+  // Outside (or a patch of one or two points): the nearest point of the
+  // boundary, interpolated along its edge.
+  double best = std::numeric_limits<double>::infinity();
+  const int edges = m >= 3 ? m : m - 1;
+  if (m == 1) {
+    Vec3 d = q - p[0];
+    d -= d.dot(n) * n;
+    best = d.squaredNorm();
+    stress = t[0];
+  }
+  for (int j = 0; j < edges; ++j) {
+    const int k = (j + 1) % m;
+    Vec3 e = p[k] - p[j];
+    e -= e.dot(n) * n;
+    Vec3 w = q - p[j];
+    w -= w.dot(n) * n;
+    const double len2 = e.squaredNorm();
+    const double u = len2 > 0 ? std::clamp(w.dot(e) / len2, 0.0, 1.0) : 0.0;
+    const double d2 = (w - u * e).squaredNorm();
+    if (d2 < best) {
+      best = d2;
+      stress = (1.0 - u) * t[j] + u * t[k];
+    }
+  }
+  return best <= pp.tolerance * pp.tolerance;
+}
+
+}  // namespace
+
+void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& contacts, double ks, double margin,
+                   CarryScratch& scratch) {
+  Subcontacts& sc = contacts.sub;
+  const Subcontacts& os = old.sub;
+  const BlockState& st = blocks.state;
+  const std::size_t n_old = os.size(), n_new = sc.size();
+  scratch.old_point.resize(n_old);
+  scratch.old_stress.resize(n_old);
+  for (std::size_t o = 0; o < n_old; ++o) {
+    const int c = os.inc_block[o];
+    scratch.old_point[o] = st.position[c] + st.rotation[c] * os.inc_point_local[o];
+    scratch.old_stress[o] = os.area[o] > 0 ? Vec3(os.shear_force[o] / os.area[o]) : Vec3(Vec3::Zero());
+  }
+  scratch.source.assign(n_new, -1);
+  scratch.dissipation_taken.assign(n_old, 0);
+
+  for (const ContactPair& cp : contacts.pairs) {
+    const ContactPair* op = find_pair(old, cp.a, cp.b);
+    if (!op || op->count == 0 || cp.count == 0) continue;
+    PreviousPatch pp;
+    pp.first = op->first;
+    pp.count = op->count;
+    for (int o = op->first; o < op->first + op->count; ++o) {
+      pp.centroid += scratch.old_point[o];
+      pp.mean_stress += scratch.old_stress[o];
+    }
+    pp.centroid /= static_cast<double>(op->count);
+    pp.mean_stress /= static_cast<double>(op->count);
+    double radius2 = 0;
+    for (int o = op->first; o < op->first + op->count; ++o)
+      radius2 = std::max(radius2, (scratch.old_point[o] - pp.centroid).squaredNorm());
+    pp.tolerance = std::max(margin, 0.1 * std::sqrt(radius2));
+    const double tiny_area = 1e-12 * radius2;
+    const Vec3 n = st.rotation[cp.ref_block] * sc.ref_normal_local[cp.first];
+    // The previous forces were on the previous incident block; if the
+    // reference face changed sides, the new incident block feels the reaction.
+    const double side = os.inc_block[op->first] == sc.inc_block[cp.first] ? 1.0 : -1.0;
+    double e_old = 0, e_new = 0;
+    for (int o = op->first; o < op->first + op->count; ++o)
+      if (os.area[o] > 0) e_old += os.shear_force[o].squaredNorm() / os.area[o];
+    for (int s = cp.first; s < cp.first + cp.count; ++s) {
+      Vec3 stress = Vec3::Zero();
+      if (!interpolate_stress(pp, scratch, sc.point[s], n, tiny_area, stress)) continue;
+      Vec3 f = (side * sc.area[s]) * stress;
+      f -= f.dot(n) * n;
+      sc.shear_force[s] = f;
+      if (sc.area[s] > 0) e_new += f.squaredNorm() / sc.area[s];
+      // Bond and dissipation: the nearest previous subcontact's.
+      double best = std::numeric_limits<double>::infinity();
+      int src = -1;
+      for (int o = op->first; o < op->first + op->count; ++o) {
+        Vec3 d = sc.point[s] - scratch.old_point[o];
+        d -= d.dot(n) * n;
+        if (d.squaredNorm() < best) {
+          best = d.squaredNorm();
+          src = o;
+        }
+      }
+      scratch.source[s] = src;
+      sc.bonded[s] = os.bonded[src];
+      if (!scratch.dissipation_taken[src]) {
+        scratch.dissipation_taken[src] = 1;
+        sc.slip_energy[s] = os.slip_energy[src];
+        sc.damping_energy[s] = os.damping_energy[src];
+      }
+    }
+    if (e_new > e_old) {  // the resampling must not make strain energy
+      const double scale = std::sqrt(e_old / e_new);
+      for (int s = cp.first; s < cp.first + cp.count; ++s) sc.shear_force[s] *= scale;
+    }
+  }
+
+  // The ledger: dissipation no one took retires; shear energy not handed on
+  // is dropped.
   contacts.retired_slip_energy = old.retired_slip_energy;
   contacts.retired_damping_energy = old.retired_damping_energy;
-  for (std::size_t o = 0; o < old.sub.size(); ++o) {
-    if (old_used[o]) continue;
-    contacts.retired_slip_energy += old.sub.slip_energy[o];
-    contacts.retired_damping_energy += old.sub.damping_energy[o];
+  for (std::size_t o = 0; o < n_old; ++o) {
+    if (scratch.dissipation_taken[o]) continue;
+    contacts.retired_slip_energy += os.slip_energy[o];
+    contacts.retired_damping_energy += os.damping_energy[o];
   }
+  contacts.dropped_shear_energy =
+      old.dropped_shear_energy + (shear_strain_energy(os, ks) - shear_strain_energy(sc, ks));
+  contacts.resampled_normal_energy = old.resampled_normal_energy;
 }
 
 }  // namespace polydem

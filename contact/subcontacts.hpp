@@ -14,6 +14,11 @@
 // the blocks exactly until the next detection, which only rebuilds the patch
 // when some block has moved more than half the contact margin.
 //
+// The history a joint carries (elastic shear, bond, dissipation so far)
+// belongs to a place on the joint, not to a vertex of the clipped polygon:
+// a detection hands it to the new subcontacts by position (carry_history),
+// and books the elastic shear energy it cannot hand on.
+//
 // Storage is a struct of arrays indexed by subcontact; one force slot per
 // subcontact is written in parallel and gathered per block in a fixed order
 // (see gather.hpp), so results do not depend on the number of threads.
@@ -43,7 +48,7 @@ struct Subcontacts {
   // Identity.
   std::vector<int> pair;
   std::vector<int> ref_block, inc_block;
-  std::vector<std::uint64_t> key;  // (pair-local) features that make the subcontact
+  std::vector<std::uint64_t> key;  // the clipped feature that makes it (pair-local; not used to carry history)
   // Body-fixed geometry.
   std::vector<Vec3> ref_normal_local;   // reference face normal, ref body frame
   std::vector<double> ref_offset_local;  // plane n·x = offset, ref body frame
@@ -59,6 +64,9 @@ struct Subcontacts {
   std::vector<double> normal_force;  // total normal force incl. damping, N
   std::vector<double> slip_energy;     // cumulative slip dissipation, J
   std::vector<double> damping_energy;  // cumulative damping dissipation, J
+  // The dashpot force of the last step (world, on the incident block, N):
+  // half of its work is booked with the next step's velocity (joint_law.hpp).
+  std::vector<Vec3> damping_force;
 
   std::size_t size() const { return key.size(); }
   void clear();
@@ -74,6 +82,15 @@ struct ContactSet {
   std::vector<double> gather_sign;  // +1 incident, −1 reference
   // Dissipation of subcontacts that no longer exist (kept for the ledger).
   double retired_slip_energy = 0, retired_damping_energy = 0;
+  // Elastic shear energy F²/(2·ks·A) that detections could not hand on to a
+  // new subcontact (a patch that shrank, a subcontact or a pair that is
+  // gone), J, cumulative: its own line of the ledger.
+  double dropped_shear_energy = 0;
+  // Normal strain energy Σ ½·kn·A·u_n² that detections removed (> 0) or
+  // added (< 0) by re-sampling the joints at the same pose: the patches'
+  // points and tributary areas change while the blocks have not moved, J,
+  // cumulative: a ledger line of its own.
+  double resampled_normal_energy = 0;
   int detections = 0;
 
   // Checkpoints: every array above, bit for bit (see core/byte_stream.hpp).
@@ -90,7 +107,10 @@ const ContactPair* find_pair(const ContactSet& set, int a, int b);
 // The key of a subcontact within its pair: which block holds the reference
 // face (ref_side 0: the pair's a), the reference and incident faces, and the
 // clipped feature of contact_patch.cpp (incident vertex, or the crossing of a
-// reference side plane with an incident edge).
+// reference side plane with an incident edge). It names the subcontact
+// (tests, debugging); history goes by position (carry_history), since the
+// clip's topology changes when a corner crosses an edge or the reference
+// face changes sides while the joint itself has hardly moved.
 std::uint64_t subcontact_key(int ref_side, int ref_face, int inc_face, std::uint32_t feature);
 
 // Rebuilds `out.pairs` and `out.sub` from the patches found for the
@@ -104,17 +124,45 @@ void build_subcontacts(const Blocks& blocks, const std::vector<std::pair<int, in
                        const std::vector<Patch>& patches, const std::vector<char>& found, bool bond_new,
                        ContactSet& out);
 
-// History carry-over from one detection to the next. A subcontact of
-// `current` whose pair existed in `previous` and whose key matches a
-// subcontact of that pair not matched yet takes over its elastic shear
-// displacement (the shear force scaled by the ratio of the areas), bond
-// and cumulative slip and damping dissipation (the first match in
-// `previous` order). A subcontact of `previous` that matches none is gone:
-// its dissipation is retired, i.e. added (in `previous` order) to the
-// retired totals, which `current` takes over from `previous`. So the
-// ledger's dissipation never drops when a joint opens or its patch changes.
-// `matched`: scratch reused across detections (one flag per previous
-// subcontact).
-void carry_history(const ContactSet& previous, ContactSet& current, std::vector<char>& matched);
+// Scratch for carry_history, reused across detections (no allocation once
+// warmed up).
+struct CarryScratch {
+  std::vector<Vec3> old_point;          // previous subcontacts' incident points at the current pose
+  std::vector<Vec3> old_stress;         // previous subcontacts' elastic shear stress F/A, Pa
+  std::vector<int> source;              // per new subcontact: the nearest previous one on the patch, or -1
+  std::vector<char> dissipation_taken;  // per previous subcontact: its dissipation went to an inheritor
+};
+
+// History carry-over from one detection to the next, by position on the
+// joint (see subcontacts.cpp for the reasoning). For each block pair found
+// again, the previous subcontacts' incident points are evaluated at the
+// current pose of `blocks` (they are fixed in their block): they span the
+// previous patch, and their elastic shear stresses F/A sample the joint's
+// shear field. Each new subcontact (built at the current pose) lying on the
+// previous patch — inside it, or outside by at most max(margin, a tenth of
+// the patch's radius about its centroid), in the joint plane — takes
+//   - the shear stress interpolated linearly at its point (a fan of
+//     triangles about the previous points' centroid, whose value is their
+//     mean, so a uniform shear and a twist are reproduced exactly; along
+//     the nearest edge outside it), times its own area: the elastic shear
+//     displacement carries, the force goes with the area; turned onto the
+//     new incident block if the reference face changed sides, and
+//     projected onto the new plane;
+//   - the bond of the nearest previous subcontact (ties: the first);
+//   - the cumulative slip and damping dissipation of that nearest one, if
+//     no subcontact before it in `current` took them (never counted twice);
+//     a previous subcontact no one takes retires its dissipation into the
+//     totals.
+// No strain energy is created: if a pair's new shear energy exceeds its
+// previous one, the pair's new forces are scaled down to it. The elastic
+// shear energy Σ F²/(2·ks·A) of `previous` minus that of `current` (≥ 0: a
+// patch that shrank, a coarser sampling, pairs that are gone) is added to
+// `dropped_shear_energy`; the totals are taken over from `previous`. So the
+// ledger's balance is unchanged by a detection.
+void carry_history(const Blocks& blocks, const ContactSet& previous, ContactSet& current, double shear_stiffness,
+                   double margin, CarryScratch& scratch);
+
+// Elastic shear energy Σ |F_s|²/(2·ks·A) of the subcontacts, J.
+double shear_strain_energy(const Subcontacts& sub, double shear_stiffness);
 
 }  // namespace polydem

@@ -26,6 +26,7 @@
 #include "core/ground_motion.hpp"
 #include "integrators/critical_time_step.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace polydem {
@@ -37,14 +38,23 @@ struct InstabilityError : std::runtime_error {
 };
 
 struct EnergyLedger {
-  double kinetic = 0;        // J
+  double kinetic = 0;        // J, ½·m·v₋·v₊ (the half steps around the force time) and its rotational part
   double gravitational = 0;  // J, −Σ m g·x relative to t = 0
   double strain = 0;         // J, stored in the joints
   double slip = 0;           // J, dissipated by Coulomb slip
   double damping = 0;        // J, dissipated by joint damping
+  double dropped_shear = 0;  // J, elastic shear energy detections could not carry over (ContactSet)
+  double resampled_normal = 0;  // J, normal strain detections removed (> 0) or added (< 0) at the same pose
   double load_work = 0;      // J, work of the ground motion (body force or base)
-  double balance = 0;        // kinetic + gravitational + strain + slip + damping − load_work
+  double balance = 0;  // kinetic + gravitational + strain + slip + damping + dropped_shear + resampled_normal − load_work
 };
+
+// The energy in play, what a balance error is measured against: every term
+// of the ledger, the potential and the load work by magnitude.
+inline double energy_in_play(const EnergyLedger& e) {
+  return e.kinetic + e.strain + std::abs(e.gravitational) + e.slip + e.damping + e.dropped_shear +
+         std::abs(e.resampled_normal) + std::abs(e.load_work);
+}
 
 // Wall seconds spent in each stage of Simulation::step(), summed over the
 // steps this object has run (std::chrono::steady_clock; cf. Box2D's
@@ -93,7 +103,8 @@ class Simulation {
   const GroundMotion& ground_motion() const { return motion_; }
   const JointLaw& joint_law() const { return law_; }
 
-  // Energies at the time of the last force evaluation (time() − dt()).
+  // Energies at the time of the last force evaluation (time() − dt()); the
+  // kinetic term is ½·m·v(t − dt/2)·v(t + dt/2) (see energies() in the .cpp).
   EnergyLedger energies() const;
   // Velocity and angular velocity of block i at that time.
   Vec3 velocity_at_force_time(int i) const { return velocity_mid_[i]; }

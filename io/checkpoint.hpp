@@ -28,7 +28,9 @@ namespace polydem {
 
 // 2: the assessment keeps the monitor block's peak displacement.
 // 3: and the dislodged stones.
-inline constexpr std::uint32_t kCheckpointVersion = 3;
+// 4: the subcontacts' pending dashpot force, the dropped shear and the
+//    re-sampled normal strain energies.
+inline constexpr std::uint32_t kCheckpointVersion = 4;
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
 
 // A checkpoint file that cannot be used; the message says why.

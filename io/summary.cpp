@@ -152,6 +152,8 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   e.set("strain_J", r.energy.strain);
   e.set("slip_dissipation_J", r.energy.slip);
   e.set("damping_dissipation_J", r.energy.damping);
+  e.set("dropped_shear_J", r.energy.dropped_shear);
+  e.set("resampled_normal_J", r.energy.resampled_normal);
   e.set("load_work_J", r.energy.load_work);
   e.set("balance_J", r.energy.balance);
   e.set("reference_J", r.energy_reference);

@@ -411,8 +411,7 @@ class EnergyCheck : public CheckMonitor {
       e0_ = e;
       first_ = false;
     }
-    reference_ = std::max(reference_, e.kinetic + e.strain + std::abs(e.gravitational) + e.slip + e.damping +
-                                          std::abs(e.load_work));
+    reference_ = std::max(reference_, energy_in_play(e));
     worst_drift_ = std::max(worst_drift_, std::abs(e.balance - e0_.balance));
     const double mech = e.kinetic + e.gravitational + e.strain - e.load_work;
     const double mech0 = e0_.kinetic + e0_.gravitational + e0_.strain - e0_.load_work;

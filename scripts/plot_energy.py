@@ -33,6 +33,8 @@ TERMS = [  # dataset, label, style
     ("strain", "strain", dict(color="tab:green")),
     ("slip", "slip (dissipated)", dict(color="tab:orange")),
     ("damping", "damping (dissipated)", dict(color="tab:purple")),
+    ("dropped_shear", "shear dropped at detections", dict(color="tab:gray")),
+    ("resampled_normal", "normal strain re-sampled at detections", dict(color="tab:olive")),
     ("load_work", "load work", dict(color="tab:red")),
     ("balance", "balance", dict(color="black", lw=1.8, ls="--")),
 ]
@@ -61,7 +63,9 @@ def main(argv=None):
     zero = np.zeros_like(time)
     reference = np.maximum.accumulate(terms.get("kinetic", zero) + terms.get("strain", zero)
                                       + np.abs(terms.get("gravitational", zero)) + terms.get("slip", zero)
-                                      + terms.get("damping", zero) + np.abs(terms.get("load_work", zero)))
+                                      + terms.get("damping", zero) + terms.get("dropped_shear", zero)
+                                      + np.abs(terms.get("resampled_normal", zero))
+                                      + np.abs(terms.get("load_work", zero)))
     drift = np.abs(terms["balance"] - terms["balance"][0])
     error = np.where(reference > 0, drift / np.where(reference > 0, reference, 1.0), 0.0)
     worst = float(np.max(np.maximum.accumulate(drift)) / reference[-1]) if reference[-1] > 0 else 0.0

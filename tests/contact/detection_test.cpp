@@ -4,9 +4,11 @@
 // Scene: a fixed 3 × 3 × 1 base with its top at z = 0 and a free unit cube
 // resting on it (bottom at z = 0). Margin 0.02 m.
 #include "contact/detection.hpp"
+#include "contact/joint_law.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <map>
 #include <numeric>
 
@@ -14,6 +16,13 @@ namespace polydem {
 namespace {
 
 constexpr double kMargin = 0.02;
+// The joint law's stiffnesses price what a detection re-samples.
+const JointLaw kLaw = [] {
+  JointLaw law;
+  law.kn = 1e10;
+  law.ks = 4e9;
+  return law;
+}();
 
 BlockSpec block_spec(std::string name, Polyhedron shape, BlockMotion motion) {
   BlockSpec s;
@@ -40,7 +49,7 @@ TEST(ContactDetector, FindsTheRestingPatch) {
   ContactDetector det(b, kMargin);
   EXPECT_EQ(det.margin(), kMargin);
   ContactSet cs;
-  det.detect(b, cs, false);
+  det.detect(b, cs, false, kLaw);
   EXPECT_EQ(cs.detections, 1);
   ASSERT_EQ(cs.pairs.size(), 1u);
   EXPECT_EQ(cs.pairs[0].a, 0);
@@ -69,7 +78,7 @@ TEST(ContactDetector, FindsTheRestingPatch) {
   // Bonded when asked (cohesion or tension at t = 0).
   ContactDetector det2(b, kMargin);
   ContactSet cs2;
-  det2.detect(b, cs2, true);
+  det2.detect(b, cs2, true, kLaw);
   for (std::size_t s = 0; s < cs2.sub.size(); ++s) EXPECT_EQ(cs2.sub.bonded[s], 1);
 }
 
@@ -77,7 +86,7 @@ TEST(ContactDetector, SubcontactsKeepTheirHistoryAcrossDetections) {
   Blocks b = resting_cube();
   ContactDetector det(b, kMargin);
   ContactSet cs;
-  det.detect(b, cs, true);
+  det.detect(b, cs, true, kLaw);
   ASSERT_EQ(cs.sub.size(), 4u);
   // Give every subcontact its own history, remembered by key.
   std::map<std::uint64_t, Vec3> shear;
@@ -96,7 +105,7 @@ TEST(ContactDetector, SubcontactsKeepTheirHistoryAcrossDetections) {
   for (std::size_t s = 0; s < cs.sub.size(); ++s) bonded[cs.sub.key[s]] = cs.sub.bonded[s];
   // The cube slides a little (less than the margin, same features): detect again.
   translate(b, 1, Vec3(0.004, -0.003, 0));
-  det.detect(b, cs, false);
+  det.detect(b, cs, false, kLaw);
   EXPECT_EQ(cs.detections, 2);
   ASSERT_EQ(cs.sub.size(), 4u);
   for (std::size_t s = 0; s < cs.sub.size(); ++s) {
@@ -114,14 +123,14 @@ TEST(ContactDetector, LostSubcontactsRetireTheirDissipation) {
   Blocks b = resting_cube();
   ContactDetector det(b, kMargin);
   ContactSet cs;
-  det.detect(b, cs, false);
+  det.detect(b, cs, false, kLaw);
   ASSERT_EQ(cs.sub.size(), 4u);
   for (std::size_t s = 0; s < cs.sub.size(); ++s) {
     cs.sub.slip_energy[s] = 1.0 + s;      // 1+2+3+4 = 10 J
     cs.sub.damping_energy[s] = 0.5 * s;  // 0+0.5+1+1.5 = 3 J
   }
   translate(b, 1, Vec3(0, 0, 0.1));  // lifted beyond the margin
-  det.detect(b, cs, false);
+  det.detect(b, cs, false, kLaw);
   EXPECT_TRUE(cs.pairs.empty());
   EXPECT_EQ(cs.sub.size(), 0u);
   EXPECT_EQ(cs.retired_slip_energy, 10.0);
@@ -132,7 +141,7 @@ TEST(ContactDetector, RedetectsOnlyAfterHalfTheMargin) {
   Blocks b = resting_cube();
   ContactDetector det(b, kMargin);
   ContactSet cs;
-  det.detect(b, cs, false);
+  det.detect(b, cs, false, kLaw);
   EXPECT_FALSE(det.needs_detection(b));
   // Translation (the threshold is margin/2): 0.49·margin no, 0.51·margin yes.
   translate(b, 1, Vec3(0.49 * kMargin, 0, 0));
@@ -140,7 +149,7 @@ TEST(ContactDetector, RedetectsOnlyAfterHalfTheMargin) {
   translate(b, 1, Vec3(0.02 * kMargin, 0, 0));
   EXPECT_TRUE(det.needs_detection(b));
   // After detection the reference is the new position.
-  det.detect(b, cs, false);
+  det.detect(b, cs, false, kLaw);
   EXPECT_FALSE(det.needs_detection(b));
   // Rotation counts as angle × bounding radius (√3/2 for the unit cube).
   const double radius = b.props.radius[1];
@@ -150,7 +159,7 @@ TEST(ContactDetector, RedetectsOnlyAfterHalfTheMargin) {
   turn(b, 1, 0.02 * kMargin / radius, Vec3::UnitZ());  // 0.51·margin in all
   EXPECT_TRUE(det.needs_detection(b));
   // Fixed blocks are ignored however far they are moved (they never move).
-  det.detect(b, cs, false);
+  det.detect(b, cs, false, kLaw);
   translate(b, 0, Vec3(1, 0, 0));
   EXPECT_FALSE(det.needs_detection(b));
 }
@@ -165,15 +174,15 @@ TEST(ContactDetector, RedetectsOnTheRelativeApproachOfTwoBlocks) {
                            block_spec("right", make_box(Vec3(1, 1, 1), Vec3(0.51, 0, 0.5)), BlockMotion::free)});
   ContactDetector det(b, kMargin);
   ContactSet cs;
-  det.detect(b, cs, false);
+  det.detect(b, cs, false, kLaw);
   translate(b, 0, Vec3(0.3 * kMargin, 0, 0));
   translate(b, 1, Vec3(-0.3 * kMargin, 0, 0));
   EXPECT_TRUE(det.needs_detection(b));
-  det.detect(b, cs, false);
+  det.detect(b, cs, false, kLaw);
   translate(b, 0, Vec3(0.6 * kMargin, 0, 0));
   translate(b, 1, Vec3(0.6 * kMargin, 0, 0));
   EXPECT_FALSE(det.needs_detection(b));
-  det.detect(b, cs, false);
+  det.detect(b, cs, false, kLaw);
   b.state.velocity[0] = Vec3(1.0, 0, 0);
   EXPECT_FALSE(det.needs_detection(b, 0.4 * kMargin));  // the step moves it 0.4·margin
   EXPECT_TRUE(det.needs_detection(b, 0.6 * kMargin));
@@ -184,8 +193,70 @@ TEST(ContactDetector, NeverPairsTwoBlocksThatCannotMove) {
                            block_spec("moving", make_box(Vec3(1, 1, 1), Vec3(0, 0, 0.5)), BlockMotion::kinematic)});
   ContactDetector det(b, kMargin);
   ContactSet cs;
-  det.detect(b, cs, false);
+  det.detect(b, cs, false, kLaw);
   EXPECT_TRUE(cs.pairs.empty());
+}
+
+
+// A block dragged over the edge of the block below it in small steps while
+// the joint sticks (friction far above the shear): the joint's elastic shear
+// displacement is the distance dragged, d, everywhere on the patch, so its
+// shear stress is ks·d. The drag, three margins, re-detects the joint five
+// times; from the third on, the two corners past the lower block's edge are
+// clipped into two crossings on that edge (a clip topology the detection
+// before did not have) and the patch shrinks. The shear stress must be continuous
+// across each re-detection (it halved when the crossings started without
+// history), and the strain energy of the area lost is booked as dropped.
+TEST(ContactDetector, ShearStressIsContinuousAcrossReDetectionWhileStuck) {
+  const double overlap = 1e-4;  // m: the joint is closed
+  Blocks b = build_blocks(
+      {block_spec("below", make_box(Vec3(1, 1, 1), Vec3(0, 0, -0.5)), BlockMotion::fixed),
+       block_spec("above", make_box(Vec3(0.8, 0.8, 0.5), Vec3(0.08, 0.05, 0.25 - overlap)), BlockMotion::free)});
+  JointLaw law;
+  law.kn = 1e10;
+  law.ks = 1e9;
+  law.tan_phi = 1e3;  // stuck
+  ContactDetector det(b, kMargin);
+  ContactSet cs;
+  det.detect(b, cs, false, law);
+  const double dt = 1e-4, v = 0.5;  // m/s along x: 50 µm a step
+  b.state.velocity[1] = Vec3(v, 0, 0);
+  auto total = [&](double& area) {
+    Vec3 f = Vec3::Zero();
+    area = 0;
+    for (std::size_t s = 0; s < cs.sub.size(); ++s) {
+      f += cs.sub.shear_force[s];
+      area += cs.sub.area[s];
+    }
+    return f;
+  };
+  int redetections = 0, crossings = 0;
+  double worst_jump = 0, dropped_expected = 0;
+  for (int step = 0; step < 1200; ++step) {  // 6 cm, three margins
+    const double dragged = step * v * dt;   // since the first detection
+    if (det.needs_detection(b, dt)) {
+      double area_before = 0, area_after = 0;
+      const Vec3 before = total(area_before);
+      det.detect(b, cs, false, law);
+      const Vec3 after = total(area_after);
+      ++redetections;
+      for (std::size_t s = 0; s < cs.sub.size(); ++s) crossings += (cs.sub.key[s] & 0x80000000u) ? 1 : 0;
+      // Stress before and after, against ks·d.
+      const double expected = law.ks * dragged;
+      worst_jump = std::max(worst_jump, (after / area_after - before / area_before).norm() / expected);
+      EXPECT_NEAR(after.norm() / area_after, expected, 1e-9 * expected) << "re-detection " << redetections;
+      dropped_expected += 0.5 * law.ks * dragged * dragged * (area_before - area_after);
+    }
+    compute_pair_forces(law, b.state, cs.pairs, cs.sub, dt, 0, cs.pairs.size());
+    translate(b, 1, Vec3(v * dt, 0, 0));
+  }
+  std::printf("dragged 6 cm: %d re-detections, %d crossing subcontacts, worst stress jump %.2e of ks*d, dropped %.4g J "
+              "(expected %.4g J)\n",
+              redetections, crossings, worst_jump, cs.dropped_shear_energy, dropped_expected);
+  EXPECT_GE(redetections, 5);
+  EXPECT_GT(crossings, 0) << "the clip's topology must change (the test's premise)";
+  EXPECT_LT(worst_jump, 1e-9);
+  EXPECT_NEAR(cs.dropped_shear_energy, dropped_expected, 1e-9 * dropped_expected);
 }
 
 }  // namespace

@@ -56,8 +56,24 @@ struct OneSubcontact {
     sub.normal_force[0] = 0;
     sub.slip_energy[0] = 0;
     sub.damping_energy[0] = 0;
+    sub.damping_force[0] = Vec3::Zero();
   }
   void run(const JointLaw& law) { compute_joint_forces(law, st, sub, kDt, 0, 1); }
+  // The same through the hot path (one pair of one subcontact).
+  void run_pair(const JointLaw& law) {
+    ContactPair p;
+    p.a = 0;
+    p.b = 1;
+    p.ref_block = 0;
+    p.count = 1;
+    compute_pair_forces(law, st, {p}, sub, kDt, 0, 1);
+  }
+  // Both blocks turned by R about the origin (the reference block's centroid).
+  void pose(const Mat3& R) {
+    st.rotation = {R, R};
+    st.orientation = {Quat(R), Quat(R)};
+    st.position[1] = R * Vec3(0, 0, 0.5);
+  }
 };
 
 TEST(JointLaw, NormalForceIsKnAOverlap) {
@@ -105,6 +121,64 @@ TEST(JointLaw, StoredShearIsRotatedIntoThePlane) {
   EXPECT_EQ(c.sub.shear_force[0], Vec3(30, -40, 0));
 }
 
+// Both blocks spinning as one about the joint's normal (no relative motion
+// at the point): the stored shear turns with them, by ω·dt a step, and keeps
+// its length. Before the joint's spin was applied it stayed fixed in space.
+TEST(JointLaw, StoredShearTurnsWithAPairSpinningAboutTheNormal) {
+  const JointLaw law = law_for_test();
+  OneSubcontact c(kDelta);
+  const double w = 100.0;  // rad/s: 1e-3 rad a step
+  c.st.angular_velocity = {Vec3(0, 0, w), Vec3(0, 0, w)};
+  const Vec3 f0(300, 0, 0);
+  c.sub.shear_force[0] = f0;
+  c.run_pair(law);
+  const Vec3 one_step = Eigen::AngleAxisd(w * kDt, Vec3::UnitZ()) * f0;
+  EXPECT_NEAR((c.sub.shear_force[0] - one_step).norm(), 0.0, 1e-12 * f0.norm());
+  // A quarter turn in 1571 steps (the pair's pose follows): the force ends
+  // along y, as long as it started.
+  const int n = 1571;
+  const double step = (std::acos(-1.0) / 2) / n;
+  c.st.angular_velocity = {Vec3(0, 0, step / kDt), Vec3(0, 0, step / kDt)};
+  c.sub.shear_force[0] = f0;
+  for (int k = 1; k <= n; ++k) {
+    c.pose(Eigen::AngleAxisd(k * step, Vec3::UnitZ()).toRotationMatrix());
+    c.run_pair(law);
+  }
+  EXPECT_NEAR((c.sub.shear_force[0] - Vec3(0, 300, 0)).norm(), 0.0, 1e-9 * f0.norm());
+  // The twist is the mean of the two spins: with the reference block still,
+  // the force turns by half the incident block's turn (the incident block's
+  // own motion at the point adds the increment −ks·A·v_s·dt on top).
+  // (1 rad/s: the increment, 3.5 kN, stays under the Coulomb cap.)
+  OneSubcontact d(kDelta);
+  const double w_inc = 1.0;
+  d.st.angular_velocity[1] = Vec3(0, 0, w_inc);
+  d.sub.shear_force[0] = f0;
+  d.run_pair(law);
+  const Vec3 arm = d.sub.point[0] - d.st.position[1];
+  const Vec3 increment = -(law.ks * kA * kDt) * Vec3(0, 0, w_inc).cross(arm);
+  const Vec3 expected = Eigen::AngleAxisd(0.5 * w_inc * kDt, Vec3::UnitZ()) * f0 + increment;
+  // The half turn moves f0 by 1.5e-3 N; round-off is ~1e-12 of the increment.
+  EXPECT_NEAR((d.sub.shear_force[0] - expected).norm(), 0.0, 1e-12 * (f0.norm() + increment.norm()));
+}
+
+// The pair tilting as one (the normal turns with the reference block): the
+// stored shear turns with the plane and keeps its length; projecting it onto
+// the new plane alone (before) shortened it by 1 − cos θ a step.
+TEST(JointLaw, StoredShearTurnsWithTheNormalAndKeepsItsLength) {
+  const JointLaw law = law_for_test();
+  OneSubcontact c(kDelta);
+  const double w = 100.0;
+  const Mat3 R = Eigen::AngleAxisd(w * kDt, Vec3::UnitX()).toRotationMatrix();
+  c.pose(R);  // the pose at t: turned by ω·dt since the force was stored
+  c.st.angular_velocity = {Vec3(w, 0, 0), Vec3(w, 0, 0)};
+  c.st.velocity[1] = Vec3(w, 0, 0).cross(c.st.position[1]);  // rigid with the reference block
+  const Vec3 f0(0, 300, 0);  // in the plane of t − dt
+  c.sub.shear_force[0] = f0;
+  c.run_pair(law);
+  EXPECT_NEAR((c.sub.shear_force[0] - R * f0).norm(), 0.0, 1e-12 * f0.norm());
+  EXPECT_NEAR(c.sub.shear_force[0].norm(), 300.0, 1e-12 * 300.0);
+}
+
 TEST(JointLaw, CoulombCapAndSlipEnergy) {
   const JointLaw law = law_for_test();
   OneSubcontact c(kDelta);
@@ -144,9 +218,42 @@ TEST(JointLaw, StiffnessProportionalDamping) {
   EXPECT_NEAR(c.sub.force[0].x(), -(fs_el + fs_damp), 1e-12 * fs_damp);
   // The stored (elastic) shear does not include damping.
   EXPECT_NEAR(c.sub.shear_force[0].x(), -fs_el, 1e-12 * fs_el);
-  // Dissipated this step: dt·(F_damp,n·u̇_n + F_damp,s·v_s).
-  const double dissipated = kDt * (fn_damp * closing + fs_damp * vs);
-  EXPECT_NEAR(c.sub.damping_energy[0], dissipated, 1e-12 * dissipated);
+  // The dashpot force is kept for the next step.
+  EXPECT_NEAR((c.sub.damping_force[0] - Vec3(-fs_damp, 0, fn_damp)).norm(), 0.0, 1e-12 * fn_damp);
+  // Half the step's work is booked with the velocity the force came from:
+  // dt/2·(F_damp,n·u̇_n + F_damp,s·v_s).
+  const double first_half = 0.5 * kDt * (fn_damp * closing + fs_damp * vs);
+  EXPECT_NEAR(c.sub.damping_energy[0], first_half, 1e-12 * first_half);
+  // The other half with the next half step's velocity (the work at the
+  // centred velocity): here the joint closes at half the speed and slides
+  // back, so over that half the shear dashpot gave work back.
+  c.st.velocity[1] = Vec3(-vs, 0, -0.5 * closing);
+  c.sub.damping_force[0] = Vec3(-fs_damp, 0, fn_damp);  // exactly, for the hand sum
+  const double before = c.sub.damping_energy[0];
+  c.run(law);
+  const double second_half = 0.5 * kDt * (fn_damp * 0.5 * closing - fs_damp * vs);
+  const double this_first_half = 0.5 * kDt * (0.5 * fn_damp * 0.5 * closing + fs_damp * vs);
+  EXPECT_NEAR(c.sub.damping_energy[0] - before, second_half + this_first_half, 1e-12 * first_half);
+}
+
+// The work of the last step's dashpot force owed when detection replaces the
+// subcontacts (or a joint opens) is booked with the velocity of now.
+TEST(JointLaw, PendingDashpotWorkIsSettledWithTheVelocityOfNow) {
+  JointLaw law = law_for_test();
+  law.beta = 1e-4;
+  OneSubcontact c(kDelta);
+  c.sub.damping_force[0] = Vec3(0, 0, 1000);  // N, pushing the incident block up
+  c.st.velocity[1] = Vec3(0, 0, -0.5);         // still closing
+  settle_damping_work(c.st, c.sub, kDt);
+  EXPECT_DOUBLE_EQ(c.sub.damping_energy[0], 0.5 * kDt * 1000 * 0.5);
+  EXPECT_EQ(c.sub.damping_force[0], Vec3::Zero());
+  // An opening joint books it too, then carries nothing.
+  OneSubcontact d(-kDelta);
+  d.sub.damping_force[0] = Vec3(0, 0, 1000);
+  d.st.velocity[1] = Vec3(0, 0, 0.5);  // opening: the dashpot force did negative work on this half
+  d.run(law);
+  EXPECT_DOUBLE_EQ(d.sub.damping_energy[0], -0.5 * kDt * 1000 * 0.5);
+  EXPECT_EQ(d.sub.damping_force[0], Vec3::Zero());
 }
 
 TEST(JointLaw, DampingNeverPullsAnUnbondedJointTogether) {

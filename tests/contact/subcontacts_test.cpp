@@ -1,77 +1,273 @@
-// carry_history: a subcontact found again (same pair, same key) keeps its
-// shear force, bond and dissipation; one that is gone retires its
-// dissipation to the ledger's totals.
+// carry_history: a new subcontact takes the elastic shear displacement of
+// the joint where it lies (interpolated over the previous patch), and the
+// bond and dissipation of the previous subcontact nearest to it, whatever
+// the clip's topology; shear energy that cannot be handed on is booked as
+// dropped, dissipation that no one takes is retired.
+//
+// The scenes are built by hand: two blocks at the origin with the identity
+// orientation (so body frames are the world frame), pair (0, 1), block 0's
+// face z = 0 the reference plane, block 1 incident. Subcontacts are given
+// by their points on the plane. ks = 1e9 Pa/m, margin 0.01 m.
 #include "contact/subcontacts.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 namespace polydem {
 namespace {
 
-// One pair (a, b) whose subcontacts have the given keys.
-ContactSet one_pair(int a, int b, const std::vector<std::uint64_t>& keys) {
+constexpr double kKs = 1e9;
+constexpr double kMargin = 0.01;
+
+struct Point {
+  double x, y;
+  double area;
+  std::uint64_t key;
+};
+
+Blocks two_blocks_at_rest() {
+  Blocks b;
+  b.count = 2;
+  b.state.position = {Vec3::Zero(), Vec3::Zero()};
+  b.state.orientation = {Quat::Identity(), Quat::Identity()};
+  b.state.rotation = {Mat3::Identity(), Mat3::Identity()};
+  return b;
+}
+
+// One pair (a, b) = (0, 1), reference block `ref`, with the given points.
+ContactSet one_pair(const std::vector<Point>& points, int ref = 0, int a = 0, int b = 1) {
   ContactSet cs;
   ContactPair p;
   p.a = a;
   p.b = b;
-  p.count = static_cast<int>(keys.size());
+  p.ref_block = ref;
+  p.count = static_cast<int>(points.size());
   cs.pairs.push_back(p);
-  cs.sub.resize(keys.size());
-  for (std::size_t s = 0; s < keys.size(); ++s) {
-    cs.sub.key[s] = keys[s];
-    cs.sub.area[s] = 0.25;
+  cs.sub.resize(points.size());
+  for (std::size_t s = 0; s < points.size(); ++s) {
+    const Vec3 x(points[s].x, points[s].y, 0);
+    cs.sub.pair[s] = 0;
+    cs.sub.ref_block[s] = ref;
+    cs.sub.inc_block[s] = ref == a ? b : a;
+    cs.sub.key[s] = points[s].key;
+    cs.sub.ref_normal_local[s] = ref == a ? Vec3::UnitZ() : Vec3(-Vec3::UnitZ());
+    cs.sub.ref_offset_local[s] = 0;
+    cs.sub.inc_point_local[s] = x;
+    cs.sub.point[s] = x;
+    cs.sub.area[s] = points[s].area;
     cs.sub.shear_force[s] = Vec3::Zero();
     cs.sub.bonded[s] = 0;
     cs.sub.slip_energy[s] = 0;
     cs.sub.damping_energy[s] = 0;
+    cs.sub.damping_force[s] = Vec3::Zero();
   }
   return cs;
 }
 
-TEST(CarryHistory, MatchedSubcontactsKeepTheirHistoryAndTheRestRetire) {
-  ContactSet previous = one_pair(0, 1, {11, 22});
-  previous.sub.shear_force[0] = Vec3(1, 2, 3);
-  previous.sub.slip_energy[0] = 0.5;
-  previous.sub.damping_energy[0] = 0.25;
-  previous.sub.shear_force[1] = Vec3(4, 5, 6);
-  previous.sub.bonded[1] = 1;
-  previous.sub.slip_energy[1] = 2.0;
-  previous.sub.damping_energy[1] = 1.0;
-  previous.retired_slip_energy = 10.0;
-  previous.retired_damping_energy = 20.0;
+double energy(const Vec3& f, double area) { return 0.5 * f.squaredNorm() / (kKs * area); }
 
-  ContactSet current = one_pair(0, 1, {22, 33});
-  std::vector<char> matched;
-  carry_history(previous, current, matched);
-  // Key 22 found again: its history carries over.
-  EXPECT_EQ(current.sub.shear_force[0], Vec3(4, 5, 6));
-  EXPECT_EQ(current.sub.bonded[0], 1);
-  EXPECT_EQ(current.sub.slip_energy[0], 2.0);
-  EXPECT_EQ(current.sub.damping_energy[0], 1.0);
-  // Key 33 is new.
-  EXPECT_EQ(current.sub.shear_force[1], Vec3::Zero());
-  // The shear displacement carries over: on half the area, half the force
-  // (the patch changed shape), not the whole force on a smaller spring.
-  ContactSet smaller = one_pair(0, 1, {22});
-  smaller.sub.area[0] = 0.125;
-  carry_history(previous, smaller, matched);
-  EXPECT_EQ(smaller.sub.shear_force[0], Vec3(2, 2.5, 3));
-  EXPECT_EQ(current.sub.slip_energy[1], 0.0);
-  // Key 11 is gone: its dissipation is retired.
-  EXPECT_EQ(current.retired_slip_energy, 10.5);
-  EXPECT_EQ(current.retired_damping_energy, 20.25);
+// A unit square's corners, each with a quarter of the area.
+std::vector<Point> square(std::uint64_t first_key) {
+  return {{-0.5, -0.5, 0.25, first_key},
+          {0.5, -0.5, 0.25, first_key + 1},
+          {0.5, 0.5, 0.25, first_key + 2},
+          {-0.5, 0.5, 0.25, first_key + 3}};
 }
 
-TEST(CarryHistory, AnotherPairDoesNotInherit) {
-  ContactSet previous = one_pair(0, 1, {11});
+TEST(CarryHistory, FollowsThePositionNotTheKey) {
+  const Blocks b = two_blocks_at_rest();
+  ContactSet previous = one_pair(square(11));
+  for (int s = 0; s < 4; ++s) {
+    previous.sub.shear_force[s] = Vec3(100.0 * (s + 1), -30.0 * s, 0);
+    previous.sub.slip_energy[s] = 0.5 + s;
+    previous.sub.damping_energy[s] = 0.25 * s;
+    previous.sub.bonded[s] = s % 2;
+  }
+  previous.retired_slip_energy = 10.0;
+  previous.retired_damping_energy = 20.0;
+  previous.dropped_shear_energy = 5.0;
+  // The same corners, listed from another vertex and under other keys (the
+  // clip's features changed), and a point at the centre of the patch that
+  // takes a tenth of the area from them.
+  std::vector<Point> now = {{0.5, 0.5, 0.225, 91},  {-0.5, 0.5, 0.225, 92}, {-0.5, -0.5, 0.225, 93},
+                            {0.5, -0.5, 0.225, 94}, {0.0, 0.0, 0.1, 95}};
+  ContactSet current = one_pair(now);
+  CarryScratch scratch;
+  carry_history(b, previous, current, kKs, kMargin, scratch);
+  const int source[4] = {2, 3, 0, 1};
+  Vec3 mean_stress = Vec3::Zero();
+  for (int o = 0; o < 4; ++o) mean_stress += previous.sub.shear_force[o] / 0.25 / 4;
+  double e_old = 0, e_new = 0;
+  for (int s = 0; s < 4; ++s) {
+    const int o = source[s];
+    // The shear displacement carries: the force goes with the area.
+    EXPECT_NEAR((current.sub.shear_force[s] - 0.9 * previous.sub.shear_force[o]).norm(), 0.0, 1e-12 * 400) << s;
+    EXPECT_EQ(current.sub.bonded[s], previous.sub.bonded[o]) << s;
+    EXPECT_EQ(current.sub.slip_energy[s], previous.sub.slip_energy[o]) << s;
+    EXPECT_EQ(current.sub.damping_energy[s], previous.sub.damping_energy[o]) << s;
+    e_old += energy(previous.sub.shear_force[s], 0.25);
+    e_new += energy(current.sub.shear_force[s], 0.225);
+  }
+  // The centre takes the field's value there (the mean), and no dissipation
+  // (the nearest corner's went to that corner).
+  EXPECT_NEAR((current.sub.shear_force[4] - 0.1 * mean_stress).norm(), 0.0, 1e-12 * 400);
+  EXPECT_EQ(current.sub.slip_energy[4], 0.0);
+  e_new += energy(current.sub.shear_force[4], 0.1);
+  // Nothing retired; the resampled field holds a little less energy, the
+  // difference is dropped.
+  EXPECT_EQ(current.retired_slip_energy, 10.0);
+  EXPECT_EQ(current.retired_damping_energy, 20.0);
+  ASSERT_LT(e_new, e_old);
+  EXPECT_NEAR(current.dropped_shear_energy, 5.0 + (e_old - e_new), 1e-12);
+}
+
+// A twist: the elastic shear displacement grows with the distance from the
+// centre, at right angles to it, a linear field. A cube twisted on an equal
+// cube is re-clipped into eight crossings, four near the corners and four
+// near the middles of the edges, half a metre from any corner; each takes
+// the twist's own field at its point, exactly.
+TEST(CarryHistory, ATwistIsCarriedOntoANewClipExactly) {
+  const Blocks b = two_blocks_at_rest();
+  const double tau = 1e5;  // Pa per m from the centre
+  auto twist_force = [&](double x, double y, double area) { return Vec3(-tau * y * area, tau * x * area, 0); };
+  ContactSet previous = one_pair(square(1));
+  for (int s = 0; s < 4; ++s)
+    previous.sub.shear_force[s] = twist_force(previous.sub.point[s].x(), previous.sub.point[s].y(), 0.25);
+  const double c = 0.006;  // where the turned edges cross
+  std::vector<Point> octagon = {{-0.5 + c, -0.5, 0.124, 1}, {0.5, -0.5 + c, 0.126, 2}, {0.5, 0.5 - c, 0.124, 3},
+                                {-0.5 + c, 0.5, 0.126, 4},  {-0.5, 0.0, 0.125, 5},     {0.0, -0.5, 0.125, 6},
+                                {0.5, 0.0, 0.125, 7},       {0.0, 0.5, 0.125, 8}};
+  ContactSet current = one_pair(octagon);
+  CarryScratch scratch;
+  carry_history(b, previous, current, kKs, kMargin, scratch);
+  double e_old = 0, e_new = 0;
+  for (int s = 0; s < 4; ++s) e_old += energy(previous.sub.shear_force[s], 0.25);
+  for (std::size_t s = 0; s < octagon.size(); ++s) {
+    const Vec3 expected = twist_force(octagon[s].x, octagon[s].y, octagon[s].area);
+    EXPECT_NEAR((current.sub.shear_force[s] - expected).norm(), 0.0, 1e-9 * tau) << s;
+    e_new += energy(current.sub.shear_force[s], octagon[s].area);
+  }
+  // The eight points sample the same field nearer its centre: less energy,
+  // the rest is booked as dropped.
+  EXPECT_LT(e_new, e_old);
+  EXPECT_NEAR(current.dropped_shear_energy, e_old - e_new, 1e-12 * e_old);
+}
+
+// A point off the previous patch by more than the tolerance (the margin, or
+// a tenth of the patch's radius) is contact area that is new.
+TEST(CarryHistory, APointOffThePreviousPatchStartsWithoutHistory) {
+  const Blocks b = two_blocks_at_rest();
+  ContactSet previous = one_pair(square(1));
+  for (int s = 0; s < 4; ++s) {
+    previous.sub.shear_force[s] = Vec3(0, 250, 0);
+    previous.sub.bonded[s] = 1;
+  }
+  // 0.0707 m (a tenth of the radius) is the tolerance: 0.06 m off carries,
+  // 0.08 m off does not.
+  ContactSet current = one_pair({{0.56, 0.0, 0.25, 1}, {-0.58, 0.0, 0.25, 2}});
+  CarryScratch scratch;
+  carry_history(b, previous, current, kKs, kMargin, scratch);
+  EXPECT_NEAR((current.sub.shear_force[0] - Vec3(0, 250, 0)).norm(), 0.0, 1e-9);
+  EXPECT_EQ(current.sub.bonded[0], 1);
+  EXPECT_EQ(current.sub.shear_force[1], Vec3::Zero());
+  EXPECT_EQ(current.sub.bonded[1], 0);
+}
+
+// A corner clipped into two crossings (a block twisted on an equal block):
+// both inherit the corner's shear displacement, so each carries the force in
+// proportion to its area and the strain energy is unchanged; the dissipation
+// goes to the first one only.
+TEST(CarryHistory, ACornerSplitIntoTwoCrossingsSharesItsDisplacement) {
+  const Blocks b = two_blocks_at_rest();
+  ContactSet previous = one_pair({{0.5, 0.5, 0.25, 1}});
+  const Vec3 f(300, -400, 0);
+  previous.sub.shear_force[0] = f;
+  previous.sub.slip_energy[0] = 2.0;
+  previous.sub.bonded[0] = 1;
+  ContactSet current = one_pair({{0.495, 0.5, 0.125, 7}, {0.5, 0.495, 0.125, 8}});
+  CarryScratch scratch;
+  carry_history(b, previous, current, kKs, kMargin, scratch);
+  for (int s = 0; s < 2; ++s) {
+    EXPECT_NEAR((current.sub.shear_force[s] - 0.5 * f).norm(), 0.0, 1e-12 * f.norm()) << s;
+    EXPECT_EQ(current.sub.bonded[s], 1);
+  }
+  EXPECT_EQ(current.sub.slip_energy[0], 2.0);
+  EXPECT_EQ(current.sub.slip_energy[1], 0.0);
+  EXPECT_EQ(current.retired_slip_energy, 0.0);
+  EXPECT_NEAR(current.dropped_shear_energy, 0.0, 1e-12 * energy(f, 0.25));
+}
+
+// Inheritors with more area than their source share its strain energy: it
+// is never copied (which would make energy from nowhere).
+TEST(CarryHistory, InheritorsWithMoreAreaShareTheEnergyInsteadOfCopyingIt) {
+  const Blocks b = two_blocks_at_rest();
+  ContactSet previous = one_pair({{0.5, 0.5, 0.25, 1}});
+  const Vec3 f(0, 1000, 0);
+  previous.sub.shear_force[0] = f;
+  ContactSet current = one_pair({{0.495, 0.5, 0.25, 7}, {0.5, 0.495, 0.25, 8}});
+  CarryScratch scratch;
+  carry_history(b, previous, current, kKs, kMargin, scratch);
+  const double e_new = energy(current.sub.shear_force[0], 0.25) + energy(current.sub.shear_force[1], 0.25);
+  EXPECT_NEAR(e_new, energy(f, 0.25), 1e-12 * energy(f, 0.25));
+  EXPECT_NEAR(current.sub.shear_force[0].y(), 1000 / std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(current.dropped_shear_energy, 0.0, 1e-12 * energy(f, 0.25));
+}
+
+// A patch that shrinks (a block sliding over an edge) and a subcontact that
+// is gone: the shear displacement carries, the strain energy of the area
+// lost is booked as dropped, and the gone one's dissipation is retired.
+TEST(CarryHistory, ShearOfAreaThatIsGoneIsBookedAsDropped) {
+  const Blocks b = two_blocks_at_rest();
+  ContactSet previous = one_pair(square(11));
+  const Vec3 f(0, 2000, 0);
+  for (int s = 0; s < 4; ++s) previous.sub.shear_force[s] = f;
+  previous.sub.slip_energy[1] = 3.0;
+  previous.sub.damping_energy[1] = 1.5;
+  // Corners 0, 2, 3 remain with a fifth of their area lost; corner 1 is gone.
+  ContactSet current = one_pair({{-0.5, -0.5, 0.2, 1}, {0.5, 0.5, 0.2, 2}, {-0.5, 0.5, 0.2, 3}});
+  CarryScratch scratch;
+  carry_history(b, previous, current, kKs, kMargin, scratch);
+  for (int s = 0; s < 3; ++s) EXPECT_NEAR((current.sub.shear_force[s] - 0.8 * f).norm(), 0.0, 1e-9) << s;
+  const double before = 4 * energy(f, 0.25);
+  const double after = 3 * energy(0.8 * f, 0.2);
+  EXPECT_NEAR(current.dropped_shear_energy, before - after, 1e-12 * before);
+  EXPECT_EQ(current.retired_slip_energy, 3.0);
+  EXPECT_EQ(current.retired_damping_energy, 1.5);
+}
+
+// The reference face changed sides: the same place on the joint, but the
+// stored force was the one on block 1 and is now the one on block 0.
+TEST(CarryHistory, AReferenceFaceThatChangesSidesTurnsTheForceOntoTheOtherBlock) {
+  const Blocks b = two_blocks_at_rest();
+  ContactSet previous = one_pair({{0.5, 0.5, 0.25, 1}}, 0);
+  previous.sub.shear_force[0] = Vec3(10, 20, 0);
+  ContactSet current = one_pair({{0.5, 0.5, 0.25, 1}}, 1);
+  CarryScratch scratch;
+  carry_history(b, previous, current, kKs, kMargin, scratch);
+  EXPECT_EQ(current.sub.shear_force[0], Vec3(-10, -20, 0));
+}
+
+TEST(CarryHistory, AnotherPairDoesNotInheritAndAPairThatIsGoneDropsItsShear) {
+  const Blocks b = [] {
+    Blocks three = two_blocks_at_rest();
+    three.count = 3;
+    three.state.position.push_back(Vec3::Zero());
+    three.state.orientation.push_back(Quat::Identity());
+    three.state.rotation.push_back(Mat3::Identity());
+    return three;
+  }();
+  ContactSet previous = one_pair({{0.5, 0.5, 0.25, 11}});
   previous.sub.slip_energy[0] = 3.0;
-  ContactSet current = one_pair(0, 2, {11});
-  std::vector<char> matched;
-  carry_history(previous, current, matched);
+  previous.sub.shear_force[0] = Vec3(500, 0, 0);
+  ContactSet current = one_pair({{0.5, 0.5, 0.25, 11}}, 0, 0, 2);
+  CarryScratch scratch;
+  carry_history(b, previous, current, kKs, kMargin, scratch);
+  EXPECT_EQ(current.sub.shear_force[0], Vec3::Zero());
   EXPECT_EQ(current.sub.slip_energy[0], 0.0);
   EXPECT_EQ(current.retired_slip_energy, 3.0);
+  EXPECT_DOUBLE_EQ(current.dropped_shear_energy, energy(Vec3(500, 0, 0), 0.25));
   EXPECT_EQ(find_pair(previous, 0, 1), &previous.pairs[0]);
   EXPECT_EQ(find_pair(previous, 0, 2), nullptr);
 }

@@ -61,8 +61,7 @@ inline Outcome run(const std::string& deck, const std::string& name) {
       }
       if (s.steps() % 64 == 0) {
         const EnergyLedger e = s.energies();
-        o.reference = std::max(o.reference, e.kinetic + e.strain + std::abs(e.gravitational) + e.slip + e.damping +
-                                                std::abs(e.load_work));
+        o.reference = std::max(o.reference, energy_in_play(e));
         if (o.reference > 0)
           o.balance_error = std::max(o.balance_error, std::abs(e.balance - balance0) / o.reference);
       }

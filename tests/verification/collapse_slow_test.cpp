@@ -7,9 +7,10 @@
 // the energy ledger must close within 5 % of the energy in play, no joint
 // may overlap by more than 5 % of the smaller block's size (17 mm), and no
 // block may end below the base's top by more than 1 % of its size. Measured
-// (1 thread, loaded machine): 355 507 steps in 349 s, balance error 4.8 %,
-// deepest overlap 1.96 mm (0.62 %). Coming to rest is not yet checked: one
-// block still moves at ~10 m/s at 8 s.
+// (1 thread, loaded machine): 349 305 steps in 76 s, balance error 2.9 %,
+// deepest overlap 1.69 mm (0.53 %); 4.8 % and 1.96 mm before issue 15's
+// history and ledger changes. Coming to rest is not yet checked: one block
+// still moves at ~12 m/s at 8 s.
 #include "collapse_cases.hpp"
 
 namespace polydem::collapse {

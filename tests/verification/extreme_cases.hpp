@@ -305,8 +305,9 @@ inline Case pulse_high_friction_case(double end_time) {
   h.ground_motion = sine_pulse(10, 0.2);
   const std::string deck = header(h) + base(20) + box("stone", {1, 1, 0.5}, {0, 0, 0.25});
   Case c = named("10 g sine pulse, phi = 89 (rocks)", deck);
-  // It overturns and lands: impacts, with the ledger's error of case 5
-  // (measured 4.3 % over 1 s).
+  // It overturns and lands: impacts the ledger does not fully book
+  // (measured 7.0 % over 1 s; 4.3 % while the dashpot's work was booked with
+  // the lagged velocity, which over-counted and so hid part of it).
   c.energy_tolerance = 0.1;
   c.check = [](const Final& f) { EXPECT_LT(f.position("stone").head<2>().norm(), 9.0); };
   return c;
@@ -358,11 +359,14 @@ inline Case slope_high_friction_case(double end_time) {
 // contact mode has xi ~ 0.09 (restitution ~0.75): it must leave upwards at
 // 5-10 m/s; at 1e13-1e14 Pa/m xi = beta*w/2 ~ 1-3, the impact is overdamped
 // and the block must not rebound faster than 1 m/s.
-// The ledger's damping term integrates the damping power with the velocity
-// half a step behind, a first-order error ~ xi*w*dt on what the impact
-// dissipates: measured 7 % of the energy in play at 98 GPa/m and 11 % at
-// 1e14 Pa/m (over-counted dissipation, the motion itself loses no more than
-// it had: checked by the mechanical energy); hence 0.15 on the balance.
+// The ledger's damping term books the dashpot's work at the centred
+// velocity (contact/joint_law.hpp); booked with the velocity half a step
+// behind, as before, it over-counted what the impact dissipates by ~xi*w*dt:
+// balance errors of 7 % at 98 GPa/m and 11 % at 1e14 Pa/m (tolerance then
+// 15 %). Now (with the ledger's kinetic term the leapfrog's own,
+// integrators/simulation.cpp): 0.019 % at 1e14 Pa/m (tolerance 1 %) and
+// 3.0 % at 98 GPa/m (tolerance 4 %), whose error is the stiff elastic impact
+// itself at w*dt = 0.46, not the dashpot: without any damping it is 5.6 %.
 inline Case impact_case(double kn, double end_time) {
   Header h;
   h.end_time = end_time;
@@ -372,7 +376,7 @@ inline Case impact_case(double kn, double end_time) {
   char name[64];
   std::snprintf(name, sizeof name, "10 m/s impact, kn = %.2g", kn);
   Case c = named(name, deck);
-  c.energy_tolerance = 0.15;
+  c.energy_tolerance = kn < 1e12 ? 0.04 : 0.01;
   c.check = [kn](const Final& f) {
     const auto& e = f.report.energy;
     const double initial = 0.5 * 1300 * 100;  // m = 2600 kg/m3 x 0.5 m3
