@@ -68,6 +68,7 @@ py::dict point_dict(const SweepPoint& point, const PointResult& r) {
   d["max_displacement"] = r.max_displacement;
   d["residual_displacement"] = r.residual_displacement;
   d["collapse_time"] = r.collapse_time;
+  d["dislodged"] = r.dislodged;
   d["steps"] = r.steps;
   d["wall_seconds"] = r.wall_seconds;
   d["exit_code"] = r.exit_code;
@@ -199,6 +200,7 @@ void bind_studies(py::module_& m) {
               py::dict d;
               for (const auto& [key, value] : c.outer.values) d[py::str(key)] = value;
               d["damage_threshold"] = c.damage_threshold;
+              d["stones_lost_threshold"] = c.stones_threshold;
               d["collapse_threshold"] = c.collapse_threshold;
               d["collapse_mode"] = c.collapse_mode;
               d["runs"] = static_cast<long>(c.runs.size());

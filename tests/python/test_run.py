@@ -111,3 +111,13 @@ def test_gil_released_during_a_run():
         t.join()
     # Had advance() kept the GIL, the spinning thread would not have run.
     assert run.finished and during > 10000
+
+
+def test_energies_are_the_whole_ledger():
+    """Every ledger line is there and they sum to the balance (to round-off)."""
+    run = polydem.Run(pillar(end_time=0.05), threads=1)
+    run.run(progress=False)
+    e = run.energies()
+    terms = ("kinetic", "gravitational", "strain", "slip", "damping", "dropped_shear", "resampled_normal")
+    total = sum(e[k] for k in terms) - e["load_work"]
+    assert total == pytest.approx(e["balance"], abs=1e-9 * (1.0 + sum(abs(e[k]) for k in terms)))

@@ -33,6 +33,7 @@ def test_sweep_matches_single_runs():
     one = polydem.run(scene, set={"ground_motion.acceleration_g": 0.45}, threads=1, progress=False)
     assert p["max_displacement"][1] == one.assessment["max_displacement_m"]
     assert p["steps"][1] == one.steps
+    assert p["dislodged"][1] == one.assessment["dislodged"]["count"]
 
 
 def test_sweep_bad_key_raises_before_running():
