@@ -69,6 +69,11 @@ struct BlockSpec {
   Vec3 velocity = Vec3::Zero();          // m/s at t = 0
   Vec3 angular_velocity = Vec3::Zero();  // rad/s at t = 0
   int course = -1;           // masonry course index (spire), -1 if none
+  // The block's group (3DEC's `group`): a name that joint properties,
+  // densities, loads, histories and the assessment can select by. Generators
+  // name it after what the block is ("course03", "voussoir", "drum", "tip");
+  // a [[block]] gives it with `group = "..."`; empty = no group.
+  std::string group;
   int deck_line = 0;         // line of the [[block]] header in the deck, for messages
 };
 

@@ -45,7 +45,7 @@ constexpr std::string_view kJointKeys[] = {"normal_stiffness", "shear_stiffness"
                                            "cohesion",         "tensile_strength", "damping"};
 constexpr std::string_view kBlockKeys[] = {"name",     "shape",    "size",   "center",   "polygon",
                                            "z",        "vertices", "rotation", "offset", "density",
-                                           "motion",   "velocity", "angular_velocity", "course"};
+                                           "motion",   "velocity", "angular_velocity", "course", "group"};
 constexpr std::string_view kGroundMotionKeys[] = {"kind",           "applied_as", "direction", "start_time",
                                                   "acceleration",   "acceleration_g", "rate",  "rate_g",
                                                   "period",         "record",         "scale",
@@ -235,6 +235,10 @@ BlockSpec read_block(const Deck& deck, const toml::table& t, std::size_t number)
   if (const auto c = r.integer("course")) {
     if (*c < 0 || *c > 1000000) r.fail("course", "must be in [0, 1000000] (got " + std::to_string(*c) + ")");
     b.course = static_cast<int>(*c);
+  }
+  if (const auto g = r.string("group")) {
+    if (g->empty()) r.fail("group", "must not be empty (leave the key out for no group)");
+    b.group = *g;
   }
   return b;
 }

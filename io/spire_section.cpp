@@ -108,6 +108,14 @@ std::optional<SpireSection> read_spire(const Deck& deck) {
   return out;
 }
 
+// "course03": the spire's stones and window pieces are grouped by course.
+std::string course_group(int course) {
+  std::string g = "course";
+  if (course < 10) g += '0';
+  g += std::to_string(course);
+  return g;
+}
+
 void read_spire_section(const Deck& deck, Generated& out, SceneSpec& scene) {
   const std::optional<SpireSection> spire = read_spire(deck);
   if (!spire) return;
@@ -122,6 +130,9 @@ void read_spire_section(const Deck& deck, Generated& out, SceneSpec& scene) {
     b.density = spire->density;
     b.motion = sb.kind == SpireBlockKind::base ? spire->base_motion : BlockMotion::free;
     b.course = sb.course;
+    b.group = sb.kind == SpireBlockKind::base  ? std::string("base")
+              : sb.kind == SpireBlockKind::tip ? std::string("tip")
+                                               : course_group(sb.course);
     b.deck_line = spire->line;
     part.blocks.push_back(std::move(b));
   }

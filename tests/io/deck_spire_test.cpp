@@ -144,6 +144,14 @@ window_faces = []
   std::set<std::string> names;
   for (const auto& b : s.blocks) names.insert(b.name);
   EXPECT_EQ(names.size(), s.blocks.size());
+  // Groups: the base, the stones by course, the tip; a listed block has none.
+  EXPECT_EQ(s.blocks[0].group, "");
+  EXPECT_EQ(s.blocks[1].group, "base");
+  EXPECT_EQ(s.blocks.back().group, "tip");
+  for (const auto& b : s.blocks)
+    if (b.course >= 0 && b.name != "tip") {
+      EXPECT_EQ(b.group, (b.course < 10 ? "course0" : "course") + std::to_string(b.course)) << b.name;
+    }
   expect_error("[[block]]\nname = \"tip\"\nshape = \"box\"\nsize = [1, 1, 1]\n\n[spire]\n", 6, "spire",
                "has the name of the [[block]] at line 1");
 }

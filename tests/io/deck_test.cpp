@@ -98,6 +98,7 @@ density = 2000
 velocity = [1, 2, 3]
 angular_velocity = [0.1, 0, 0]
 course = 4
+group = "pier"
 
 [[block]]
 name = "wedge"
@@ -185,6 +186,7 @@ TEST(Deck, GoodDeckLandsInTheStructs) {
   EXPECT_EQ(b2.velocity, Vec3(1, 2, 3));
   EXPECT_EQ(b2.angular_velocity, Vec3(0.1, 0, 0));
   EXPECT_EQ(b2.course, 4);
+  EXPECT_EQ(b2.group, "pier");
 
   const BlockSpec& wedge = s.blocks[2];
   EXPECT_EQ(wedge.motion, BlockMotion::kinematic);
@@ -201,7 +203,7 @@ TEST(Deck, GoodDeckLandsInTheStructs) {
   EXPECT_DOUBLE_EQ(g.start_time, 0.1);
   EXPECT_DOUBLE_EQ(g.acceleration, 0.5 * 9.81);
   EXPECT_DOUBLE_EQ(g.period, 0.4);
-  EXPECT_EQ(g.deck_line, 50);
+  EXPECT_EQ(g.deck_line, 51);
 
   EXPECT_DOUBLE_EQ(s.output.history_interval, 0.01);
   EXPECT_FALSE(s.output.energies);
@@ -216,7 +218,7 @@ TEST(Deck, GoodDeckLandsInTheStructs) {
   EXPECT_EQ(s.checks[0].block, "base");
   EXPECT_DOUBLE_EQ(s.checks[0].expected, 12.5);
   EXPECT_DOUBLE_EQ(s.checks[0].tolerance, 0.001);
-  EXPECT_EQ(s.checks[0].deck_line, 63);
+  EXPECT_EQ(s.checks[0].deck_line, 64);
   EXPECT_EQ(s.checks[1].kind, "energy_no_growth");
   EXPECT_TRUE(s.checks[1].block.empty());
   EXPECT_TRUE(std::isnan(s.checks[1].expected));
@@ -434,6 +436,7 @@ TEST(DeckErrors, ValuesOutOfRange) {
   expect_error("[[block]]\n" + kBox + "[ground_motion]\ndirection = [0, 0, 0]\n", 5, "ground_motion.direction",
                "zero");
   expect_error("[[block]]\n" + kBox + "course = -2\n", 4, "block[1].course", "must be in");
+  expect_error("[[block]]\n" + kBox + "group = \"\"\n", 4, "block[1].group", "must not be empty");
 }
 
 TEST(DeckErrors, BadEnumsListTheAllowedValues) {
