@@ -103,14 +103,27 @@ inline void open_joint(const JointLaw& law, Subcontacts& sub, std::size_t s, dou
   // increment.
   Vec3 fs = spin * sub.shear_force[s];
   fs -= fs.dot(n) * n;
+  const double fs_old2 = fs.squaredNorm();
   fs -= (law.ks * A * dt) * vs;
   const double cap = (still_bonded ? law.cohesion * A : 0.0) + std::max(fn_el, 0.0) * law.tan_phi;
   bool slipping = false;
   if (fs.squaredNorm() > cap * cap) {  // the square root only when slipping
     const double fs_mag = fs.norm();
     slipping = true;
-    // Plastic slip (fs_mag − cap)/(ks·A) under the force `cap`.
-    if (law.ks > 0 && A > 0) sub.slip_energy[s] += cap * (fs_mag - cap) / (law.ks * A);
+    // Slip dissipation. With the stored force a = |f_old| (turned), the
+    // trial t = |f| and the cap c: shear the cap has fallen below (a > c,
+    // the normal force at a lifting edge falling) is let go from m down to c,
+    // releasing (m² − c²)/(2·ks·A), where m = min(a, t) is what the step's
+    // increment leaves of it; the rest of the trial, t − m, is plastic slip
+    // (t − m)/(ks·A) under the force c. When the cap has not fallen (a ≤ c),
+    // m = c: the usual c·(t − c)/(ks·A). Both limits are exact: steady
+    // sliding books c·Δu, a joint at rest whose cap falls books the strain
+    // energy it gives up (open_joint is the cap falling to zero).
+    if (law.ks > 0 && A > 0) {
+      const double a = std::sqrt(fs_old2);
+      const double m = a > cap ? std::min(a, fs_mag) : cap;
+      sub.slip_energy[s] += (0.5 * (m - cap) * (m + cap) + cap * (fs_mag - m)) / (law.ks * A);
+    }
     fs *= fs_mag > 0 ? cap / fs_mag : 0.0;
     if (still_bonded) sub.bonded[s] = 0;
   }

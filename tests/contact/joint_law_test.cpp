@@ -179,6 +179,24 @@ TEST(JointLaw, StoredShearTurnsWithTheNormalAndKeepsItsLength) {
   EXPECT_NEAR(c.sub.shear_force[0].norm(), 300.0, 1e-12 * 300.0);
 }
 
+// A joint that does not move while its normal force falls (the edge of a
+// stone lifting): Coulomb's cap falls below the stored shear, which is let go
+// down to the cap. The strain energy given up, (F² − cap²)/(2·ks·A), is all
+// slip: stored + slip stays what was stored, to round-off.
+TEST(JointLaw, ShearLetGoByAFallingCapIsSlip) {
+  const JointLaw law = law_for_test();
+  OneSubcontact c(kDelta);
+  const double cap = law.kn * kA * kDelta * law.tan_phi;
+  const Vec3 f0(0, 2.0 * cap, 0);  // stored under a higher normal force
+  c.sub.shear_force[0] = f0;
+  c.run(law);  // at rest: no increment, only the cap
+  EXPECT_NEAR(c.sub.shear_force[0].norm(), cap, 1e-12 * cap);
+  const double before = 0.5 * f0.squaredNorm() / (law.ks * kA);
+  const double after = 0.5 * c.sub.shear_force[0].squaredNorm() / (law.ks * kA);
+  EXPECT_NEAR(after + c.sub.slip_energy[0], before, 1e-12 * before);
+  EXPECT_GT(c.sub.slip_energy[0], 0.0);
+}
+
 TEST(JointLaw, CoulombCapAndSlipEnergy) {
   const JointLaw law = law_for_test();
   OneSubcontact c(kDelta);

@@ -143,7 +143,7 @@ TEST(ContactHistory, LedgerClosesWhenASlidingBlockLeavesItsBase) {
               balance.worst);
   EXPECT_GT(s.blocks().state.position[1].x(), 0.1) << "the stone must slide well past the edge";
   EXPECT_GT(e.dropped_shear, 0.02 * balance.reference) << "the test's premise: the dropped shear matters";
-  EXPECT_LT(balance.worst, 0.01);
+  EXPECT_LT(balance.worst, 0.004);  // 0.16 % measured; 0.4 % before the falling cap was booked as slip
 }
 
 }  // namespace
