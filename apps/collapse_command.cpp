@@ -31,6 +31,7 @@ int collapse_command(const CollapseOptions& o) {
   so.static_increments = o.static_increments;
   so.static_ratio = o.static_ratio;
   so.static_max_steps = o.static_max_steps;
+  so.density_scaling = o.density_scaling;
   so.threads = o.threads;
   TrialObserver print;
   if (!o.quiet)

@@ -24,6 +24,7 @@ struct CollapseOptions {
   int static_increments = 4;                // static: load steps, ratio, steps per increment
   double static_ratio = 1e-4;
   long static_max_steps = 200000;
+  bool density_scaling = false;
   double low_g = 0.05, high_g = 0.5;        // initial bracket
   double tolerance_g = 0.005;               // bracket width at which bisection stops
   double rise_time = 0.5;                   // s

@@ -42,6 +42,8 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber)->capture_default_str();
   collapse_cmd->add_option("--static-max-steps", col.static_max_steps, "static: steps an increment may take")
       ->check(CLI::PositiveNumber)->capture_default_str();
+  collapse_cmd->add_flag("--density-scaling", col.density_scaling,
+                         "static: density scaling (each block vibrates at the step's frequency)");
   collapse_cmd->add_option("--low", col.low_g, "Lower end of the bracket, g")->capture_default_str();
   collapse_cmd->add_option("--high", col.high_g, "Upper end of the bracket, g")->capture_default_str();
   collapse_cmd->add_option("--tolerance", col.tolerance_g, "Bracket width to stop at, g")->capture_default_str();

@@ -44,6 +44,9 @@ struct EquilibriumSpec {
   double ratio = 1e-5;          // unbalanced-force ratio tolerance, > 0
   long max_steps = 1000000;     // more without convergence is an error
   double local_damping = 0.8;   // alpha, in (0, 1)
+  // Density scaling: each block's inertia lowered in the stage until it
+  // vibrates at the step's frequency (Simulation::begin_static_stage).
+  bool density_scaling = false;
   int deck_line = 0;
 };
 

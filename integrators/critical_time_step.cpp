@@ -80,43 +80,56 @@ CriticalStep critical_time_step_from_contacts(const Blocks& b, const ContactSet&
   return out;
 }
 
+namespace {
+
+// The 6×6 stiffness of block i with every face in full contact (the header).
+Mat6 all_faces_stiffness(const Blocks& b, int i, double kn, double ks) {
+  const Polyhedron& p = b.props.local_shape[i];
+  Mat6 K = Mat6::Zero();
+  for (std::size_t f = 0; f < p.faces.size(); ++f) {
+    const Vec3& n = p.normals[f];
+    const Mat3 D = kn * n * n.transpose() + ks * (Mat3::Identity() - n * n.transpose());
+    const auto& loop = p.faces[f];
+    const Vec3& a = p.vertices[loop[0]];
+    for (std::size_t k = 1; k + 1 < loop.size(); ++k) {
+      const Vec3& bb = p.vertices[loop[k]];
+      const Vec3& c = p.vertices[loop[k + 1]];
+      const double area = 0.5 * (bb - a).cross(c - a).norm();
+      // Constant and linear terms: the centroid rule is exact. Quadratic
+      // (rotation–rotation) term: ∫_T r rᵀ dA = A/12 (Σ v vᵀ + s sᵀ), s = a+b+c,
+      // which holds entry-wise for any quadratic form in r.
+      const Vec3 cen = (a + bb + c) / 3.0;
+      Mat6 part = Mat6::Zero();
+      add_point(part, D, cen, area);
+      Mat3 quad = Mat3::Zero();
+      for (const Vec3* v : {&a, &bb, &c}) {
+        const Mat3 X = cross_matrix(*v);
+        quad += X.transpose() * D * X;
+      }
+      const Mat3 Xs = cross_matrix(a + bb + c);
+      quad += Xs.transpose() * D * Xs;
+      quad *= area / 12.0;
+      part.block<3, 3>(3, 3) = quad;
+      K += part;
+    }
+  }
+  return K;
+}
+
+}  // namespace
+
 CriticalStep critical_time_step(const Blocks& b, const JointSpec& joint, double safety_factor) {
   CriticalStep out;
-  const double kn = joint.normal_stiffness, ks = joint.shear_stiffness;
-  for (int i : b.free_blocks) {
-    const Polyhedron& p = b.props.local_shape[i];
-    Mat6 K = Mat6::Zero();
-    for (std::size_t f = 0; f < p.faces.size(); ++f) {
-      const Vec3& n = p.normals[f];
-      const Mat3 D = kn * n * n.transpose() + ks * (Mat3::Identity() - n * n.transpose());
-      const auto& loop = p.faces[f];
-      const Vec3& a = p.vertices[loop[0]];
-      for (std::size_t k = 1; k + 1 < loop.size(); ++k) {
-        const Vec3& bb = p.vertices[loop[k]];
-        const Vec3& c = p.vertices[loop[k + 1]];
-        const double area = 0.5 * (bb - a).cross(c - a).norm();
-        // Constant and linear terms: the centroid rule is exact. Quadratic
-        // (rotation–rotation) term: ∫_T r rᵀ dA = A/12 (Σ v vᵀ + s sᵀ), s = a+b+c,
-        // which holds entry-wise for any quadratic form in r.
-        const Vec3 cen = (a + bb + c) / 3.0;
-        Mat6 part = Mat6::Zero();
-        add_point(part, D, cen, area);
-        Mat3 quad = Mat3::Zero();
-        for (const Vec3* v : {&a, &bb, &c}) {
-          const Mat3 X = cross_matrix(*v);
-          quad += X.transpose() * D * X;
-        }
-        const Mat3 Xs = cross_matrix(a + bb + c);
-        quad += Xs.transpose() * D * Xs;
-        quad *= area / 12.0;
-        part.block<3, 3>(3, 3) = quad;
-        K += part;
-      }
-    }
-    keep_highest(out, b, i, K);
-  }
+  for (int i : b.free_blocks) keep_highest(out, b, i, all_faces_stiffness(b, i, joint.normal_stiffness, joint.shear_stiffness));
   finish(out, joint, safety_factor);
   return out;
+}
+
+std::vector<double> block_frequencies(const Blocks& b, const JointSpec& joint) {
+  std::vector<double> w(static_cast<std::size_t>(b.count), 0.0);
+  for (int i : b.free_blocks)
+    w[i] = std::sqrt(block_omega_squared(b, i, all_faces_stiffness(b, i, joint.normal_stiffness, joint.shear_stiffness)));
+  return w;
 }
 
 }  // namespace polydem

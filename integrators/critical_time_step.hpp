@@ -17,6 +17,8 @@
 #include "core/blocks.hpp"
 #include "core/scene_spec.hpp"
 
+#include <vector>
+
 namespace polydem {
 
 struct CriticalStep {
@@ -28,6 +30,13 @@ struct CriticalStep {
 };
 
 CriticalStep critical_time_step(const Blocks& blocks, const JointSpec& joint, double safety_factor);
+
+// Each free block's ω_b of the same all-faces bound (rad/s, without the √2
+// between free blocks; 0 for blocks that are not free). critical_time_step's
+// omega_max is √2 times the largest. The static stage's density scaling
+// (Simulation::begin_static_stage) lowers every block's inertia until its ω_b
+// is that largest one.
+std::vector<double> block_frequencies(const Blocks& blocks, const JointSpec& joint);
 
 // The same bound from the joints a block actually has: the subcontacts of
 // the current detection (closed or still open within the margin, so every

@@ -180,10 +180,18 @@ void Simulation::advance_block(int i, const StepLoads& loads) {
     force = locally_damped(force, st.velocity[i], local_damping_);
     torque = locally_damped(torque, st.angular_velocity[i], local_damping_);
   }
+  double inv_m = pr.inv_mass[i];
+  const Vec3* inv_I_p = &pr.inv_principal_inertia[i];
+  if constexpr (kLocalDamping) {
+    if (!scaled_inv_mass_.empty()) {  // density scaling (the static stage)
+      inv_m = scaled_inv_mass_[i];
+      inv_I_p = &scaled_inv_inertia_[i];
+    }
+  }
+  const Vec3& inv_I = *inv_I_p;
   const Vec3 v_old = st.velocity[i];
-  const Vec3 v_new = v_old + (dv_dt * pr.inv_mass[i]) * force;
+  const Vec3 v_new = v_old + (dv_dt * inv_m) * force;
   const Vec3 L_new = st.angular_momentum[i] + dv_dt * torque;
-  const Vec3& inv_I = pr.inv_principal_inertia[i];
   // ω at the half step: predict the half-step orientation, then evaluate.
   const Mat3& R0 = st.rotation[i];
   const Vec3 w0 = R0 * inv_I.cwiseProduct(R0.transpose() * L_new);
@@ -242,15 +250,32 @@ void Simulation::gather_and_advance(const StepLoads& loads) {
 
 void Simulation::begin_static_stage(double local_damping) { begin_static_stage(local_damping, sim_.gravity); }
 
-void Simulation::begin_static_stage(double local_damping, const Vec3& load) {
+void Simulation::begin_static_stage(double local_damping, const Vec3& load, bool density_scaling) {
   static_stage_ = true;
   local_damping_ = local_damping;
   static_load_ = load;
+  scaled_inv_mass_.clear();
+  scaled_inv_inertia_.clear();
+  if (!density_scaling) return;
+  const std::vector<double> w = block_frequencies(blocks_, joint_);
+  double top = 0;
+  for (int i : blocks_.free_blocks) top = std::max(top, w[i]);
+  scaled_inv_mass_ = blocks_.props.inv_mass;
+  scaled_inv_inertia_ = blocks_.props.inv_principal_inertia;
+  if (!(top > 0)) return;
+  for (int i : blocks_.free_blocks) {
+    if (!(w[i] > 0)) continue;
+    const double f = (top / w[i]) * (top / w[i]);  // 1 / the mass factor, ≥ 1
+    scaled_inv_mass_[i] *= f;
+    scaled_inv_inertia_[i] *= f;
+  }
 }
 
 void Simulation::end_static_stage() {
   static_stage_ = false;
   local_damping_ = 0;
+  scaled_inv_mass_.clear();
+  scaled_inv_inertia_.clear();
   auto& st = blocks_.state;
   for (int i : blocks_.free_blocks) {
     st.velocity[i].setZero();

@@ -154,8 +154,20 @@ class Simulation {
   // `load` replaces gravity as the stage's body acceleration (default: the
   // scene's gravity); the static collapse search tilts it by λ·g
   // horizontally (studies/collapse_search.hpp).
+  //
+  // Density scaling (`density_scaling`, 3DEC's for static solutions): in the
+  // stage the inertia is fictitious, only the equilibrium counts, so each
+  // free block's mass and inertia are lowered by the factor (ω_b / ω_top)²
+  // (ω_b its highest frequency on all its faces, ω_top the stiffest block's,
+  // the one that set the step; integrators/critical_time_step.hpp
+  // block_frequencies). Every block then vibrates at the step's own
+  // frequency and local damping takes the same few steps per cycle out of a
+  // heavy stone as out of the lightest one; the step stays stable (no block
+  // is above the frequency the step was chosen for). Weights stay the real
+  // m·g: only the inertia in the update changes, so the equilibrium is the
+  // same. The dynamic stage uses the real inertia.
   void begin_static_stage(double local_damping);
-  void begin_static_stage(double local_damping, const Vec3& load);
+  void begin_static_stage(double local_damping, const Vec3& load, bool density_scaling = false);
   void end_static_stage();
 
  private:
@@ -210,6 +222,10 @@ class Simulation {
   // never taken during it.
   bool static_stage_ = false;
   double local_damping_ = 0;
+  // Density scaling: the stage's inverse mass and principal inertia per
+  // block (empty without it).
+  std::vector<double> scaled_inv_mass_;
+  std::vector<Vec3> scaled_inv_inertia_;
   Vec3 static_load_ = Vec3::Zero();
 };
 

@@ -56,7 +56,7 @@ constexpr std::string_view kOutputKeys[] = {"history_interval",  "histories",   
 constexpr std::string_view kAssessmentKeys[] = {"damage_displacement", "collapse_displacement", "stop_on_collapse",
                                                 "monitor_block", "collapse_mass_fraction"};
 constexpr std::string_view kCheckKeys[] = {"kind", "block", "expected", "tolerance"};
-constexpr std::string_view kEquilibriumKeys[] = {"enabled", "ratio", "max_steps", "local_damping"};
+constexpr std::string_view kEquilibriumKeys[] = {"enabled", "ratio", "max_steps", "local_damping", "density_scaling"};
 
 struct SectionSchema {
   std::string_view name;
@@ -430,6 +430,7 @@ EquilibriumSpec read_equilibrium(const Deck& deck, const SimulationSpec& sim) {
   e.local_damping = r.number("local_damping", e.local_damping, Range::positive);
   if (e.local_damping >= 1.0)
     r.fail("local_damping", "must be in (0, 1) (got " + format_number(e.local_damping) + ")");
+  e.density_scaling = r.boolean("density_scaling").value_or(e.density_scaling);
   if (e.enabled && sim.gravity_rise_time > 0)
     r.fail("enabled", "the static stage and simulation.gravity_rise_time both bring gravity on gently: give one "
                       "(the dynamic stage after the static one starts under the full weight)");

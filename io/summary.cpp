@@ -80,6 +80,7 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
     e.set("unbalanced_force_ratio", r.equilibrium.ratio);
     e.set("ratio_tolerance", spec.equilibrium.ratio);
     e.set("local_damping", spec.equilibrium.local_damping);
+    e.set("density_scaling", spec.equilibrium.density_scaling);
     e.set("wall_seconds", r.equilibrium.wall_seconds);
     e.set("max_displacement_m", r.equilibrium.max_displacement);
     e.set("max_displacement_block", r.equilibrium.max_displacement_block);

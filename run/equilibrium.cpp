@@ -30,7 +30,7 @@ EquilibriumReport solve_equilibrium(const EquilibriumSpec& spec, const Vec3& gra
   const Blocks& b = sim.blocks();
   const std::vector<Vec3> start = b.state.position;
   int worst_block = -1;
-  sim.begin_static_stage(spec.local_damping);
+  sim.begin_static_stage(spec.local_damping, gravity, spec.density_scaling);
   rep.ratio = unbalanced_force_ratio(sim, gravity);
   while (rep.ratio > spec.ratio) {
     if (rep.steps >= spec.max_steps) {

@@ -1,6 +1,7 @@
 #include "studies/collapse_search.hpp"
 
 #include "core/units.hpp"
+#include "run/assessment.hpp"
 #include "run/equilibrium.hpp"
 #include "run/setup.hpp"
 
@@ -122,35 +123,28 @@ CollapseTrial static_collapse_trial(const SceneSpec& scene, double deg, double a
   if (o.threads > 0) omp_set_num_threads(o.threads);
   RunSetup setup;
   std::unique_ptr<Simulation> sim = build_simulation(s, setup);
-  const Blocks& b = sim->blocks();
   const Vec3 g = s.simulation.gravity;
   const Vec3 d = horizontal_direction(deg);
-  const std::vector<Vec3> start = b.state.position;
-  double free_mass = 0;
-  for (int i : b.free_blocks) free_mass += b.props.mass[i];
 
   CollapseTrial t;
   t.direction_deg = deg;
   t.acceleration_g = a_g;
-  // The dislodged mass fraction, as the assessment counts it.
-  auto collapsed = [&] {
-    double moved = 0;
-    for (int i : b.free_blocks)
-      if ((b.state.position[i] - start[i]).norm() > s.assessment.collapse_displacement) moved += b.props.mass[i];
-    return moved > 0 && moved >= s.assessment.collapse_mass_fraction * free_mass;
-  };
+  // Collapse as a run judges it: the dislodged mass fraction
+  // (assessment.collapse_mass_fraction), sampled every 16th step.
+  AssessmentMonitor monitor(s.assessment, *sim, g);
   for (int k = 1; k <= o.static_increments && !t.collapsed; ++k) {
     // A ground acceleration +a d pushes the blocks by −m a d.
     const Vec3 load = g - (a_g * k / o.static_increments) * g.norm() * d;
-    sim->begin_static_stage(o.local_damping, load);
+    sim->begin_static_stage(o.local_damping, load, o.density_scaling);
     for (long n = 0;; ++n) {
       sim->step();
       ++t.steps;
-      if (n % 16 != 15) continue;
-      if (collapsed()) {
+      monitor.observe(*sim);
+      if (monitor.collapsed()) {
         t.collapsed = true;
         break;
       }
+      if (n % 16 != 15) continue;
       if (unbalanced_force_ratio(*sim, load) <= o.static_ratio) break;
       if (n >= o.static_max_steps) {
         t.collapsed = t.no_equilibrium = true;
@@ -158,9 +152,8 @@ CollapseTrial static_collapse_trial(const SceneSpec& scene, double deg, double a
       }
     }
   }
-  t.assessment.status = t.collapsed ? "collapsed" : "intact";
-  for (int i : b.free_blocks)
-    t.assessment.max_displacement = std::max(t.assessment.max_displacement, (b.state.position[i] - start[i]).norm());
+  t.assessment = monitor.finish(*sim);
+  if (t.no_equilibrium) t.assessment.status = "collapsed";
   t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return t;
 }

@@ -42,6 +42,10 @@ struct CollapseSearchOptions {
   double static_ratio = 1e-4;
   long static_max_steps = 200000;
   double local_damping = 0.8;
+  // Density scaling in the static solves (Simulation::begin_static_stage):
+  // every block vibrates at the step's frequency, so heavy blocks settle
+  // (or show their mechanism) in fewer steps.
+  bool density_scaling = false;
   int threads = 0;
 };
 
