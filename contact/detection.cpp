@@ -113,10 +113,11 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
 
   // 2. Narrow phase, in parallel, one slot per candidate.
   const int nc = static_cast<int>(im.candidates.size());
+  const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
   im.hits.resize(nc);
   im.patches.resize(nc);
   im.found.assign(nc, 0);
-#pragma omp parallel for schedule(dynamic, 16) if (nc >= 64)
+#pragma omp parallel for schedule(dynamic, 16) if (nc >= 64) num_threads(threads)
   for (int k = 0; k < nc; ++k) {
     const auto [i, j] = im.candidates[k];
     const PosedBlock pa = posed(b, i), pb = posed(b, j);
@@ -129,7 +130,7 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
 
   // 3. Patches for the pairs within the margin, in parallel, keeping each
   // pair's previous common plane while it is still nearly the best.
-#pragma omp parallel for schedule(dynamic, 16) if (nc >= 64)
+#pragma omp parallel for schedule(dynamic, 16) if (nc >= 64) num_threads(threads)
   for (int k = 0; k < nc; ++k) {
     if (!im.found[k]) continue;
     const auto [i, j] = im.candidates[k];

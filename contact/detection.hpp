@@ -46,6 +46,9 @@ class ContactDetector {
   ContactDetector& operator=(const ContactDetector&) = delete;
 
   double margin() const { return margin_; }
+  // Threads for detect()'s parallel loops (0: OpenMP's default); the step
+  // passes its governor's choice (integrators/thread_governor.hpp).
+  void set_threads(int threads) { threads_ = threads; }
   // True when some pair may have closed by more than half the margin since
   // detect(), counting the coming step of length dt at the current speeds.
   bool needs_detection(const Blocks& blocks, double dt = 0) const;
@@ -71,6 +74,7 @@ class ContactDetector {
   struct Impl;
   std::unique_ptr<Impl> impl_;
   double margin_;
+  int threads_ = 0;
 };
 
 }  // namespace polydem

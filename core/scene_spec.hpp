@@ -25,6 +25,9 @@ struct SimulationSpec {
   Vec3 gravity{0.0, 0.0, -kGravity};  // m/s²
   double contact_margin = 0.0;    // m; 0 = automatic (2 % of the smallest block's size)
   int threads = 0;                // 0 = OpenMP default
+  // Let the run drop to one thread while more are slower (a competing
+  // process on a core; integrators/thread_governor.hpp). Same bits either way.
+  bool adaptive_threads = true;
   double overlap_tolerance = 1e-6;  // m; blocks overlapping more than this at t = 0 are an error
   // Stop early when every free block's speed stays below this for
   // settle_time (0 = never stop early). m/s.

@@ -48,6 +48,8 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec
       adaptive_dt_(adaptive_time_step),
       dt_(dt),
       dt_prev_(dt) {
+  governor_ = make_thread_governor(omp_get_max_threads(), sim.adaptive_threads);
+  profile_.threads_given = omp_get_max_threads();
   const int n = blocks_.count;
   velocity_mid_ = blocks_.state.velocity;
   omega_mid_ = blocks_.state.angular_velocity;
@@ -106,18 +108,23 @@ DetectionTimes Simulation::detect_contacts() {
 
 void Simulation::step() {
   const Clock::time_point t0 = Clock::now();
+  // One parallel region per step (a region costs more than a barrier); small
+  // scenes stay serial, where a parallel region costs more than it saves.
+  // The governor picks all threads or one (a competing process on a core
+  // makes the threads wait at every barrier); results are the same bits.
+  const bool big = contacts_.sub.size() >= parallel_threshold_ || 16 * blocks_.free_blocks.size() >= parallel_threshold_;
+  const int threads = big ? threads_for_step(governor_, steps_) : governor_.now;
+  detector_.set_threads(threads);
   double patch = 0;
   if (detector_.needs_detection(blocks_, dt_)) patch = detect_contacts().patch;
   const Clock::time_point t1 = Clock::now();
   Clock::time_point t2 = t1;  // the joint law's end, read by the master thread
-  // One parallel region per step (a region costs more than a barrier); small
-  // scenes stay serial, where a parallel region costs more than it saves.
-  const bool parallel = contacts_.sub.size() >= parallel_threshold_ ||
-                        16 * blocks_.free_blocks.size() >= parallel_threshold_;
+  const bool parallel = threads > 1 && (contacts_.sub.size() >= parallel_threshold_ ||
+                                        16 * blocks_.free_blocks.size() >= parallel_threshold_);
   // The loads once, before the threads: a caller's extra ground
   // acceleration (GroundMotion::extra) is called once per step, on this thread.
   const StepLoads loads = step_loads();
-#pragma omp parallel if (parallel)
+#pragma omp parallel if (parallel) num_threads(threads)
   {
     compute_joint_forces_parallel();
 #pragma omp barrier
@@ -135,6 +142,12 @@ void Simulation::step() {
   profile_.joint_law += seconds(t1, t2);
   profile_.gather_update += seconds(t2, t3);
   ++profile_.steps;
+  if (big) {
+    record_step(governor_, seconds(t1, t3), steps_);
+    profile_.thread_probes = governor_.probes;
+    profile_.thread_switches = governor_.switches;
+    profile_.steps_on_one_thread = governor_.steps_on_one;
+  }
   if (steps_ % 256 == 0) {
     check_health();
     profile_.guard += seconds(t3, Clock::now());

@@ -25,6 +25,7 @@
 #include "core/blocks.hpp"
 #include "core/ground_motion.hpp"
 #include "integrators/critical_time_step.hpp"
+#include "integrators/thread_governor.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -69,6 +70,11 @@ struct StepProfile {
   double gather_update = 0;  // gather, central-difference update, kinematic blocks
   double guard = 0;          // check_health, every 256 steps
   long steps = 0;            // steps timed
+  // The thread governor (integrators/thread_governor.hpp): threads given,
+  // probes run, changes of choice, steps run on one thread while more were
+  // given.
+  int threads_given = 1;
+  long thread_probes = 0, thread_switches = 0, steps_on_one_thread = 0;
 };
 
 class Simulation {
@@ -85,6 +91,14 @@ class Simulation {
   // tens of microseconds and the threads' barriers cost more than they save,
   // badly so on a loaded machine.
   void set_parallel_threshold(std::size_t subcontacts) { parallel_threshold_ = subcontacts; }
+  // The thread governor's probing schedule (tests probe every few steps).
+  void set_thread_probing(long first_probe, long shortest_interval, long longest_interval, int probe_steps) {
+    governor_.first_probe = governor_.next_probe = first_probe;
+    governor_.shortest_interval = governor_.interval = shortest_interval;
+    governor_.longest_interval = longest_interval;
+    governor_.probe_steps = probe_steps;
+  }
+  const ThreadGovernor& thread_governor() const { return governor_; }
 
   void step();
   double time() const { return time_; }
@@ -199,6 +213,7 @@ class Simulation {
   bool bond_initial_;
   bool adaptive_dt_;
   std::size_t parallel_threshold_ = 2048;
+  ThreadGovernor governor_;
   double dt_;
   double dt_prev_;  // the step before: leapfrog with a changing step
   int dt_reductions_ = 0;

@@ -39,7 +39,7 @@ using namespace deck_reader;
 
 
 constexpr std::string_view kSimulationKeys[] = {
-    "end_time",          "time_step",       "safety_factor", "gravity",    "contact_margin", "threads",
+    "end_time",          "time_step",       "safety_factor", "gravity",    "contact_margin", "threads", "adaptive_threads",
     "overlap_tolerance", "settle_velocity", "settle_time",   "gravity_rise_time"};
 constexpr std::string_view kJointKeys[] = {"normal_stiffness", "shear_stiffness",  "friction_angle",
                                            "cohesion",         "tensile_strength", "damping"};
@@ -98,6 +98,7 @@ SimulationSpec read_simulation(const Deck& deck) {
     if (*t < 0 || *t > 4096) r.fail("threads", "must be in [0, 4096], 0 = OpenMP default (got " + std::to_string(*t) + ")");
     s.threads = static_cast<int>(*t);
   }
+  s.adaptive_threads = r.boolean("adaptive_threads").value_or(s.adaptive_threads);
   s.overlap_tolerance = r.number("overlap_tolerance", s.overlap_tolerance, Range::non_negative);
   s.settle_velocity = r.number("settle_velocity", s.settle_velocity, Range::non_negative);
   s.settle_time = r.number("settle_time", s.settle_time, Range::non_negative);

@@ -60,6 +60,12 @@ Json profile_json(const RunProfile& p) {
   j.set("total_seconds", p.total);
   j.set("steps", p.steps);
   j.set("microseconds_per_step", p.steps > 0 ? 1e6 * (p.total - p.setup - p.equilibrium) / p.steps : 0.0);
+  Json t = Json::object();
+  t.set("given", p.threads_given);
+  t.set("probes", p.thread_probes);
+  t.set("switches", p.thread_switches);
+  t.set("steps_on_one", p.steps_on_one_thread);
+  j.set("threads", std::move(t));
   return j;
 }
 

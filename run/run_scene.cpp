@@ -305,6 +305,10 @@ const RunReport& SceneRun::finish() {
   rep.profile.guard = sp.guard;
   rep.profile.output = loop_->output_seconds;
   rep.profile.steps = sim.steps();
+  rep.profile.threads_given = sp.threads_given;
+  rep.profile.thread_probes = sp.thread_probes;
+  rep.profile.thread_switches = sp.thread_switches;
+  rep.profile.steps_on_one_thread = sp.steps_on_one_thread;
   rep.profile.total = seconds_since(loop_->wall_start);
   return rep;
 }

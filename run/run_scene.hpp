@@ -56,6 +56,9 @@ namespace polydem {
 struct RunProfile {
   double setup = 0, equilibrium = 0, detection = 0, patch = 0, joint_law = 0, gather_update = 0, guard = 0, output = 0, total = 0;
   long steps = 0;
+  // The thread governor (integrators/thread_governor.hpp).
+  int threads_given = 1;
+  long thread_probes = 0, thread_switches = 0, steps_on_one_thread = 0;
 };
 
 struct RunReport {

@@ -1,0 +1,69 @@
+// How many threads the next step uses: all OpenMP was given, or one.
+//
+// Why: a step of the spire takes ~60 µs on two threads and meets its
+// threads at two barriers. When another process holds one of the two cores
+// (a second polydem run, a build, `polydem sweep --jobs 2`), the thread that
+// shares that core runs only when the scheduler gives it a slice, and the
+// other waits for it at every barrier: measured on the spire's earthquake
+// deck with one single-threaded competitor, 2 threads ran 26 times slower
+// than 1 (1.2e6 against 3.1e7 subcontact updates per second). More threads
+// must never be slower than one.
+//
+// How: the step times itself (it does already, for the profile). Now and
+// then the governor probes: it times `probe_steps` steps on all the threads
+// and as many on one, and keeps the faster (the median step of each, steps
+// with a detection left out: they are longer for another reason). The probes
+// start after `first_probe` steps; when a probe confirms the choice, the
+// wait to the next doubles (up to `longest_interval`), when it changes it the
+// wait starts short again, so a competitor that comes or goes is noticed in
+// seconds while a quiet run probes a few times per million steps. A probe
+// of the slow choice costs probe_steps slow steps: on the loaded machine
+// above 32·26 step-equivalents every 65,536 steps (1.3 %).
+//
+// Results do not depend on it: every stage gives the same bits on any
+// number of threads (docs/architecture.md, determinism), so switching
+// changes the wall time only. `simulation.adaptive_threads = false` (or a
+// run on one thread) leaves the threads as OpenMP has them.
+#pragma once
+
+#include <vector>
+
+namespace polydem {
+
+struct ThreadGovernor {
+  // Settings.
+  int most = 1;                   // threads OpenMP was given; 1: the governor never acts
+  long first_probe = 512;         // steps before the first probe
+  long shortest_interval = 4096;  // steps between probes after a change
+  long longest_interval = 65536;  // ... once the choice has held
+  int probe_steps = 32;           // timed steps per side of a probe
+
+  // State.
+  int now = 1;              // threads the next step uses
+  long next_probe = 0;      // step count at which the next probe starts
+  long interval = 0;        // current wait between probes
+  int probing = 0;          // 0: not; 1: timing `most` threads; 2: timing one
+  std::vector<double> many_times, one_times;  // the probe's samples, s
+
+  // What the run reports (summary.json profile.threads).
+  long probes = 0;
+  long switches = 0;
+  long steps_on_one = 0;    // steps run on one thread while more were available
+};
+
+// A governor for `most` threads; starts on all of them.
+ThreadGovernor make_thread_governor(int most, bool enabled);
+
+// Threads for the step about to run (number `step`, counting from 0).
+int threads_for_step(ThreadGovernor& g, long step);
+
+// After step number `step`: its wall time without the detection (a
+// detection's step is longer for another reason; its own parallel loops
+// follow the same choice).
+void record_step(ThreadGovernor& g, double seconds, long step);
+
+// The choice between the two medians (exposed for tests): all threads when
+// they are faster than one, one otherwise.
+int faster_choice(int most, double many_median, double one_median);
+
+}  // namespace polydem
