@@ -33,7 +33,7 @@ void require_non_negative(double v, const char* field, const char* zero_means) {
 std::vector<Vec2> polygon(int sides, double r) {
   std::vector<Vec2> p;
   for (int k = 0; k < sides; ++k) {
-    const double a = 2.0 * kPi * k / sides;
+    const double a = (2.0 * k + 1.0) * kPi / sides;  // a side faces +x
     p.emplace_back(r * std::cos(a), r * std::sin(a));
   }
   return p;

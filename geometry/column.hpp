@@ -9,7 +9,9 @@
 //   plinth   (optional, plinth_height > 0) a square block plinth_width wide;
 //   drums    `drums` drums of the shaft, each a right prism of the regular
 //            polygon of `sides` sides INSCRIBED in the circle of `radius`
-//            (its corners on the circle; one corner on the local +x axis):
+//            (its corners on the circle, at angles (2k+1)π/N from +x, so a
+//            side faces +x, and −x for even N, ±y for N a multiple of 4:
+//            the column rocks about an edge, not a corner, along those):
 //            the circular section is replaced by the polygon, area
 //            ½ N r² sin(2π/N) (0.65 % less than π r² at N = 16). Heights:
 //            `drum_heights` one per drum, or `height` split into equal drums;
