@@ -75,8 +75,8 @@ const char* to_string(ColumnBlockKind kind) {
 void validate_column(const ColumnSpec& s) {
   require(s.drums >= 1 && s.drums <= 1000, "drums", "must be in [1, 1000] (got " + std::to_string(s.drums) + ")");
   require(std::isfinite(s.radius) && s.radius > 0, "radius", "must be > 0 and finite (got " + num(s.radius) + ")");
-  require(s.sides >= 6 && s.sides <= 128, "sides",
-          "must be in [6, 128]: the drums' polygon stands for their circle (got " + std::to_string(s.sides) + ")");
+  require(s.sides >= 4 && s.sides <= 128, "sides",
+          "must be in [4, 128]: the drums' polygon stands for their circle (got " + std::to_string(s.sides) + ")");
   if (s.drum_heights.empty()) {
     require(std::isfinite(s.height) && s.height > 0, "height", "must be > 0 and finite (got " + num(s.height) + ")");
   } else {

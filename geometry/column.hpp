@@ -36,7 +36,7 @@ enum class ColumnCapital { none, abacus, frustum };
 struct ColumnSpec {
   int drums = 4;
   double radius = 0.3;                 // of the drums' circumscribed circle, m
-  int sides = 16;                      // of the drums' polygon, in [6, 128]
+  int sides = 16;                      // of the drums' polygon, in [4, 128] (4: square drums)
   double height = 2.4;                 // of the shaft (all drums), when drum_heights is empty, m
   std::vector<double> drum_heights;    // bottom up, m; empty = height / drums each
   double plinth_height = 0;            // 0 = no plinth

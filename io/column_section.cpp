@@ -34,7 +34,7 @@ void read_one_column(const Deck& deck, const toml::table& t, std::size_t number,
   }
   s.radius = r.number("radius", s.radius, Range::positive);
   if (const auto n = r.integer("sides")) {
-    if (*n < 6 || *n > 128) r.fail("sides", "must be in [6, 128] (got " + std::to_string(*n) + ")");
+    if (*n < 4 || *n > 128) r.fail("sides", "must be in [4, 128] (got " + std::to_string(*n) + ")");
     s.sides = static_cast<int>(*n);
   }
   if (r.has("height") && r.has("drum_heights"))

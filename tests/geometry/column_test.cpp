@@ -97,7 +97,7 @@ TEST(Column, BadSpecsNameTheirField) {
     return c;
   };
   expect_spec_error(with([](ColumnSpec& c) { c.drums = 0; }), "drums", "[1, 1000]");
-  expect_spec_error(with([](ColumnSpec& c) { c.sides = 4; }), "sides", "[6, 128]");
+  expect_spec_error(with([](ColumnSpec& c) { c.sides = 3; }), "sides", "[4, 128]");
   expect_spec_error(with([](ColumnSpec& c) { c.radius = -1; }), "radius", "> 0");
   expect_spec_error(with([](ColumnSpec& c) { c.drum_heights = {1, 2}; }), "drum_heights", "one height per drum");
   expect_spec_error(with([](ColumnSpec& c) { c.plinth_height = 0.2, c.plinth_width = 0.5; }), "plinth_width",

@@ -209,7 +209,7 @@ density = 2500
 
 TEST(DeckColumn, BadKeysNameFileLineAndKey) {
   expect_error("[[column]]\ndrums = 0\n", 2, "column[1].drums", "[1, 1000]");
-  expect_error("[[column]]\nsides = 5\n", 2, "column[1].sides", "[6, 128]");
+  expect_error("[[column]]\nsides = 3\n", 2, "column[1].sides", "[4, 128]");
   expect_error("[[column]]\nheight = 2\ndrum_heights = [1, 1]\n", 3, "column[1].drum_heights", "not both");
   expect_error("[[column]]\ndrums = 3\ndrum_heights = [1, 1]\n", 3, "column[1].drum_heights", "one height per drum");
   expect_error("[[column]]\ndrum_heights = [1, -1]\n", 2, "column[1].drum_heights[2]", "must be > 0");
