@@ -15,6 +15,7 @@
 
 #include <fmt/core.h>
 
+#include <chrono>
 #include <cmath>
 
 namespace polydem {
@@ -43,7 +44,10 @@ LimitAnalysisOptions no_sliding() {
 }
 
 double threshold(int n) {
+  const auto start = std::chrono::steady_clock::now();
   const auto r = thinnest_standing([n](double eta) { return arch(n, eta); }, 0.05, 0.15, 1e-5, no_sliding());
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cout << "  n = " << n << ": " << r.trials << " trials of two LPs in " << s << " s\n";
   return r.threshold();
 }
 
