@@ -246,6 +246,15 @@ TEST(Arch, ArcadeSharesItsInteriorPiers) {
   EXPECT_NEAR(shared_face_area(m.blocks[8].shape, *middle), 0.3, 1e-9);
   EXPECT_NEAR(shared_face_area(m.blocks[9].shape, *middle), 0.3, 1e-9);
   EXPECT_EQ(m.blocks[9].name, "span1_voussoir00");
+  // On one fixed base: the arches spring from the slab, pier_width apart.
+  ArchSpec on_base = s;
+  on_base.supports = ArchSupports::base;
+  const ArchModel b = build_arch(on_base);
+  EXPECT_EQ(count(b, ArchBlockKind::base), 1);
+  EXPECT_EQ(b.blocks.size(), 18u + 1);
+  expect_no_overlap(b);
+  EXPECT_NEAR(shared_face_area(b.blocks[8].shape, b.blocks[18].shape), 0.3, 1e-9);
+  EXPECT_NEAR(shared_face_area(b.blocks[9].shape, b.blocks[18].shape), 0.3, 1e-9);
   // Segmental spans: the middle pier's top is a ridge of two skewbacks.
   s.shape = ArchShape::segmental;
   s.rise = 0.8;

@@ -222,6 +222,18 @@ TEST(DeckColumn, BadKeysNameFileLineAndKey) {
   expect_error("[[column]]\nfoo = 0\n", 2, "column[1].foo", "unknown key");
 }
 
+// CGAL builds the frustum capital: the same deck read twice gives the same
+// blocks, vertex for vertex and face for face.
+TEST(DeckColumn, TheSameDeckReadTwiceGivesTheSameBlocks) {
+  const std::string text = "[[column]]\ncapital = \"frustum\"\n[[arch]]\nrings = 3\norigin = [0, 4, 0]\n";
+  const SceneSpec a = parse_deck(text, kFile), b = parse_deck(text, kFile);
+  ASSERT_EQ(a.blocks.size(), b.blocks.size());
+  for (std::size_t i = 0; i < a.blocks.size(); ++i) {
+    EXPECT_EQ(a.blocks[i].shape.vertices, b.blocks[i].shape.vertices) << a.blocks[i].name;
+    EXPECT_EQ(a.blocks[i].shape.faces, b.blocks[i].shape.faces) << a.blocks[i].name;
+  }
+}
+
 // The gallery's decks (docs/structures.md) read, with the blocks they show.
 TEST(DeckArch, ExampleDecksRead) {
   const std::pair<const char*, std::size_t> decks[] = {
