@@ -159,6 +159,11 @@ ArchProfile arch_profile(const ArchSpec& s) {
       break;
     }
   }
+  require(p.span >= 1e-3 && p.span <= 1e5, s.shape == ArchShape::circular && s.radius > 0 ? "radius" : "span",
+          "gives a span of " + num(p.span) + " m: spans from 1 mm to 100 km");
+  require(s.depth <= 1e5, "depth", "must be at most 1e5 m (got " + num(s.depth) + ")");
+  require(s.thickness >= 1e-6 * p.radius, "thickness",
+          "must be at least a millionth of the intrados radius " + num(p.radius) + " m (got " + num(s.thickness) + ")");
   require(s.thickness < p.radius, "thickness",
           "must be less than the intrados radius " + num(p.radius) + " m (got " + num(s.thickness) + ")");
   return p;

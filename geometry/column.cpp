@@ -75,6 +75,7 @@ const char* to_string(ColumnBlockKind kind) {
 void validate_column(const ColumnSpec& s) {
   require(s.drums >= 1 && s.drums <= 1000, "drums", "must be in [1, 1000] (got " + std::to_string(s.drums) + ")");
   require(std::isfinite(s.radius) && s.radius > 0, "radius", "must be > 0 and finite (got " + num(s.radius) + ")");
+  require(s.radius <= 1e4, "radius", "must be at most 1e4 m (got " + num(s.radius) + ")");
   require(s.sides >= 4 && s.sides <= 128, "sides",
           "must be in [4, 128]: the drums' polygon stands for their circle (got " + std::to_string(s.sides) + ")");
   if (s.drum_heights.empty()) {
@@ -89,6 +90,13 @@ void validate_column(const ColumnSpec& s) {
   const double shaft = s.drum_heights.empty() ? s.height : 0.0;
   const double smallest = s.drum_heights.empty() ? shaft / s.drums
                                                  : *std::min_element(s.drum_heights.begin(), s.drum_heights.end());
+  const double total = s.drum_heights.empty() ? s.height : [&] {
+    double h = 0;
+    for (double d : s.drum_heights) h += d;
+    return h;
+  }();
+  require(total <= 1e3 * s.radius && total <= 1e5, s.drum_heights.empty() ? "height" : "drum_heights",
+          "gives a shaft " + num(total) + " m tall: at most 1000 radii and 100 km");
   require(smallest >= 1e-3 * s.radius, s.drum_heights.empty() ? "drums" : "drum_heights",
           "gives drums " + num(smallest) + " m tall: thinner than a thousandth of the radius");
   require_non_negative(s.plinth_height, "plinth_height", "no plinth");
@@ -108,6 +116,10 @@ void validate_column(const ColumnSpec& s) {
     require(std::abs(0.5 * capital_width(s) - s.radius) > 1e-6 * s.radius, "capital_width",
             "a frustum capital as wide as the shaft is one more drum (got " + num(capital_width(s)) + ")");
   require_non_negative(s.base_width, "base_width", "twice the widest block above it");
+  for (const auto& [v, field] : {std::pair{s.plinth_height, "plinth_height"}, std::pair{s.plinth_width, "plinth_width"},
+                                 std::pair{s.capital_width, "capital_width"}, std::pair{s.capital_height, "capital_height"},
+                                 std::pair{s.base_width, "base_width"}, std::pair{s.base_thickness, "base_thickness"}})
+    require(v <= 1e3 * s.radius, field, "must be at most 1000 radii (got " + num(v) + ")");
   require(std::isfinite(s.base_thickness) && s.base_thickness > 0, "base_thickness",
           "must be > 0 (the fixed base the column stands on) (got " + num(s.base_thickness) + ")");
   require(s.origin.allFinite(), "origin", "must be finite");

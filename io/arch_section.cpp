@@ -130,9 +130,21 @@ void read_one_arch(const Deck& deck, const toml::table& t, std::size_t number, s
   out.parts.push_back(std::move(part));
 }
 
+// All the [[arch]] tables of a deck together build at most this many blocks
+// (each at most 5000): a short deck cannot ask for millions.
+constexpr std::size_t kMaxArchBlocks = 20000;
+
 void read_arch_sections(const Deck& deck, Generated& out, SceneSpec&) {
   const auto tables = section_tables(deck, "arch");
-  for (std::size_t i = 0; i < tables.size(); ++i) read_one_arch(deck, *tables[i], i + 1, tables.size(), out);
+  std::size_t total = 0;
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    read_one_arch(deck, *tables[i], i + 1, tables.size(), out);
+    total += out.parts.back().blocks.size();
+    if (total > kMaxArchBlocks)
+      deck.fail(indexed("arch", i + 1), tables[i],
+                "the [[arch]] tables up to this one build " + std::to_string(total) + " blocks (at most " +
+                    std::to_string(kMaxArchBlocks) + " in a deck)");
+  }
 }
 
 }  // namespace

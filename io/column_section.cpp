@@ -102,9 +102,21 @@ void read_one_column(const Deck& deck, const toml::table& t, std::size_t number,
   out.parts.push_back(std::move(part));
 }
 
+// All the [[column]] tables of a deck together build at most this many
+// blocks: a short deck cannot ask for millions.
+constexpr std::size_t kMaxColumnBlocks = 20000;
+
 void read_column_sections(const Deck& deck, Generated& out, SceneSpec&) {
   const auto tables = section_tables(deck, "column");
-  for (std::size_t i = 0; i < tables.size(); ++i) read_one_column(deck, *tables[i], i + 1, tables.size(), out);
+  std::size_t total = 0;
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    read_one_column(deck, *tables[i], i + 1, tables.size(), out);
+    total += out.parts.back().blocks.size();
+    if (total > kMaxColumnBlocks)
+      deck.fail(indexed("column", i + 1), tables[i],
+                "the [[column]] tables up to this one build " + std::to_string(total) + " blocks (at most " +
+                    std::to_string(kMaxColumnBlocks) + " in a deck)");
+  }
 }
 
 }  // namespace

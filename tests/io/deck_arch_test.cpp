@@ -155,6 +155,10 @@ TEST(DeckArch, BadKeysNameFileLineAndKey) {
   expect_error("[[arch]]\nsupport_motion = \"free\"\n", 2, "arch[1].support_motion", "\"fixed\"");
   expect_error("[[arch]]\n[[arch]]\nrings = 0\n", 3, "arch[2].rings", "[1, 200]");
   expect_error("[arch]\nspan = 2\n", 1, "arch", "write [[arch]]");
+  expect_error("[[arch]]\nspan = 1e9\n", 2, "arch[1].span", "from 1 mm to 100 km");
+  std::string many;
+  for (int i = 0; i < 5; ++i) many += "[[arch]]\nrings = 200\nvoussoirs = 20\n";
+  expect_error(many, 13, "arch[5]", "at most 20000 in a deck");
 }
 
 TEST(DeckColumn, KeysReachTheColumn) {
@@ -220,6 +224,10 @@ TEST(DeckColumn, BadKeysNameFileLineAndKey) {
   expect_error("[[column]]\nbase_width = 0.2\n", 2, "column[1].base_width", "at least as wide");
   expect_error("[[column]]\nradius = 0\n", 2, "column[1].radius", "must be > 0");
   expect_error("[[column]]\nfoo = 0\n", 2, "column[1].foo", "unknown key");
+  expect_error("[[column]]\nheight = 1000\n", 2, "column[1].height", "at most 1000 radii");
+  std::string many;
+  for (int i = 0; i < 25; ++i) many += "[[column]]\ndrums = 1000\nheight = 100\n";
+  expect_error(many, 58, "column[20]", "at most 20000 in a deck");
 }
 
 // CGAL builds the frustum capital: the same deck read twice gives the same
