@@ -245,7 +245,7 @@ TEST(DeckColumn, TheSameDeckReadTwiceGivesTheSameBlocks) {
 // The gallery's decks (docs/structures.md) read, with the blocks they show.
 TEST(DeckArch, ExampleDecksRead) {
   const std::pair<const char*, std::size_t> decks[] = {
-      {"arch_semicircular.toml", 11 + 2}, {"arch_pointed.toml", 12 + 2 * 4 + 1}, {"arch_segmental.toml", 9 + 2 * 3 + 1},
+      {"arch_semicircular.toml", 11 + 2}, {"arch_pointed.toml", 12 + 2 * 4 + 1}, {"arch_segmental.toml", 9 + 2 * 3 + 1}, {"arch_horseshoe.toml", 14 + 2},
       {"barrel_vault.toml", 3 * 9 + 3 * 10 + 2 * 2 + 1}, {"column.toml", 1 + 1 + 6 + 1}, {"arcade.toml", 22 + 9 + 1}};
   for (const auto& [name, blocks] : decks) {
     const SceneSpec s = read_deck(std::string(POLYDEM_SOURCE_DIR) + "/examples/structures/" + name);
