@@ -37,7 +37,7 @@
 // "solid" the voussoirs fill is therefore the polygonal ring (the polygon
 // through the joints' ends), not the circular one: with n voussoirs over an
 // embrace β the ring's area is n · ½ sin(β/n) ((R+t)² − R²) against the
-// circular ½ β ((R+t)² − R²) (0.5 % less at n = 9, β = 180°). A pointed
+// circular ½ β ((R+t)² − R²) (2.0 % less at n = 9, β = 180°). A pointed
 // arch's keystone (odd n) has flat chords under and over the apex (the
 // sharp apex is cut off: a block straddling the apex and following its point
 // would not be convex).
@@ -49,8 +49,9 @@
 // running bond: no joint runs straight through two neighbouring rings, and
 // the smallest block is half a voussoir, never a sliver). Each ring's
 // voussoirs follow the chords through its own joints, so an odd ring's
-// polygon differs slightly from an even ring's (by the chord sag, 1.5 mm on
-// a 2 m radius at n = 9); the rings meet on the planes between them.
+// polygon differs from an even ring's by up to the chord sag R(1 − cos(β/2n))
+// (30 mm on a 2 m radius, 9 voussoirs over 180°: a step in the intrados
+// between rings); the rings meet on the planes between them.
 //
 // Supports (all as deep as the arch, y in [−depth/2, depth/2]):
 //   abutments  one fixed block under each springing;

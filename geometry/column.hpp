@@ -13,7 +13,7 @@
 //            side faces +x, and −x for even N, ±y for N a multiple of 4:
 //            the column rocks about an edge, not a corner, along those):
 //            the circular section is replaced by the polygon, area
-//            ½ N r² sin(2π/N) (0.65 % less than π r² at N = 16). Heights:
+//            ½ N r² sin(2π/N) (2.5 % less than π r² at N = 16). Heights:
 //            `drum_heights` one per drum, or `height` split into equal drums;
 //   capital  (optional) "abacus": a square slab capital_width wide,
 //            capital_height thick; "frustum": the echinus as a frustum of the
