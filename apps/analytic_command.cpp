@@ -1,5 +1,6 @@
 #include "apps/analytic_command.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -17,6 +18,7 @@
 #include "analytical/refined_lambda.hpp"
 #include "studies/dem_frequency.hpp"
 #include "studies/limit_analysis.hpp"
+#include "studies/standing.hpp"
 #include "io/deck.hpp"
 
 namespace pa = polydem::analytical;
@@ -59,6 +61,11 @@ models (lengths in m, accelerations in g unless named, times in s):
                     [--sides 16] [--pyramid both|circumscribed|inscribed] [--method interior|simplex]
                     [--interfaces (list every opening or sliding interface)]
                     [--write-lp FILE (the last case's LP, free MPS, for glpsol)]
+  arch-thickness    the thinnest semicircular arch of n voussoirs that can stand under its
+                    own weight (no tension, no sliding): the limit-analysis LP admits
+                    lambda = 0 iff it stands; bisection on t/R, R the centre-line radius
+                    (docs/structures.md; Milankovitch's continuous arch: 0.1075)
+                    [--voussoirs 9 or 9,17,33] [--phi 85] [--tol 1e-5]
 common: [--g 9.81] [--json]
 )";
 
@@ -741,6 +748,64 @@ std::string mechanism_text(const polydem::LimitAnalysisResult& r) {
   return s.str();
 }
 
+// The thinnest standing semicircle (studies/standing.hpp) per voussoir count:
+// centre-line radius 1 m, intrados radius 1 − t/2, on a fixed base.
+int model_arch_thickness(Options& o) {
+  const bool json = o.flag("json");
+  const std::vector<double> ns = number_list(o, "voussoirs", 9);
+  const double phi = o.number("phi", 85.0);
+  const double tol = o.number("tol", 1e-5);
+  o.check_all_used();
+  for (double n : ns)
+    if (n < 3 || n > 400 || n != std::floor(n)) throw BadInput("--voussoirs must be integers in [3, 400]");
+  if (!(phi > 0 && phi < 90)) throw BadInput("--phi must be in (0, 90) degrees");
+  if (!(tol >= 1e-9 && tol <= 0.01)) throw BadInput("--tol must be in [1e-9, 0.01]");
+  polydem::LimitAnalysisOptions opt;
+  opt.friction_angle_deg = phi;
+  opt.method = polydem::LpMethod::simplex;
+  if (json) std::cout << "{\"model\":\"arch-thickness\",\"phi_deg\":" << jnum(phi) << ",\"cases\":[";
+  else std::cout << "thinnest semicircular arch under self-weight (limit-analysis LP, phi = " << fmt(phi)
+                 << " deg): t/R, R the centre-line radius; Milankovitch (continuous): 0.1075\n"
+                 << "  voussoirs   t/R        vs 0.1075   trials   seconds\n";
+  for (std::size_t k = 0; k < ns.size(); ++k) {
+    const int n = static_cast<int>(ns[k]);
+    auto scene_at = [n](double eta) {
+      std::ostringstream d;
+      d.precision(17);
+      d << "[[arch]]\nradius = " << 1.0 - 0.5 * eta << "\nthickness = " << eta << "\nvoussoirs = " << n
+        << "\ndepth = 1\nsupports = \"base\"\n";
+      return polydem::parse_deck(d.str(), "<arch-thickness>");
+    };
+    const auto start = std::chrono::steady_clock::now();
+    polydem::ThinnestStanding r;
+    try {
+      r = polydem::thinnest_standing(scene_at, 0.001, 0.6, tol, opt);
+    } catch (const std::invalid_argument&) {
+      // It stands at t/R = 0.001 (few voussoirs: an equilibrium of the
+      // hinged chain through the joints' points exists however thin).
+      r.falls = 0.0;
+      r.stands = 0.001;
+      r.trials = 1;
+    }
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (json)
+      std::cout << (k ? "," : "") << "{\"voussoirs\":" << n << ",\"t_over_R\":" << jnum(r.threshold())
+                << ",\"falls\":" << jnum(r.falls) << ",\"stands\":" << jnum(r.stands) << ",\"trials\":" << r.trials
+                << ",\"seconds\":" << jnum(s) << "}";
+    else {
+      char line[160];
+      if (r.falls == 0.0)
+        std::snprintf(line, sizeof line, "  %9d   < 0.001    (stands however thin)\n", n);
+      else
+        std::snprintf(line, sizeof line, "  %9d   %.6f   %+7.2f %%   %6d   %7.2f\n", n, r.threshold(),
+                      100.0 * (r.threshold() / 0.1075 - 1.0), r.trials, s);
+      std::cout << line;
+    }
+  }
+  if (json) std::cout << "]}\n";
+  return 0;
+}
+
 int model_limit_lp(Options& o) {
   const bool json = o.flag("json");
   const bool list = o.flag("interfaces");
@@ -869,11 +934,12 @@ int run_analytic_command(const std::vector<std::string>& args) {
       {"refined-lambda", model_refined},
       {"dem-frequency", model_dem_frequency},
       {"limit-lp", model_limit_lp},
+      {"arch-thickness", model_arch_thickness},
   };
   auto it = models.find(model);
   if (it == models.end()) {
     std::cerr << "polydem analytic: unknown model '" << model
-              << "' (expected lambda, beam, rocking, collapse-diagram, cracked-cone-p, refined-lambda, dem-frequency, limit-lp)\n";
+              << "' (expected lambda, beam, rocking, collapse-diagram, cracked-cone-p, refined-lambda, dem-frequency, limit-lp, arch-thickness)\n";
     return 2;
   }
   try {

@@ -79,7 +79,8 @@ constexpr std::string_view kCheckKinds[] = {"resting_weight",      "no_drift",
                                             "slide_acceleration",  "stick",
                                             "rocking_onset",       "housner_restitution",
                                             "rocking_first_impact", "energy_conservation",
-                                            "energy_no_growth",    "pulse_peak_rotation"};
+                                            "energy_no_growth",    "pulse_peak_rotation",
+                                            "stack_pulse_peak_rotation"};
 
 // ------------------------------------------------------ 4. section readers
 

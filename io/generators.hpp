@@ -23,7 +23,7 @@ namespace polydem {
 // known (their names are checked against those afterwards).
 struct Generated {
   struct Part {
-    std::string section;     // "spire"
+    std::string section;     // "spire", "arch[2]"
     const toml::node* at = nullptr;  // the section's table, for messages
     int deck_line = 0;       // stored in each block's BlockSpec::deck_line
     std::vector<BlockSpec> blocks;
@@ -45,11 +45,16 @@ std::span<const GeneratorSection> generator_sections();
 Generated read_generators(const deck_reader::Deck& deck, SceneSpec& scene);
 
 // The generated blocks after the [[block]] ones; a generated name that a
-// [[block]] already has is a DeckError naming the generator's section.
+// [[block]] or an earlier generator's block already has is a DeckError naming
+// the generator's section.
 void append_generated_blocks(const deck_reader::Deck& deck, const Generated& generated,
                              std::vector<BlockSpec>& blocks);
 
 // [spire] (io/spire_section.cpp).
 extern const GeneratorSection kSpireSection;
+// [[arch]] (io/arch_section.cpp).
+extern const GeneratorSection kArchSection;
+// [[column]] (io/column_section.cpp).
+extern const GeneratorSection kColumnSection;
 
 }  // namespace polydem

@@ -74,3 +74,21 @@ TEST(AnalyticCommand, LimitLpOnThePillar) {
   run_analytic_command({"limit-lp", "--deck", deck, "--phi", "20,x"});
   EXPECT_NE(testing::internal::GetCapturedStderr().find("--phi"), std::string::npos);
 }
+
+namespace {
+
+// arch-thickness: the thinnest standing 9-voussoir semicircle is the one of
+// tests/studies/arch_thickness_test.cpp (t/R = 0.10152); 3 voussoirs stand
+// however thin (a hinged chain through the joints' points).
+TEST(AnalyticCommand, ArchThickness) {
+  std::string out;
+  ASSERT_EQ(run({"arch-thickness", "--voussoirs", "3,9", "--json"}, &out), 0);
+  EXPECT_NE(out.find("\"voussoirs\":9,\"t_over_R\":0.1015"), std::string::npos) << out;
+  ASSERT_EQ(run({"arch-thickness", "--voussoirs", "3"}, &out), 0);
+  EXPECT_NE(out.find("< 0.001"), std::string::npos) << out;
+  EXPECT_EQ(run({"arch-thickness", "--voussoirs", "2"}), 2);
+  EXPECT_EQ(run({"arch-thickness", "--phi", "90"}), 2);
+  EXPECT_EQ(run({"arch-thickness", "--tol", "0"}), 2);
+}
+
+}  // namespace
