@@ -51,5 +51,7 @@ void append_generated_blocks(const deck_reader::Deck& deck, const Generated& gen
 
 // [spire] (io/spire_section.cpp).
 extern const GeneratorSection kSpireSection;
+// [[import]] (io/import_section.cpp): blocks from OBJ, PLY and VTU files.
+extern const GeneratorSection kImportSection;
 
 }  // namespace polydem
