@@ -758,6 +758,14 @@ Polyhedron part_block(const BlockFile& file, std::size_t index, double convex_re
              " m outside the face at " + part.face_where[f]);
     }
   }
+  // As written, when the faces already make a valid block (planar, maximal
+  // faces: what polydem writes): the same vertices and faces in the same
+  // order, so the same block bit for bit, whatever built it.
+  try {
+    return make_polyhedron(part.vertices, faces);
+  } catch (const GeometryError&) {
+    // e.g. triangulated faces (coplanar neighbours): the hull merges them
+  }
   Polyhedron block;
   try {
     block = convex_hull(part.vertices);

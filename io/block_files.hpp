@@ -19,10 +19,14 @@
 // A part becomes a block only if it is closed (every edge shared by exactly
 // two faces), orientable (faces turned to agree with their neighbours; a
 // part whose faces all point inward is turned outside in), and convex (no
-// corner in front of a face's plane by more than the tolerance); the block
-// is then the CGAL hull of its corners, numbered canonically like every
-// hull (geometry/convex_hull.cpp), so a file written with round-trip
-// coordinates gives back the same blocks bit for bit. Errors are
+// corner in front of a face's plane by more than the tolerance). The block
+// keeps the part's vertices and faces as written (vertices in file order)
+// when they already make a valid polydem block (planar faces, no two
+// neighbours coplanar: what polydem writes), so a file written with
+// round-trip coordinates gives back the very blocks, bit for bit, in the
+// same vertex and face order; otherwise (e.g. faces split into triangles)
+// the block is the CGAL hull of its corners, numbered canonically like
+// every hull (geometry/convex_hull.cpp). Errors are
 // BlockFileError: "FILE:LINE: what" for syntax, "FILE: part N "NAME": why"
 // for geometry; a malformed file is an error, never a crash.
 #pragma once

@@ -81,6 +81,12 @@ TEST(BlockFiles, ObjRoundTripIsBitForBit) {
   EXPECT_EQ(f.parts[0].name, "prism");
   EXPECT_EQ(f.parts[1].name, "lump");
   for (std::size_t i = 0; i < 2; ++i) expect_same(part_block(f, i), blocks[i]);
+  // Blocks that are not hulls (make_box numbers its corners its own way)
+  // come back as written too.
+  const std::vector<Polyhedron> boxes = {make_box(Vec3(0.3, 0.2, 0.1), Vec3(1, 2, 3)),
+                                         make_prism({Vec2(0, 0), Vec2(1, 0), Vec2(0.2, 0.7)}, 0.5, 0.9)};
+  const BlockFile g = parse_obj(obj_document(boxes, {"box", "prism"}), "boxes.obj");
+  for (std::size_t i = 0; i < 2; ++i) expect_same(part_block(g, i), boxes[i]);
 }
 
 TEST(BlockFiles, TriangulatedObjBoxBecomesASixFacedBlock) {
@@ -126,8 +132,13 @@ TEST(BlockFiles, OrientationIsRepaired) {
   // One face the wrong way round among right ones.
   std::string mixed = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
                       "f 4 3 2 1\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 7 8 4 3\nf 4 1 5 8\n";
-  // (f 7 8 4 3 runs the wrong way.)
-  expect_same(part_block(parse_obj(mixed, "mixed.obj"), 0), part_block(f, 0));
+  // (f 7 8 4 3 runs the wrong way.) The block keeps the file's order.
+  const std::vector<Vec3> corners = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0),
+                                     Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(1, 1, 1), Vec3(0, 1, 1)};
+  expect_same(part_block(parse_obj(mixed, "mixed.obj"), 0),
+              make_polyhedron(corners, {{3, 2, 1, 0}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}));
+  // Triangulated, the same box is the hull of its corners.
+  expect_same(part_block(f, 0), convex_hull(corners));
 }
 
 TEST(BlockFiles, OpenNonConvexAndNonManifoldPartsAreRefused) {
