@@ -242,8 +242,8 @@ TEST(BlockFiles, PolydemVtuRoundTripIsBitForBit) {
   expect_message([&] { parse_vtu(binary, "b.vtu"); }, "polydem reads ASCII .vtu data arrays");
 }
 
-// Every prefix of a good file is either read or refused with a
-// BlockFileError: nothing else escapes, nothing crashes.
+// Prefixes of good files (several hundred lengths) are either read or refused
+// with a BlockFileError: nothing else escapes, nothing crashes.
 TEST(BlockFiles, EveryTruncationIsReadOrRefused) {
   const auto blocks = some_blocks();
   const std::string obj = obj_document(blocks, {"a", "b"});

@@ -174,6 +174,19 @@ groups = ["ground"]
   EXPECT_EQ(g.blocks[1].group, "ground");
 }
 
+TEST(DeckCut, RockSlopeExampleFillsTheSlope) {
+  const SceneSpec s = read_deck(std::string(POLYDEM_SOURCE_DIR) + "/examples/rock_slope_cut.toml");
+  ASSERT_EQ(s.blocks.size(), 79u);
+  double v = 0;
+  for (std::size_t i = 1; i < s.blocks.size(); ++i) {
+    EXPECT_EQ(s.blocks[i].group, "rock");
+    EXPECT_EQ(s.blocks[i].name.rfind("rock_cut", 0), 0u);
+    v += mass_properties(s.blocks[i].shape).volume;
+  }
+  // The slope: a trapezoid (6 m at the toe, 3.5 m at the crest, 4 m high) 3 m wide.
+  EXPECT_NEAR(v, 57.0, 1e-12 * 57.0);
+}
+
 TEST(DeckCut, BadCutsNameFileLineAndKey) {
   const std::string box = "[[block]]\nname = \"b\"\nshape = \"box\"\nsize = [1, 1, 1]\n";  // lines 1-4
   expect_error(box + "[[cut]]\ndip = 95\n", 6, "cut[1].dip", "must be in [0, 90]");
