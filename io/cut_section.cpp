@@ -4,6 +4,8 @@
 
 #include "geometry/cut.hpp"
 
+#include <cmath>
+#include <limits>
 #include <set>
 
 namespace polydem {
@@ -11,6 +13,8 @@ namespace polydem {
 namespace {
 
 using namespace deck_reader;
+
+constexpr std::size_t kMaxBlocks = 100000;
 
 constexpr std::string_view kCutKeys[] = {"dip",    "dip_direction", "origin", "spacing", "count",
                                          "blocks", "groups",        "group",  "min_thickness"};
@@ -75,6 +79,29 @@ void apply_cut(const Deck& deck, const toml::table& t, std::size_t number, std::
   };
   if (std::none_of(blocks.begin(), blocks.end(), selected))
     r.fail("blocks", "no block selected (the default, every free block, finds none: give blocks or groups)");
+
+  // Parallel planes cut a convex block into (planes crossing it + 1)
+  // pieces: count them first, so that a deck cannot ask for millions of
+  // blocks by accident (a spacing in mm instead of m).
+  std::size_t total = 0;
+  for (const BlockSpec& b : blocks) {
+    if (!selected(b)) {
+      ++total;
+      continue;
+    }
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const Vec3& v : b.shape.vertices) {
+      lo = std::min(lo, set.normal.dot(v));
+      hi = std::max(hi, set.normal.dot(v));
+    }
+    const double first = joint_plane_offset(set, 0), last = joint_plane_offset(set, set.count - 1);
+    const double from = std::max(lo, first), to = std::min(hi, last);
+    const double crossing = to >= from ? std::floor((to - from) / std::max(set.spacing, 1e-300)) + 1 : 0;
+    total += 1 + static_cast<std::size_t>(std::min(crossing, 1e9));
+  }
+  if (total > kMaxBlocks)
+    r.fail("spacing", "the joint set would make about " + std::to_string(total) + " blocks, more than " +
+                          std::to_string(kMaxBlocks) + " (a spacing in mm instead of m?)");
 
   std::set<std::string> taken;
   for (const BlockSpec& b : blocks) taken.insert(b.name);

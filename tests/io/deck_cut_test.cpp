@@ -176,7 +176,7 @@ groups = ["ground"]
 
 TEST(DeckCut, RockSlopeExampleFillsTheSlope) {
   const SceneSpec s = read_deck(std::string(POLYDEM_SOURCE_DIR) + "/examples/rock_slope_cut.toml");
-  ASSERT_EQ(s.blocks.size(), 79u);
+  ASSERT_EQ(s.blocks.size(), 76u);
   double v = 0;
   for (std::size_t i = 1; i < s.blocks.size(); ++i) {
     EXPECT_EQ(s.blocks[i].group, "rock");
@@ -196,6 +196,8 @@ TEST(DeckCut, BadCutsNameFileLineAndKey) {
   expect_error(box + "[[cut]]\ndip = 0\nspacing = 0\n", 7, "cut[1].spacing", "must be > 0");
   expect_error(box + "[[cut]]\ndip = 0\nspacing = -0.1\ncount = 2\n", 7, "cut[1].spacing", "must be > 0");
   expect_error(box + "[[cut]]\ndip = 0\ncount = 3\n", 5, "cut[1].spacing", "need their spacing");
+  expect_error(box + "[[cut]]\ndip = 0\norigin = [0, 0, -0.5]\nspacing = 1e-6\ncount = 100000\n", 8, "cut[1].spacing",
+               "more than 100000");
   expect_error(box + "[[cut]]\ndip = 0\ncount = 0\n", 7, "cut[1].count", "[1, 100000]");
   expect_error(box + "[[cut]]\ndip = 0\nblocks = [\"c\"]\n", 7, "cut[1].blocks[1]", "unknown block \"c\"");
   expect_error(box + "[[cut]]\ndip = 0\ngroups = [\"arch\"]\n", 7, "cut[1].groups[1]", "unknown group \"arch\"");
