@@ -150,7 +150,8 @@ void read_import(const Deck& deck, const toml::table& t, std::size_t number, Gen
       what.append(" by ").append(format_number(depth)).append(" m (penetration depth");
       if (const auto v = overlap_volume(part.blocks[i].shape, part.blocks[j].shape))
         what.append("; shared volume ").append(format_number(*v)).append(" m³");
-      what.append("; tolerance simulation.overlap_tolerance = ").append(format_number(tol)).append(" m)");
+      what.append("; tolerance simulation.overlap_tolerance = ").append(format_number(tol));
+      what.append(" m; raise it if this is a joint's elastic closure, as in a snapshot of a loaded model)");
       r.fail("file", what);
     }
   out.parts.push_back(std::move(part));
