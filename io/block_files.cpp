@@ -139,8 +139,10 @@ BlockFile parse_obj(std::string_view text, const std::string& path) {
   struct Object {
     std::string name;
     std::vector<RawFace> faces;
+    bool by_o = false;  // started by `o` (else by `g`, or the file's start)
   };
   std::vector<Object> objects(1);
+  bool any_o = false;
   long long line_no = 0;
   std::size_t pos = 0;
   while (pos < text.size()) {
@@ -186,7 +188,8 @@ BlockFile parse_obj(std::string_view text, const std::string& path) {
         if (i > 1) name += ' ';
         name.append(w[i]);
       }
-      objects.push_back({name, {}});
+      objects.push_back({name, {}, key == "o"});
+      any_o = any_o || key == "o";
     } else if (key == "vt" || key == "vn" || key == "vp" || key == "s" || key == "usemtl" || key == "mtllib" ||
                key == "l" || key == "p") {
       // texture, normals, smoothing, materials, lines, points: not geometry of a solid
@@ -196,8 +199,20 @@ BlockFile parse_obj(std::string_view text, const std::string& path) {
                   " (polydem reads v, f, o, g and skips vt, vn, vp, s, usemtl, mtllib, l, p)");
     }
   }
-  // Objects of the same name (a `g` repeated) stay separate objects.
-  for (const Object& o : objects) add_parts(out, o.name, o.faces, vertices, 1);
+  // With `o` objects in the file, a `g` inside one is a group of its faces
+  // (a material, a smoothing set), not a new solid: its faces go to the
+  // object. Without any `o`, each `g` is an object. Objects of the same name
+  // stay separate objects.
+  std::vector<Object> solids;
+  for (Object& o : objects) {
+    if (any_o && !o.by_o && !solids.empty()) {
+      auto& into = solids.back().faces;
+      into.insert(into.end(), o.faces.begin(), o.faces.end());
+    } else {
+      solids.push_back(std::move(o));
+    }
+  }
+  for (const Object& o : solids) add_parts(out, o.name, o.faces, vertices, 1);
   if (out.parts.empty()) fail_at(path, 0, "no faces: an OBJ of blocks needs f lines");
   return out;
 }

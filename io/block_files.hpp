@@ -4,9 +4,11 @@
 //   .obj  Wavefront OBJ (text): `v x y z`, `f a b c ...` (a, a/t, a/t/n, a//n;
 //         negative indices count back from the last vertex), `o`/`g` names.
 //         A part is a connected set of faces (sharing vertices) within one
-//         `o`/`g` object: an object holding two separate solids is two parts
-//         (named NAME_1, NAME_2); faces of different objects are never
-//         joined, even if they share vertex indices.
+//         object: `o` objects if the file has any (a `g` inside one is only
+//         a group of its faces, e.g. a material), else `g` groups. An object
+//         holding two separate solids is two parts (named NAME_1, NAME_2);
+//         faces of different objects are never joined, even if they share
+//         vertex indices.
 //   .ply  Stanford PLY, ASCII or binary (either byte order): the `vertex`
 //         element's x, y, z and the `face` element's vertex_indices (or
 //         vertex_index) list; other elements and properties are skipped.

@@ -119,6 +119,20 @@ TEST(BlockFiles, PartsAreObjectsSplitByConnectivity) {
   EXPECT_EQ(named.parts[0].name, "pair_1");
   EXPECT_EQ(named.parts[1].name, "pair_2");
   EXPECT_EQ(named.parts[0].vertex_ids.front(), 1);  // the file's own numbering (OBJ from 1)
+  // A material group inside an `o` object is not a new solid.
+  std::string grouped = kTriangulatedBox;
+  grouped.replace(grouped.find("f 5 6 7"), 0, "g box_stone_material\nusemtl stone\n");
+  const BlockFile g = parse_obj(grouped, "grouped.obj");
+  ASSERT_EQ(g.parts.size(), 1u);
+  EXPECT_EQ(g.parts[0].name, "box");
+  EXPECT_EQ(mass_properties(part_block(g, 0)).volume, 1.0);
+  // Without `o`, each `g` is an object.
+  const std::string tet = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf -4 -2 -3\nf -4 -3 -1\nf -4 -1 -2\nf -3 -2 -1\n";
+  const BlockFile two = parse_obj("g a\n" + tet + "g b\n" + tet, "g.obj");
+  ASSERT_EQ(two.parts.size(), 2u);
+  EXPECT_EQ(two.parts[0].name, "a");
+  EXPECT_EQ(two.parts[1].name, "b");
+  EXPECT_NEAR(mass_properties(part_block(two, 1)).volume, 1.0 / 6, 1e-16);
 }
 
 TEST(BlockFiles, OrientationIsRepaired) {
