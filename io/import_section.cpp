@@ -7,6 +7,7 @@
 #include "geometry/cut.hpp"
 #include "io/block_files.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <numbers>
 #include <set>
@@ -137,23 +138,35 @@ void read_import(const Deck& deck, const toml::table& t, std::size_t number, Gen
     for (const Vec3& v : b.shape.vertices) box.extend(v);
     boxes.push_back(box);
   }
-  for (std::size_t i = 0; i < part.blocks.size(); ++i)
-    for (std::size_t j = 0; j < i; ++j) {
-      if (boxes[i].intersection(boxes[j]).isEmpty() ||
-          (boxes[i].intersection(boxes[j]).sizes().array() <= tol).any())
-        continue;
-      const double depth = penetration_depth(part.blocks[i].shape, part.blocks[j].shape);
-      if (depth <= tol) continue;
-      std::string what = part_label(bf, i);
-      what.append(" overlaps part ").append(part_number_text(j));
-      if (!bf.parts[j].name.empty()) what.append(" \"").append(bf.parts[j].name).append("\"");
-      what.append(" by ").append(format_number(depth)).append(" m (penetration depth");
-      if (const auto v = overlap_volume(part.blocks[i].shape, part.blocks[j].shape))
-        what.append("; shared volume ").append(format_number(*v)).append(" m³");
-      what.append("; tolerance simulation.overlap_tolerance = ").append(format_number(tol));
-      what.append(" m; raise it if this is a joint's elastic closure, as in a snapshot of a loaded model)");
-      r.fail("file", what);
+  // Candidate pairs by sort and sweep along x (a file of many thousand
+  // parts is not checked pair by pair), then in file order.
+  std::vector<std::size_t> by_x(boxes.size());
+  for (std::size_t i = 0; i < by_x.size(); ++i) by_x[i] = i;
+  std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) {
+    return boxes[a].min().x() != boxes[b].min().x() ? boxes[a].min().x() < boxes[b].min().x() : a < b;
+  });
+  std::vector<std::pair<std::size_t, std::size_t>> candidates;  // (later part, earlier part)
+  for (std::size_t k = 0; k < by_x.size(); ++k)
+    for (std::size_t l = k + 1; l < by_x.size() && boxes[by_x[l]].min().x() < boxes[by_x[k]].max().x() - tol; ++l) {
+      const std::size_t a = by_x[k], b = by_x[l];
+      const Eigen::AlignedBox3d common = boxes[a].intersection(boxes[b]);
+      if (common.isEmpty() || (common.sizes().array() <= tol).any()) continue;
+      candidates.emplace_back(std::max(a, b), std::min(a, b));
     }
+  std::sort(candidates.begin(), candidates.end());
+  for (const auto& [i, j] : candidates) {
+    const double depth = penetration_depth(part.blocks[i].shape, part.blocks[j].shape);
+    if (depth <= tol) continue;
+    std::string what = part_label(bf, i);
+    what.append(" overlaps part ").append(part_number_text(j));
+    if (!bf.parts[j].name.empty()) what.append(" \"").append(bf.parts[j].name).append("\"");
+    what.append(" by ").append(format_number(depth)).append(" m (penetration depth");
+    if (const auto v = overlap_volume(part.blocks[i].shape, part.blocks[j].shape))
+      what.append("; shared volume ").append(format_number(*v)).append(" m³");
+    what.append("; tolerance simulation.overlap_tolerance = ").append(format_number(tol));
+    what.append(" m; raise it if this is a joint's elastic closure, as in a snapshot of a loaded model)");
+    r.fail("file", what);
+  }
   out.parts.push_back(std::move(part));
 }
 
