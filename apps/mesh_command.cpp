@@ -8,6 +8,7 @@
 
 #include "analytical/static_overturning.hpp"
 #include "apps/run_command.hpp"
+#include "io/block_files.hpp"
 #include "io/deck.hpp"
 #include "io/vtk.hpp"
 
@@ -55,11 +56,13 @@ int mesh_command(const MeshOptions& o) {
   const MeshSummary s = summarize_mesh(scene);
 
   std::vector<Polyhedron> shapes;
+  std::vector<std::string> names;
   std::vector<int> ids, course, motion;
   std::vector<double> mass;
   for (std::size_t i = 0; i < scene.blocks.size(); ++i) {
     const BlockSpec& b = scene.blocks[i];
     shapes.push_back(b.shape);
+    names.push_back(b.name);
     ids.push_back(static_cast<int>(i));
     course.push_back(b.course);
     motion.push_back(static_cast<int>(b.motion));  // 0 free, 1 fixed, 2 kinematic
@@ -67,12 +70,17 @@ int mesh_command(const MeshOptions& o) {
   }
   VtkCellData data;
   data.add_ints("block_id", ids).add_ints("course", course).add_ints("motion", motion).add_scalars("mass", mass);
+  // The blocks as the deck built them (world coordinates at t = 0, exact
+  // round-trip text): for ParaView (.vtu) and for other tools (.obj, one
+  // object per block, named); [[import]] reads either back bit for bit.
   const std::string vtu = (std::filesystem::path(o.out_dir) / "blocks.vtu").string();
+  const std::string obj = (std::filesystem::path(o.out_dir) / "blocks.obj").string();
   try {
     std::filesystem::create_directories(o.out_dir);
     write_vtu(vtu, shapes, data);
+    write_obj(obj, shapes, names);
   } catch (const std::exception& e) {
-    std::cerr << "polydem: error: cannot write " << vtu << ": " << e.what() << "\n";
+    std::cerr << "polydem: error: cannot write " << vtu << " and " << obj << ": " << e.what() << "\n";
     return exit_bad_input;
   }
 
@@ -91,6 +99,7 @@ int mesh_command(const MeshOptions& o) {
     fmt::print("lambda eq. 2      {:.4f} (governing crack height h_c = {:.4g} m)\n", s.lambda_eq2, s.crack_height);
   }
   fmt::print("wrote             {}\n", vtu);
+  fmt::print("                  {}\n", obj);
   return exit_success;
 }
 

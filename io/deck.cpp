@@ -8,6 +8,7 @@
 // io/deck_reader.hpp, shared with the generators' section readers.
 // Every check is always on: a deck that passes here is trusted downstream.
 #include "io/deck.hpp"
+#include "io/cut_section.hpp"
 #include "io/deck_reader.hpp"
 #include "io/generators.hpp"
 #include "io/ground_motion_record.hpp"
@@ -475,6 +476,7 @@ void check_sections(const Deck& deck) {
   std::vector<std::string_view> names;
   for (const auto& s : kSections) names.push_back(s.name);
   for (const auto& g : generator_sections()) names.push_back(g.name);
+  names.push_back("cut");
   for (auto&& [k, v] : deck.root()) {
     if (!contains(names, k.str()))
       deck.fail(std::string(k.str()), &v, "unknown section (a deck has: " + join(names) + ")");
@@ -623,6 +625,8 @@ SceneSpec parse_deck(const std::string& text, const std::string& path_for_messag
   scene.joint = read_joint(deck, generated.joint.value_or(JointDefaults{}));
   scene.blocks = read_blocks(deck, !generated.parts.empty());
   append_generated_blocks(deck, generated, scene.blocks);
+  // [[cut]]s last: they cut whatever the tables and generators made.
+  apply_cuts(deck, scene.blocks);
   scene.ground_motion = read_ground_motion(deck);
   scene.output = read_output(deck, scene.blocks);
   scene.assessment = read_assessment(deck, scene.blocks);
@@ -671,6 +675,7 @@ std::vector<std::string> deck_keys() {
   for (const auto& section : generator_sections()) {
     for (const auto& key : section.keys) keys.push_back(std::string(section.name) + "." + std::string(key));
   }
+  for (const auto& key : cut_keys()) keys.push_back("cut." + std::string(key));
   return keys;
 }
 

@@ -56,5 +56,7 @@ extern const GeneratorSection kSpireSection;
 extern const GeneratorSection kArchSection;
 // [[column]] (io/column_section.cpp).
 extern const GeneratorSection kColumnSection;
+// [[import]] (io/import_section.cpp): blocks from OBJ, PLY and VTU files.
+extern const GeneratorSection kImportSection;
 
 }  // namespace polydem

@@ -3,7 +3,7 @@
 # runs each for SECONDS (default 60). docs/robustness.md explains the targets.
 #   scripts/fuzz.sh                    every target, 60 s each
 #   scripts/fuzz.sh 20                 a quick look: 20 s each
-#   scripts/fuzz.sh 3600 deck          one target for an hour (deck|at2|csv_record)
+#   scripts/fuzz.sh 3600 deck          one target for an hour (deck|at2|csv_record|obj|ply|vtu)
 #   scripts/fuzz.sh replay             only replay fuzz/regressions/ (no fuzzing)
 #   FUZZ_SEED=1 scripts/fuzz.sh 60     what .ci/run does: 60 s each, reproducible
 # Environment: FUZZ_JOBS=N runs N fuzzing processes per target in fork mode,
@@ -33,7 +33,7 @@ case "${1:-}" in
   *) seconds=$1; shift ;;
 esac
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(deck at2 csv_record)
+[ ${#targets[@]} -gt 0 ] || targets=(deck at2 csv_record obj ply vtu)
 
 command -v clang++ > /dev/null || { echo "fuzz: clang++ missing (scripts/setup.sh installs it)" >&2; exit 2; }
 mkdir -p "$build"
@@ -68,6 +68,7 @@ seed() {
     deck) find examples -name '*.toml' | while read -r f; do cp -n "$f" "$dir/example_$(echo "$f" | tr / _)"; done ;;
     at2) for f in ../shared/data/*.AT2 ../shared/data/*.at2; do [ -f "$f" ] && cp -n "$f" "$dir"/; done ;;
     csv_record) for f in ../shared/data/*.csv; do [ -f "$f" ] && cp -n "$f" "$dir"/; done ;;
+    obj) find examples -name '*.obj' | while read -r f; do cp -n "$f" "$dir/example_$(echo "$f" | tr / _)"; done ;;
   esac
   return 0
 }

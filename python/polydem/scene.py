@@ -79,6 +79,8 @@ class Scene:
         self._tables = {}   # section -> {key: value}, single tables
         self._blocks = []   # [[block]] tables
         self._checks = []   # [[check]] tables
+        self._imports = []  # [[import]] tables
+        self._cuts = []     # [[cut]] tables
         self._text = None   # deck text (from_deck / from_text)
         self._name = _Builder.NAME
         self._from_file = False
@@ -124,6 +126,8 @@ class Scene:
         s._tables = copy.deepcopy(self._tables)
         s._blocks = copy.deepcopy(self._blocks)
         s._checks = copy.deepcopy(self._checks)
+        s._imports = copy.deepcopy(self._imports)
+        s._cuts = copy.deepcopy(self._cuts)
         s._overrides = self._overrides + overrides_list(overrides)
         s._parsed = None
         if self._from_file:  # keep read_deck's deck_path and record directory
@@ -210,6 +214,28 @@ class Scene:
                             f"must be an array of shape (n, 3) (got {v.shape})")
         return self.add_block(name, shape="hull", vertices=v, **kw)
 
+    def _array_table(self, section, tables, kw):
+        self._edit()
+        known = _known_keys()[section]
+        for k in kw:
+            if k not in known:
+                raise DeckError(f"{self._name}: key '{section}[{len(tables) + 1}].{k}': unknown key "
+                                f"({section} accepts: {', '.join(sorted(known))})")
+        tables.append(dict(kw))
+        return self
+
+    def add_import(self, file, **kw):
+        """An [[import]]: blocks from an .obj, .ply or .vtu file (scale,
+        rotation, offset, density, motion, fixed_below, fixed, group,
+        name_prefix). A relative `file` is taken from the current directory."""
+        return self._array_table("import", self._imports, dict(kw, file=os.path.abspath(os.fspath(file))))
+
+    def add_cut(self, dip, **kw):
+        """A [[cut]]: a joint set (dip, dip_direction, origin, spacing, count)
+        cutting the blocks selected by `blocks` and/or `groups` (every free
+        block by default), after every block is made, in the order added."""
+        return self._array_table("cut", self._cuts, dict(kw, dip=dip))
+
     def check(self, kind, **kw):
         """A [[check]]: a verification check evaluated after the run."""
         self._edit()
@@ -243,6 +269,10 @@ class Scene:
                 table(f"[{section}]", self._tables[section])
         for b in self._blocks:
             table("[[block]]", b)
+        for t in self._imports:
+            table("[[import]]", t)
+        for t in self._cuts:
+            table("[[cut]]", t)
         for section in ("spire", "ground_motion", "output", "assessment"):
             if section in self._tables:
                 table(f"[{section}]", self._tables[section])

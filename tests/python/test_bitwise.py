@@ -67,3 +67,14 @@ def test_python_scene_from_python_and_command_line(tmp_path):
     # The scene built in Python (not read back from the file) gives the same bits too.
     b = polydem.run(scene, threads=2, progress=False)
     assert np.array_equal(b.positions, run.positions) and b.summary["steps"] == run.summary["steps"]
+
+
+# Verification 14 from the command line: the wall cut from one box and the
+# same wall imported from imported_wall.obj write the same summary.json and
+# results.h5, bit for bit, but for the deck's own path and text.
+def test_imported_wall_writes_the_cut_walls_results(tmp_path):
+    a = cli(tmp_path, "cut", deck("examples/verification/cut_wall.toml"), "simulation.end_time=0.05")
+    b = cli(tmp_path, "imported", deck("examples/verification/imported_wall.toml"), "simulation.end_time=0.05")
+    assert differences(a, b) == ["summary.json /deck: {!r} != {!r}".format(deck("examples/verification/cut_wall.toml"),
+                                                                           deck("examples/verification/imported_wall.toml")),
+                                 "results.h5 deck: differs", "results.h5 deck@path: differs"]

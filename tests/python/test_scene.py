@@ -91,3 +91,28 @@ def test_saved_scene_reads_back_the_same(tmp_path):
     s = polydem.Scene(end_time=0.5).joint(friction_angle=35.0).add_box("b", (1, 2, 3), motion="fixed")
     path = s.save(tmp_path / "scene.toml")
     assert polydem.Scene.from_deck(path).deck_text == s.deck_text
+
+
+def test_cut_and_import_from_python(tmp_path):
+    # A pier cut into three drums, then the same drums from an OBJ file.
+    s = (polydem.Scene(end_time=0.01)
+         .add_box("base", (2, 2, 0.5), (0, 0, -0.25), motion="fixed")
+         .add_box("pier", (0.5, 0.5, 1.5), (0, 0, 0.75))
+         .add_cut(0, origin=(0, 0, 0.5), spacing=0.5, count=2))
+    assert s.block_names == ["base", "pier_cut1", "pier_cut2", "pier_cut3"]
+    with pytest.raises(polydem.DeckError) as e:
+        polydem.Scene().add_cut(0, spacingg=1)
+    assert e.value.key == "cut[1].spacingg"
+    obj = tmp_path / "drums.obj"
+    lines, first = [], 1
+    for k in range(3):
+        lines.append(f"o drum{k}")
+        for z in (0.5 * k, 0.5 * (k + 1)):
+            for x, y in ((-0.25, -0.25), (0.25, -0.25), (0.25, 0.25), (-0.25, 0.25)):
+                lines.append(f"v {x} {y} {z}")
+        for f in ((3, 2, 1, 0), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)):
+            lines.append("f " + " ".join(str(first + i) for i in f))
+        first += 8
+    obj.write_text("\n".join(lines) + "\n")
+    imported = polydem.Scene(end_time=0.01).add_import(obj, density=2000.0)
+    assert imported.block_names == ["drum0", "drum1", "drum2"]

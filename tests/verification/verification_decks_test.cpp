@@ -33,7 +33,8 @@ INSTANTIATE_TEST_SUITE_P(Decks, VerificationDeck,
                                            "rocking_onset.toml", "free_rocking.toml", "energy_conservation.toml",
                                            "stack_of_ten.toml", "dry_stone_wall.toml", "slope_equilibrium.toml",
                                            "pulse_rocking_body_force.toml", "pulse_rocking_kinematic.toml",
-                                           "arch_self_weight.toml", "column_rocking.toml"),
+                                           "arch_self_weight.toml", "column_rocking.toml",
+                                           "cut_wall.toml", "imported_wall.toml"),
                          [](const auto& info) {
                            std::string n = info.param;
                            return n.substr(0, n.find('.'));

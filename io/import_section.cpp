@@ -1,0 +1,182 @@
+// [[import]]: blocks from a mesh file (io/block_files.hpp: OBJ, PLY, VTU),
+// placed (scale, rotation about the file's origin, offset), given their
+// density, motion and group, and checked: every part a closed convex solid,
+// no two parts overlapping by more than simulation.overlap_tolerance.
+#include "io/generators.hpp"
+
+#include "geometry/cut.hpp"
+#include "io/block_files.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <numbers>
+#include <set>
+
+namespace polydem {
+
+namespace {
+
+using namespace deck_reader;
+
+constexpr std::string_view kImportKeys[] = {"file",    "scale",  "rotation", "offset",      "density", "motion",
+                                            "group",   "name_prefix", "fixed_below", "fixed"};
+
+Mat3 rotation_degrees(const std::vector<double>& deg) {
+  const double k = std::numbers::pi / 180.0;
+  return (Eigen::AngleAxisd(deg[2] * k, Vec3::UnitZ()) * Eigen::AngleAxisd(deg[1] * k, Vec3::UnitY()) *
+          Eigen::AngleAxisd(deg[0] * k, Vec3::UnitX()))
+      .toRotationMatrix();
+}
+
+std::string part_number_text(std::size_t i) { return std::to_string(i + 1); }
+
+void read_import(const Deck& deck, const toml::table& t, std::size_t number, Generated& out, SceneSpec& scene) {
+  const std::string path = indexed("import", number);
+  const TableReader r(deck, t, path, kImportKeys);
+  const auto file = r.string("file");
+  if (!file) r.missing("file", "an [[import]] needs file = \"blocks.obj\" (.obj, .ply or .vtu)");
+  if (file->empty()) r.fail("file", "must not be empty");
+  std::filesystem::path p(*file);
+  if (p.is_relative()) p = std::filesystem::path(deck.file()).parent_path() / p;
+  const std::string resolved = p.lexically_normal().string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(resolved, ec))
+    r.fail("file", "file not found: " + resolved + " (relative paths are relative to the deck's directory)");
+
+  const double scale = r.number("scale", 1.0, Range::positive);
+  const auto rotation = r.numbers("rotation", 3, "[rx, ry, rz] (degrees)");
+  const auto offset = r.vec3("offset");
+  const double density = r.number("density", 2600.0, Range::positive);
+  // The deck's motion, else the file's (a polydem mesh .vtu), else free.
+  const bool deck_motion = r.has("motion");
+  const BlockMotion motion = r.choice<BlockMotion>(
+      "motion", {{"free", BlockMotion::free}, {"fixed", BlockMotion::fixed}, {"kinematic", BlockMotion::kinematic}},
+      BlockMotion::free);
+  const auto group = r.string("group");
+  if (group && group->empty()) r.fail("group", "must not be empty (leave the key out for no group)");
+  const std::string prefix = r.string("name_prefix").value_or("");
+  const auto fixed_below = r.number("fixed_below");
+
+  BlockFile bf;
+  try {
+    bf = read_block_file(resolved);
+  } catch (const BlockFileError& e) {
+    r.fail("file", e.what());
+  }
+
+  // fixed = ["name", 3, ...]: parts by their name in the file or number (from 1).
+  std::vector<char> fixed(bf.parts.size(), 0);
+  if (const toml::node* n = t.get("fixed")) {
+    const auto* arr = n->as_array();
+    if (!arr) r.fail("fixed", "must be an array of part names or numbers (got " + describe(*n) + ")");
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      const toml::node& e = *arr->get(i);
+      const std::string at = indexed(r.key_path("fixed"), i + 1);
+      if (const auto* k = e.as_integer()) {
+        if (k->get() < 1 || k->get() > static_cast<long long>(bf.parts.size()))
+          deck.fail(at, &e, "part " + std::to_string(k->get()) + " does not exist (the file has " +
+                                std::to_string(bf.parts.size()) + " parts, numbered from 1)");
+        fixed[static_cast<std::size_t>(k->get() - 1)] = 1;
+      } else if (const auto* s = e.as_string()) {
+        bool found = false;
+        for (std::size_t j = 0; j < bf.parts.size(); ++j)
+          if (bf.parts[j].name == s->get()) fixed[j] = 1, found = true;
+        if (!found) deck.fail(at, &e, "no part named " + in_quotes(s->get()) + " in " + resolved);
+      } else {
+        deck.fail(at, &e, "must be a part name or number (got " + describe(e) + ")");
+      }
+    }
+  }
+
+  const Mat3 R = rotation ? rotation_degrees(*rotation) : Mat3::Identity();
+  const bool moved = r.has("scale") || rotation || offset;
+  std::set<std::string> taken;
+  for (const Generated::Part& other : out.parts)
+    for (const BlockSpec& b : other.blocks) taken.insert(b.name);
+
+  Generated::Part part;
+  part.section = path;
+  part.at = &t;
+  part.deck_line = r.line();
+  for (std::size_t i = 0; i < bf.parts.size(); ++i) {
+    if (moved)
+      for (Vec3& v : bf.parts[i].vertices) v = R * (scale * v) + offset.value_or(Vec3::Zero());
+    BlockSpec b;
+    try {
+      b.shape = part_block(bf, i);
+    } catch (const BlockFileError& e) {
+      r.fail("file", e.what());
+    }
+    const FilePart& fp = bf.parts[i];
+    b.name = prefix + (fp.name.empty() ? "part" + part_number_text(i) : fp.name);
+    if (!taken.insert(b.name).second)
+      r.fail(r.has("name_prefix") ? "name_prefix" : "file",
+             part_label(bf, i) + " would be block " + in_quotes(b.name) +
+                 ", a name another block already has (give a name_prefix)");
+    b.density = density;
+    b.motion = deck_motion       ? motion
+               : fp.motion == 1 ? BlockMotion::fixed
+               : fp.motion == 2 ? BlockMotion::kinematic
+                                : BlockMotion::free;
+    double top = -std::numeric_limits<double>::infinity();
+    for (const Vec3& v : b.shape.vertices) top = std::max(top, v.z());
+    if (fixed[i] || (fixed_below && top <= *fixed_below)) b.motion = BlockMotion::fixed;
+    b.course = fp.course;
+    if (group) b.group = *group;
+    b.deck_line = part.deck_line;
+    part.blocks.push_back(std::move(b));
+  }
+  if (fixed_below && std::none_of(part.blocks.begin(), part.blocks.end(),
+                                  [](const BlockSpec& b) { return b.motion == BlockMotion::fixed; }))
+    r.fail("fixed_below", "no part lies wholly below z = " + format_number(*fixed_below) + " (no block is fixed)");
+
+  // No two parts overlap (more than the run would accept at the start).
+  const double tol = scene.simulation.overlap_tolerance;
+  std::vector<Eigen::AlignedBox3d> boxes;
+  for (const BlockSpec& b : part.blocks) {
+    Eigen::AlignedBox3d box;
+    for (const Vec3& v : b.shape.vertices) box.extend(v);
+    boxes.push_back(box);
+  }
+  // Candidate pairs by sort and sweep along x (a file of many thousand
+  // parts is not checked pair by pair), then in file order.
+  std::vector<std::size_t> by_x(boxes.size());
+  for (std::size_t i = 0; i < by_x.size(); ++i) by_x[i] = i;
+  std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) {
+    return boxes[a].min().x() != boxes[b].min().x() ? boxes[a].min().x() < boxes[b].min().x() : a < b;
+  });
+  std::vector<std::pair<std::size_t, std::size_t>> candidates;  // (later part, earlier part)
+  for (std::size_t k = 0; k < by_x.size(); ++k)
+    for (std::size_t l = k + 1; l < by_x.size() && boxes[by_x[l]].min().x() < boxes[by_x[k]].max().x() - tol; ++l) {
+      const std::size_t a = by_x[k], b = by_x[l];
+      const Eigen::AlignedBox3d common = boxes[a].intersection(boxes[b]);
+      if (common.isEmpty() || (common.sizes().array() <= tol).any()) continue;
+      candidates.emplace_back(std::max(a, b), std::min(a, b));
+    }
+  std::sort(candidates.begin(), candidates.end());
+  for (const auto& [i, j] : candidates) {
+    const double depth = penetration_depth(part.blocks[i].shape, part.blocks[j].shape);
+    if (depth <= tol) continue;
+    std::string what = part_label(bf, i);
+    what.append(" overlaps part ").append(part_number_text(j));
+    if (!bf.parts[j].name.empty()) what.append(" \"").append(bf.parts[j].name).append("\"");
+    what.append(" by ").append(format_number(depth)).append(" m (penetration depth");
+    if (const auto v = overlap_volume(part.blocks[i].shape, part.blocks[j].shape))
+      what.append("; shared volume ").append(format_number(*v)).append(" m³");
+    what.append("; tolerance simulation.overlap_tolerance = ").append(format_number(tol));
+    what.append(" m; raise it if this is a joint's elastic closure, as in a snapshot of a loaded model)");
+    r.fail("file", what);
+  }
+  out.parts.push_back(std::move(part));
+}
+
+void read_import_sections(const Deck& deck, Generated& out, SceneSpec& scene) {
+  const auto tables = section_tables(deck, "import");
+  for (std::size_t i = 0; i < tables.size(); ++i) read_import(deck, *tables[i], i + 1, out, scene);
+}
+
+}  // namespace
+
+const GeneratorSection kImportSection{"import", kImportKeys, read_import_sections};
+
+}  // namespace polydem
