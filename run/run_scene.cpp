@@ -8,6 +8,7 @@
 #include <csignal>
 
 #include <algorithm>
+#include <limits>
 #include <chrono>
 #include <cmath>
 
@@ -72,10 +73,34 @@ void load_loop(ByteReader& r, RunReport& rep, Recorder& rec, LoopState& s, std::
   r.get(s.wall_before);
 }
 
+// The time from which the loads stay as they are: gravity risen, the
+// constant acceleration risen, the pulse over, the record played. Before it
+// blocks at rest have not settled under the run's loads, only under part of
+// them (a slow rise starts at rest); infinite for a ramp, which never ends.
+double loads_final_time(const SceneSpec& spec) {
+  const GroundMotionSpec& g = spec.ground_motion;
+  double t = spec.simulation.gravity_rise_time;
+  switch (g.kind) {
+    case GroundMotionKind::none: break;
+    case GroundMotionKind::constant: t = std::max(t, g.start_time + g.rise_time); break;
+    case GroundMotionKind::sine_pulse: t = std::max(t, g.start_time + g.period); break;
+    case GroundMotionKind::record:
+      t = std::max(t, g.start_time + (g.record_time.empty() ? 0.0 : g.record_time.back()));
+      break;
+    case GroundMotionKind::ramp: t = std::numeric_limits<double>::infinity(); break;
+  }
+  return t;
+}
+
 // True when every free block has been slower than settle_velocity for
-// settle_time (simulation.settle_*; never when settle_velocity is 0).
+// settle_time once the loads are final (simulation.settle_*; never when
+// settle_velocity is 0).
 bool settled(const SceneSpec& spec, const Simulation& sim, double& quiet_since) {
   if (!(spec.simulation.settle_velocity > 0)) return false;
+  if (sim.time() < loads_final_time(spec)) {
+    quiet_since = -1;
+    return false;
+  }
   double vmax = 0;
   for (int i : sim.blocks().free_blocks) vmax = std::max(vmax, sim.blocks().state.velocity[i].norm());
   if (vmax >= spec.simulation.settle_velocity) {

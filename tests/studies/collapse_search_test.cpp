@@ -2,6 +2,7 @@
 // with text overrides: each trial's scene must be the one the overrides gave
 // (bit for bit), so that the search finds what it found before.
 #include "io/deck.hpp"
+#include "run/run_scene.hpp"
 #include "studies/collapse_search.hpp"
 
 #include <gtest/gtest.h>
@@ -104,6 +105,25 @@ shape = "box"
 size = [0.5, 0.5, 1.0]
 center = [0.0, 0.0, 0.5]
 )";
+
+// A trial whose acceleration rises slowly starts at rest: it must not stop as
+// "settled" before the acceleration has reached its value. The tall block
+// (tips at 0.5 g) under 0.6 g rising over 3 s, settle_velocity 1 mm/s for
+// 0.3 s: it collapses (before settling waited for the loads, the same run
+// stopped as settled and intact at t = 0.98 s, under 0.2 g). And below the
+// threshold it settles only after the rise.
+TEST(CollapseSearch, ASlowRiseIsNotTakenForSettling) {
+  SceneSpec base = parse_deck(kTallBlock, "tall.toml");
+  base.simulation.settle_velocity = 1e-3;
+  base.simulation.settle_time = 0.3;
+  const RunReport above = run_scene(constant_acceleration_scene(base, 0.0, 0.6, 3.0, 2.0));
+  EXPECT_EQ(above.assessment.status, "collapsed");
+  EXPECT_FALSE(above.settled);
+  const RunReport below = run_scene(constant_acceleration_scene(base, 0.0, 0.3, 3.0, 2.0));
+  EXPECT_NE(below.assessment.status, "collapsed");
+  EXPECT_TRUE(below.settled);
+  EXPECT_GE(below.end_time, 3.0 + 0.3);
+}
 
 TEST(CollapseSearch, StaticBisectionFindsTippingAndSlidingOfABlock) {
   CollapseSearchOptions o;
