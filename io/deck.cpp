@@ -42,7 +42,10 @@ constexpr std::string_view kSimulationKeys[] = {
     "end_time",          "time_step",       "safety_factor", "gravity",    "contact_margin", "threads",
     "overlap_tolerance", "settle_velocity", "settle_time",   "gravity_rise_time"};
 constexpr std::string_view kJointKeys[] = {"normal_stiffness", "shear_stiffness",  "friction_angle",
-                                           "cohesion",         "tensile_strength", "damping"};
+                                           "cohesion",         "tensile_strength", "damping", "between"};
+constexpr std::string_view kGroupKeys[] = {"name", "density"};
+constexpr std::string_view kLoadKeys[] = {"blocks", "groups", "force", "moment", "point", "table"};
+constexpr std::string_view kPrescribeKeys[] = {"blocks", "groups", "velocity", "angular_velocity", "table"};
 constexpr std::string_view kBlockKeys[] = {"name",     "shape",    "size",   "center",   "polygon",
                                            "z",        "vertices", "rotation", "offset", "density",
                                            "motion",   "velocity", "angular_velocity", "course", "group"};
@@ -68,6 +71,8 @@ constexpr SectionSchema kSections[] = {
     {"block", true, kBlockKeys},            {"ground_motion", false, kGroundMotionKeys},
     {"output", false, kOutputKeys},         {"check", true, kCheckKeys},
     {"assessment", false, kAssessmentKeys}, {"equilibrium", false, kEquilibriumKeys},
+    {"group", true, kGroupKeys},            {"load", true, kLoadKeys},
+    {"prescribe", true, kPrescribeKeys},
 };
 
 // Keys that define a block's shape, by shape.
@@ -106,18 +111,97 @@ SimulationSpec read_simulation(const Deck& deck) {
 }
 
 
-JointSpec read_joint(const Deck& deck, const JointDefaults& defaults) {
-  const TableReader r(deck, table_or_empty(deck, "joint"), "joint", kJointKeys);
-  JointSpec j;
-  j.normal_stiffness = r.number("normal_stiffness", defaults.normal_stiffness, Range::positive);
-  j.shear_stiffness = r.number("shear_stiffness", joint_shear_stiffness(j.normal_stiffness, defaults.shear_ratio), Range::positive);
-  j.friction_angle = r.number("friction_angle", j.friction_angle, Range::non_negative);
+// One joint law from a table: every key it does not give is `base`'s (the
+// stiffness ratio: shear_stiffness follows normal_stiffness by `shear_ratio`
+// unless the table gives it).
+JointSpec read_joint_keys(const TableReader& r, const JointSpec& base, double shear_ratio, bool base_given_shear) {
+  JointSpec j = base;
+  j.normal_stiffness = r.number("normal_stiffness", base.normal_stiffness, Range::positive);
+  const double ks_default =
+      base_given_shear && !r.has("normal_stiffness") ? base.shear_stiffness
+                                                     : joint_shear_stiffness(j.normal_stiffness, shear_ratio);
+  j.shear_stiffness = r.number("shear_stiffness", ks_default, Range::positive);
+  j.friction_angle = r.number("friction_angle", base.friction_angle, Range::non_negative);
   if (j.friction_angle >= 90.0)
     r.fail("friction_angle", "must be in [0, 90) degrees (got " + format_number(j.friction_angle) + ")");
-  j.cohesion = r.number("cohesion", j.cohesion, Range::non_negative);
-  j.tensile_strength = r.number("tensile_strength", j.tensile_strength, Range::non_negative);
-  j.damping = r.number("damping", j.damping, Range::non_negative);
+  j.cohesion = r.number("cohesion", base.cohesion, Range::non_negative);
+  j.tensile_strength = r.number("tensile_strength", base.tensile_strength, Range::non_negative);
+  j.damping = r.number("damping", base.damping, Range::non_negative);
   return j;
+}
+
+JointSpec default_joint(const JointDefaults& defaults) {
+  JointSpec j;
+  j.normal_stiffness = defaults.normal_stiffness;
+  j.shear_stiffness = joint_shear_stiffness(j.normal_stiffness, defaults.shear_ratio);
+  return j;
+}
+
+// [joint] (one law for every joint, as every deck before groups) or
+// [[joint]] (an array: the entry without `between` is the default, at most
+// one; every other entry is the law between two groups, its missing keys the
+// default's). TOML cannot hold both forms, so a deck chooses one; every deck
+// written with [joint] stays valid and means what it meant.
+struct JointSection {
+  JointSpec joint;
+  std::vector<JointPairSpec> pairs;
+};
+
+JointSection read_joints(const Deck& deck, const JointDefaults& defaults, const std::vector<BlockSpec>& blocks) {
+  JointSection out;
+  const toml::node* node = deck.root().get("joint");
+  if (!node || node->as_table()) {
+    const TableReader r(deck, table_or_empty(deck, "joint"), "joint", kJointKeys);
+    if (r.has("between"))
+      r.fail("between", "belongs to a [[joint]] entry (write the default law as a [[joint]] without `between` "
+                        "and each pair of groups as a [[joint]] with it)");
+    out.joint = read_joint_keys(r, default_joint(defaults), defaults.shear_ratio, false);
+    return out;
+  }
+  const auto tables = section_tables(deck, "joint");
+  // The default first, wherever it stands: the pairs inherit from it.
+  int default_index = -1;
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    if (tables[i]->get("between")) continue;
+    if (default_index >= 0) {
+      deck.fail(indexed("joint", i + 1), tables[i],
+                "a second [[joint]] without `between` (the default law is joint[" + std::to_string(default_index + 1) +
+                    "]); give this one `between = [\"GROUP\", \"GROUP\"]`");
+    }
+    default_index = static_cast<int>(i);
+  }
+  if (default_index >= 0) {
+    const TableReader r(deck, *tables[static_cast<std::size_t>(default_index)],
+                        indexed("joint", static_cast<std::size_t>(default_index) + 1), kJointKeys);
+    out.joint = read_joint_keys(r, default_joint(defaults), defaults.shear_ratio, false);
+  } else {
+    out.joint = default_joint(defaults);
+  }
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    if (static_cast<int>(i) == default_index) continue;
+    const TableReader r(deck, *tables[i], indexed("joint", i + 1), kJointKeys);
+    JointPairSpec p;
+    p.deck_line = r.line();
+    const toml::node* between = r.table().get("between");
+    const auto* arr = between->as_array();
+    if (!arr || arr->size() != 2 || !arr->get(0)->as_string() || !arr->get(1)->as_string())
+      r.fail("between", "must be a pair of group names [\"A\", \"B\"] (the same name twice for the joints "
+                        "inside a group) (got " + describe(*between) + ")");
+    p.group_a = arr->get(0)->as_string()->get();
+    p.group_b = arr->get(1)->as_string()->get();
+    for (const std::string* g : {&p.group_a, &p.group_b}) {
+      if (std::none_of(blocks.begin(), blocks.end(), [&](const BlockSpec& b) { return b.group == *g; }))
+        r.fail("between", "no block is in group " + in_quotes(*g) + " ([[block]] group, or a generator's groups)");
+    }
+    for (const JointPairSpec& q : out.pairs) {
+      if ((q.group_a == p.group_a && q.group_b == p.group_b) || (q.group_a == p.group_b && q.group_b == p.group_a))
+        r.fail("between", "the pair " + in_quotes(p.group_a) + ", " + in_quotes(p.group_b) +
+                              " already has a law (the [[joint]] at line " + std::to_string(q.deck_line) + ")");
+    }
+    p.joint = read_joint_keys(r, out.joint, defaults.shear_ratio, true);
+    out.pairs.push_back(std::move(p));
+  }
+  return out;
 }
 
 // R = Rz·Ry·Rx, angles in degrees.
@@ -341,6 +425,114 @@ GroundMotionSpec read_ground_motion(const Deck& deck) {
   return g;
 }
 
+// A selection of blocks: `blocks` (names) and/or `groups` (group names),
+// each name known; at least one block in all.
+void read_selection(const TableReader& r, const std::vector<BlockSpec>& blocks, std::vector<std::string>& names,
+                    std::vector<std::string>& groups) {
+  const auto strings = [&](std::string_view key, std::vector<std::string>& out) {
+    const toml::node* n = r.table().get(key);
+    if (!n) return;
+    const auto* arr = n->as_array();
+    if (!arr) r.fail(key, "must be an array of names [\"...\", ...] (got " + describe(*n) + ")");
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      const auto* str = arr->get(i)->as_string();
+      if (!str) r.deck().fail(indexed(r.key_path(key), i + 1), arr->get(i), "must be a name (got " + describe(*arr->get(i)) + ")");
+      out.push_back(str->get());
+    }
+  };
+  strings("blocks", names);
+  strings("groups", groups);
+  for (const auto& name : names)
+    if (std::none_of(blocks.begin(), blocks.end(), [&](const BlockSpec& b) { return b.name == name; }))
+      r.fail("blocks", "no block named " + in_quotes(name));
+  for (const auto& g : groups)
+    if (std::none_of(blocks.begin(), blocks.end(), [&](const BlockSpec& b) { return b.group == g; }))
+      r.fail("groups", "no block is in group " + in_quotes(g));
+  if (names.empty() && groups.empty()) r.missing("blocks", "select the blocks by blocks = [...] and/or groups = [...]");
+}
+
+// table = [[t, ...], ...]: rows of 1 + `width` numbers, times increasing.
+TimeTable read_time_table(const TableReader& r, std::size_t width, std::string_view form) {
+  TimeTable t;
+  const auto rows = r.points("table", 1 + width, form);
+  if (!rows) return t;
+  if (rows->empty()) r.fail("table", "must have at least one row " + std::string(form));
+  for (std::size_t k = 0; k < rows->size(); ++k) {
+    const auto& row = (*rows)[k];
+    if (k > 0 && !(row[0] > t.time.back()))
+      r.fail("table", "times must increase (row " + std::to_string(k + 1) + ": t = " + format_number(row[0]) +
+                          " after " + format_number(t.time.back()) + ")");
+    t.time.push_back(row[0]);
+    t.value.emplace_back(row[1], width > 1 ? row[2] : 0.0, width > 2 ? row[3] : 0.0);
+  }
+  return t;
+}
+
+std::vector<GroupSpec> read_groups(const Deck& deck, std::vector<BlockSpec>& blocks) {
+  std::vector<GroupSpec> out;
+  const auto tables = section_tables(deck, "group");
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    const TableReader r(deck, *tables[i], indexed("group", i + 1), kGroupKeys);
+    GroupSpec g;
+    g.deck_line = r.line();
+    const auto name = r.string("name");
+    if (!name) r.missing("name", "every [[group]] needs the name of a group of blocks");
+    g.name = *name;
+    if (std::none_of(blocks.begin(), blocks.end(), [&](const BlockSpec& b) { return b.group == g.name; }))
+      r.fail("name", "no block is in group " + in_quotes(g.name));
+    for (const GroupSpec& o : out)
+      if (o.name == g.name)
+        r.fail("name", "group " + in_quotes(g.name) + " already has a [[group]] (line " + std::to_string(o.deck_line) + ")");
+    g.density = r.number("density", 0.0, Range::positive);
+    if (g.density > 0)
+      for (BlockSpec& b : blocks)
+        if (b.group == g.name) b.density = g.density;
+    out.push_back(std::move(g));
+  }
+  return out;
+}
+
+std::vector<LoadSpec> read_loads(const Deck& deck, const std::vector<BlockSpec>& blocks) {
+  std::vector<LoadSpec> out;
+  const auto tables = section_tables(deck, "load");
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    const TableReader r(deck, *tables[i], indexed("load", i + 1), kLoadKeys);
+    LoadSpec l;
+    l.deck_line = r.line();
+    read_selection(r, blocks, l.blocks, l.groups);
+    const auto force = r.vec3("force");
+    const auto moment = r.vec3("moment");
+    if (!force && !moment) r.missing("force", "a [[load]] needs force = [x, y, z] (N) and/or moment = [x, y, z] (N·m)");
+    l.force = force.value_or(Vec3::Zero());
+    l.moment = moment.value_or(Vec3::Zero());
+    if (const auto point = r.vec3("point")) {
+      l.at_point = true;
+      l.point = *point;
+    }
+    l.factor = read_time_table(r, 1, "[t, factor]");
+    out.push_back(std::move(l));
+  }
+  return out;
+}
+
+std::vector<PrescribeSpec> read_prescribed(const Deck& deck, const std::vector<BlockSpec>& blocks) {
+  std::vector<PrescribeSpec> out;
+  const auto tables = section_tables(deck, "prescribe");
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    const TableReader r(deck, *tables[i], indexed("prescribe", i + 1), kPrescribeKeys);
+    PrescribeSpec p;
+    p.deck_line = r.line();
+    read_selection(r, blocks, p.blocks, p.groups);
+    if (r.has("velocity") && r.has("table"))
+      r.fail("table", "give either velocity = [vx, vy, vz] or table = [[t, vx, vy, vz], ...], not both");
+    p.velocity = r.vec3("velocity").value_or(Vec3::Zero());
+    p.angular_velocity = r.vec3("angular_velocity").value_or(Vec3::Zero());
+    p.velocity_table = read_time_table(r, 3, "[t, vx, vy, vz]");
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
 OutputSpec read_output(const Deck& deck, const std::vector<BlockSpec>& blocks) {
   const TableReader r(deck, table_or_empty(deck, "output"), "output", kOutputKeys);
   OutputSpec o;
@@ -459,6 +651,7 @@ std::vector<std::string> deck_warnings(const Deck& deck, const SceneSpec& s) {
       !s.equilibrium.enabled && s.joint.damping == 0 && s.joint.friction_angle > 0) {
     const toml::node* joint = deck.root().get("joint");
     const toml::node* at = joint && joint->as_table() ? joint->as_table()->get("damping") : nullptr;
+    if (joint && joint->as_array()) joint = nullptr;  // [[joint]]: the warning names the key alone
     warnings.push_back(deck_warning(
         deck, "joint.damping", at ? at : joint,
         "gravity is applied in full at t = 0 to frictional joints with no damping: the joints unload every "
@@ -617,9 +810,14 @@ SceneSpec parse_deck(const std::string& text, const std::string& path_for_messag
   // Generators ([spire], ...) first: they may set the joints' defaults
   // (from their materials) and they stand in for [[block]] tables.
   const Generated generated = read_generators(deck, scene);
-  scene.joint = read_joint(deck, generated.joint.value_or(JointDefaults{}));
   scene.blocks = read_blocks(deck, !generated.parts.empty());
   append_generated_blocks(deck, generated, scene.blocks);
+  JointSection joints = read_joints(deck, generated.joint.value_or(JointDefaults{}), scene.blocks);
+  scene.joint = joints.joint;
+  scene.joint_pairs = std::move(joints.pairs);
+  scene.groups = read_groups(deck, scene.blocks);
+  scene.loads = read_loads(deck, scene.blocks);
+  scene.prescribed = read_prescribed(deck, scene.blocks);
   scene.ground_motion = read_ground_motion(deck);
   scene.output = read_output(deck, scene.blocks);
   scene.assessment = read_assessment(deck, scene.blocks);

@@ -1,0 +1,408 @@
+// Groups, joint laws by pair of groups, densities by group, point loads and
+// prescribed motions, each against an exact or analytical result (issue 13).
+#include "core/loads.hpp"
+#include "io/deck.hpp"
+#include "run/run_scene.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace polydem {
+namespace {
+
+// The column `name` of a history table at row k.
+double at(const HistoryTable& t, const std::string& name, std::size_t k) {
+  for (std::size_t c = 0; c < t.columns.size(); ++c)
+    if (t.columns[c] == name) return t.rows[k * t.columns.size() + c];
+  ADD_FAILURE() << "no history column " << name;
+  return std::nan("");
+}
+
+// d(column)/dt between rows a and b.
+double rate(const HistoryTable& t, const std::string& name, std::size_t a, std::size_t b) {
+  return (at(t, name, b) - at(t, name, a)) / (at(t, "time", b) - at(t, "time", a));
+}
+
+void replace(std::string& text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from;
+  text.replace(at, from.size(), to);
+}
+
+// ------------------------------------------------------------ groups
+
+TEST(Groups, BlocksCarryTheirGroupIndexAndTheNames) {
+  const SceneSpec s = parse_deck(R"(
+[[block]]
+name = "a"
+shape = "box"
+size = [1, 1, 1]
+group = "upper"
+[[block]]
+name = "b"
+shape = "box"
+size = [1, 1, 1]
+center = [3, 0, 0]
+[[block]]
+name = "c"
+shape = "box"
+size = [1, 1, 1]
+center = [6, 0, 0]
+group = "lower"
+[[block]]
+name = "d"
+shape = "box"
+size = [1, 1, 1]
+center = [9, 0, 0]
+group = "upper"
+)",
+                                 "groups.toml");
+  const Blocks b = build_blocks(s.blocks);
+  ASSERT_EQ(b.group_names.size(), 2u);
+  EXPECT_EQ(b.group_names[0], "upper");
+  EXPECT_EQ(b.group_names[1], "lower");
+  EXPECT_EQ(b.props.group, (std::vector<int>{0, -1, 1, 0}));
+  EXPECT_EQ(b.find_group("lower"), 1);
+  EXPECT_EQ(b.find_group("none"), -1);
+}
+
+// [[group]] density: every block of the group gets it; mass = ρ·V exactly.
+TEST(Groups, DensityByGroupGivesMassRhoTimesVolume) {
+  const SceneSpec s = parse_deck(R"(
+[[block]]
+name = "a"
+shape = "box"
+size = [1, 2, 0.5]
+group = "lime"
+[[block]]
+name = "b"
+shape = "box"
+size = [1, 1, 1]
+center = [3, 0, 0]
+density = 2000
+[[block]]
+name = "c"
+shape = "prism"
+polygon = [[5, 0], [6, 0], [5.5, 1]]
+z = [0, 0.3]
+group = "lime"
+[[group]]
+name = "lime"
+density = 1800
+)",
+                                 "density.toml");
+  const Blocks b = build_blocks(s.blocks);
+  EXPECT_EQ(b.props.mass[0], 1800.0 * 1.0);             // 1 × 2 × 0.5 m³
+  EXPECT_EQ(b.props.mass[1], 2000.0 * 1.0);             // not in the group: its own density
+  EXPECT_NEAR(b.props.mass[2], 1800.0 * 0.15, 1e-12);  // ½·1·1 m² × 0.3 m
+  EXPECT_EQ(b.props.mass[2], 1800.0 * mass_properties(s.blocks[2].shape).volume);
+  ASSERT_EQ(s.groups.size(), 1u);
+  EXPECT_EQ(s.groups[0].density, 1800.0);
+}
+
+// ------------------------------------------------- joint laws by pair
+
+// A stone on a base under gravity tilted by 35°: the default law
+// (φ = 45°) holds it, the base–stone law (φ = 30°) lets it slide at
+// a = g (sin θ − cos θ tan φ).
+const char* kSlope = R"(
+[simulation]
+end_time = 0.6
+gravity = [5.62678484060376, 0.0, -8.03588155447501]
+
+[[joint]]
+friction_angle = 45.0
+damping = 2.1e-5
+
+[[joint]]
+between = ["base", "stone"]
+friction_angle = 30.0
+
+[[block]]
+name = "base"
+shape = "box"
+size = [8.0, 2.0, 0.5]
+center = [2.0, 0.0, -0.25]
+motion = "fixed"
+group = "base"
+
+[[block]]
+name = "stone"
+shape = "box"
+size = [1.0, 1.0, 0.5]
+center = [0.0, 0.0, 0.25]
+group = "stone"
+
+[output]
+history_interval = 0.05
+histories = ["stone.velocity"]
+)";
+
+TEST(JointLawsByGroup, AStoneSlidesAtThePairsFrictionAngle) {
+  const SceneSpec s = parse_deck(kSlope, "slope.toml");
+  ASSERT_EQ(s.joint_pairs.size(), 1u);
+  EXPECT_EQ(s.joint.friction_angle, 45.0);
+  EXPECT_EQ(s.joint_pairs[0].joint.friction_angle, 30.0);
+  EXPECT_EQ(s.joint_pairs[0].joint.normal_stiffness, s.joint.normal_stiffness);  // inherited
+  const RunReport r = run_scene(s);
+  const double g = std::hypot(5.62678484060376, 8.03588155447501);
+  const double th = 35.0 * std::numbers::pi / 180, phi = 30.0 * std::numbers::pi / 180;
+  const double expected = g * (std::sin(th) - std::cos(th) * std::tan(phi));
+  // From 0.1 s (the joint has settled) to the end.
+  const double a = rate(r.histories, "stone.velocity.x", 2, r.histories.row_count() - 1);
+  EXPECT_NEAR(a, expected, 1e-4 * expected) << "a = " << a << ", expected " << expected;
+  EXPECT_LT(r.energy_balance_error, 1e-6);
+}
+
+TEST(JointLawsByGroup, WithoutThePairTheDefaultHoldsTheStone) {
+  // The same stone in another group: the default law, φ = 45° > 35°, acts.
+  std::string deck = kSlope;
+  replace(deck, "group = \"stone\"", "group = \"other\"");
+  replace(deck, "between = [\"base\", \"stone\"]", "between = [\"base\", \"base\"]");
+  const RunReport r = run_scene(parse_deck(deck, "slope.toml"));
+  const std::size_t last = r.histories.row_count() - 1;
+  EXPECT_LT(std::abs(at(r.histories, "stone.velocity.x", last)), 1e-5);
+}
+
+// A stack on a fixed base with a soft lower joint and a stiff upper one
+// comes to rest with each joint closed by its load over its stiffness:
+// w = W / (kn·A) per joint, W the weight above it.
+TEST(JointLawsByGroup, AStackSettlesByEachJointsOwnStiffness) {
+  const SceneSpec s = parse_deck(R"(
+[simulation]
+end_time = 0.001
+
+[[joint]]
+normal_stiffness = 98e9
+friction_angle = 30.0
+damping = 2.1e-5
+
+[[joint]]
+between = ["base", "lower"]
+normal_stiffness = 10e9
+
+[[block]]
+name = "base"
+shape = "box"
+size = [2.0, 2.0, 0.5]
+center = [0.0, 0.0, -0.25]
+motion = "fixed"
+group = "base"
+
+[[block]]
+name = "lower"
+shape = "box"
+size = [1.0, 1.0, 1.0]
+center = [0.0, 0.0, 0.5]
+group = "lower"
+
+[[block]]
+name = "upper"
+shape = "box"
+size = [1.0, 1.0, 0.5]
+center = [0.0, 0.0, 1.25]
+group = "upper"
+
+[equilibrium]
+ratio = 1e-10
+)",
+                                 "stack.toml");
+  const RunReport r = run_scene(s);
+  ASSERT_TRUE(r.equilibrium.ran);
+  const double g = 9.81, A = 1.0;
+  const double m_lower = 2600.0, m_upper = 1300.0;
+  const double w1 = (m_lower + m_upper) * g / (10e9 * A);  // base–lower: its own law
+  const double w2 = m_upper * g / (98e9 * A);              // lower–upper: the default
+  const double settle_lower = 0.5 - r.final_position[1].z();
+  const double settle_upper = 1.25 - r.final_position[2].z();
+  EXPECT_NEAR(settle_lower, w1, 1e-6 * w1);
+  EXPECT_NEAR(settle_upper - settle_lower, w2, 1e-6 * w2);
+}
+
+// ------------------------------------------------------------ loads
+
+// A free stone on a frictionless base pushed by a constant horizontal
+// force: a = F/m.
+TEST(Loads, AConstantForceAcceleratesAFreeBlockAtFOverM) {
+  const SceneSpec s = parse_deck(R"(
+[simulation]
+end_time = 0.2
+
+[joint]
+friction_angle = 0.0
+
+[[block]]
+name = "base"
+shape = "box"
+size = [20.0, 2.0, 0.5]
+center = [0.0, 0.0, -0.25]
+motion = "fixed"
+
+[[block]]
+name = "stone"
+shape = "box"
+size = [1.0, 1.0, 1.0]
+center = [0.0, 0.0, 0.5]
+
+[[load]]
+blocks = ["stone"]
+force = [5200.0, 0.0, 0.0]
+
+[output]
+history_interval = 0.01
+histories = ["stone.velocity"]
+)",
+                                 "push.toml");
+  const RunReport r = run_scene(s);
+  const double a = rate(r.histories, "stone.velocity.x", 1, r.histories.row_count() - 1);
+  EXPECT_NEAR(a, 5200.0 / 2600.0, 1e-9 * 2.0);
+  EXPECT_LT(r.energy_balance_error, 1e-6);
+  EXPECT_GT(r.energy.load_work, 0.0);
+}
+
+// A moment about a principal axis spins a free block at dω/dt = M/I.
+TEST(Loads, AMomentSpinsAFreeBlockAtMOverI) {
+  const SceneSpec s = parse_deck(R"(
+[simulation]
+end_time = 0.1
+gravity = [0, 0, 0]
+
+[[block]]
+name = "stone"
+shape = "box"
+size = [2.0, 1.0, 0.5]
+group = "g"
+
+[[load]]
+groups = ["g"]
+moment = [0.0, 0.0, 300.0]
+
+[output]
+history_interval = 0.01
+histories = ["stone.angular_velocity"]
+)",
+                                 "spin.toml");
+  const RunReport r = run_scene(s);
+  const double m = 2600.0 * 1.0;
+  const double Iz = m * (2.0 * 2.0 + 1.0 * 1.0) / 12.0;
+  const double alpha = rate(r.histories, "stone.angular_velocity.z", 1, r.histories.row_count() - 1);
+  EXPECT_NEAR(alpha, 300.0 / Iz, 1e-9 * 300.0 / Iz);
+  EXPECT_LT(r.energy_balance_error, 1e-6);
+}
+
+// A force at a point off the centroid also turns the block: torque r×F.
+TEST(Loads, AForceAtAPointAddsItsMoment) {
+  const SceneSpec s = parse_deck(R"(
+[simulation]
+end_time = 0.01
+gravity = [0, 0, 0]
+
+[[block]]
+name = "stone"
+shape = "box"
+size = [2.0, 1.0, 0.5]
+
+[[load]]
+blocks = ["stone"]
+force = [0.0, 100.0, 0.0]
+point = [1.0, 0.0, 0.0]
+table = [[0.0, 1.0], [1.0, 1.0]]
+
+[output]
+histories = ["stone.angular_velocity", "stone.velocity"]
+)",
+                                 "point.toml");
+  const RunReport r = run_scene(s);
+  const double m = 2600.0, Iz = m * 5.0 / 12.0;
+  const std::size_t last = r.histories.row_count() - 1;
+  EXPECT_NEAR(rate(r.histories, "stone.velocity.y", 1, last), 100.0 / m, 1e-6 * 100.0 / m);
+  // The arm turns with the block (a small angle here: 1e-4 rad), so 1e-6.
+  EXPECT_NEAR(rate(r.histories, "stone.angular_velocity.z", 1, last), 100.0 / Iz, 1e-6 * 100.0 / Iz);
+}
+
+TEST(Loads, ATableIsPiecewiseLinearAndConstantBeyondItsEnds) {
+  TimeTable t;
+  t.time = {0.0, 1.0, 3.0};
+  t.value = {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(-2, 0, 0)};
+  EXPECT_EQ(table_value(t, -1.0).x(), 0.0);
+  EXPECT_EQ(table_value(t, 0.5).x(), 1.0);
+  EXPECT_EQ(table_value(t, 1.0).x(), 2.0);
+  EXPECT_EQ(table_value(t, 2.0).x(), 0.0);
+  EXPECT_EQ(table_value(t, 5.0).x(), -2.0);
+  EXPECT_EQ(table_value(TimeTable{}, 7.0).x(), 1.0);
+}
+
+// A kinematic pusher whose velocity rises linearly (a table: v = 4 m/s² · t)
+// pushes a free block in space through their joint: once the start's
+// ringing has died away, the block accelerates with the pusher and the
+// joint carries m·a; the ledger (the pusher's work through the joint)
+// balances.
+TEST(Prescribe, APusherAtAPrescribedVelocityCarriesTheBlockAlong) {
+  const SceneSpec s = parse_deck(R"(
+[simulation]
+end_time = 0.3
+gravity = [0, 0, 0]
+
+[[block]]
+name = "pusher"
+shape = "box"
+size = [1.0, 1.0, 1.0]
+center = [-0.5, 0.0, 0.0]
+
+[[block]]
+name = "stone"
+shape = "box"
+size = [1.0, 1.0, 1.0]
+center = [0.5, 0.0, 0.0]
+
+[[prescribe]]
+blocks = ["pusher"]
+table = [[0.0, 0.0, 0.0, 0.0], [1.0, 4.0, 0.0, 0.0]]
+
+[output]
+history_interval = 0.01
+histories = ["stone.velocity", "stone.contact_force", "pusher.velocity", "pusher.position"]
+)",
+                                 "pusher.toml");
+  const RunReport r = run_scene(s);
+  const std::size_t last = r.histories.row_count() - 1;
+  const double t = at(r.histories, "time", last);
+  EXPECT_NEAR(rate(r.histories, "stone.velocity.x", 10, last), 4.0, 1e-6 * 4.0);
+  EXPECT_NEAR(at(r.histories, "stone.contact_force.x", last), 2600.0 * 4.0, 1e-6 * 2600.0 * 4.0);
+  // The pusher's path: x = −0.5 + 2·t² (the midpoint rule is exact for a linear v).
+  EXPECT_NEAR(at(r.histories, "pusher.position.x", last), -0.5 + 2.0 * t * t, 1e-12);
+  EXPECT_LT(r.energy_balance_error, 1e-6);
+  EXPECT_GT(r.energy.load_work, 0.0);
+}
+
+// A prescribed angular velocity turns the block about its centroid.
+TEST(Prescribe, AnAngularVelocityTurnsTheBlock) {
+  const SceneSpec s = parse_deck(R"(
+[simulation]
+end_time = 0.5
+time_step = 1e-4
+gravity = [0, 0, 0]
+
+[[block]]
+name = "wheel"
+shape = "box"
+size = [1.0, 1.0, 1.0]
+
+[[prescribe]]
+blocks = ["wheel"]
+velocity = [0.1, 0.0, 0.0]
+angular_velocity = [0.0, 0.0, 2.0]
+)",
+                                 "wheel.toml");
+  const RunReport r = run_scene(s);
+  EXPECT_NEAR(r.final_position[0].x(), 0.1 * r.end_time, 1e-12);
+  const Eigen::AngleAxisd turned(r.final_orientation[0] * build_blocks(s.blocks).state.orientation[0].inverse());
+  EXPECT_NEAR(turned.angle(), 2.0 * r.end_time, 1e-9);
+  EXPECT_NEAR(std::abs(turned.axis().z()), 1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace polydem
