@@ -152,6 +152,11 @@ struct GroundMotionSpec {
   // acceleration is the motion at the spire's base. 0 = no filter.
   double tower_frequency = 0.0;   // Hz
   double tower_damping = 0.05;    // damping ratio
+  // [[ground_motion.component]]: further components (any direction, e.g.
+  // the second horizontal and the vertical record of a PEER NGA set), each
+  // its own kind, direction, start time, scale and record; applied as this
+  // section says (applied_as); no tower filter.
+  std::vector<GroundMotionSpec> components;
   int deck_line = 0;
 };
 

@@ -340,8 +340,8 @@ void Simulation::move_kinematic_blocks() {
   if (blocks_.kinematic_blocks.empty()) return;
   auto& st = blocks_.state;
   const bool moving =
-      !static_stage_ && motion_.active() && motion_.applied_as == GroundMotionApplication::kinematic;
-  const Vec3 v_next = moving ? Vec3(motion_.velocity_at(time_ + 0.5 * dt_) * motion_.direction) : Vec3::Zero();
+      !static_stage_ && motion_.any_active() && motion_.applied_as == GroundMotionApplication::kinematic;
+  const Vec3 v_next = moving ? motion_.velocity_vector(time_ + 0.5 * dt_) : Vec3(Vec3::Zero());
   for (int i : blocks_.kinematic_blocks) {
     const int k = prescription_of_.empty() ? -1 : prescription_of_[i];
     if (k >= 0) {

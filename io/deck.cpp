@@ -52,7 +52,11 @@ constexpr std::string_view kBlockKeys[] = {"name",     "shape",    "size",   "ce
 constexpr std::string_view kGroundMotionKeys[] = {"kind",           "applied_as", "direction", "start_time",
                                                   "acceleration",   "acceleration_g", "rate",  "rate_g",
                                                   "period",         "record",         "scale",
-                                                  "rise_time",      "tower_frequency", "tower_damping"};
+                                                  "rise_time",      "tower_frequency", "tower_damping",
+                                                  "component"};
+constexpr std::string_view kGroundMotionComponentKeys[] = {
+    "kind", "direction", "start_time", "acceleration", "acceleration_g", "rate", "rate_g", "period", "record", "scale",
+    "rise_time"};
 constexpr std::string_view kOutputKeys[] = {"history_interval",  "histories",       "energies",
                                             "walking",           "snapshot_interval", "snapshot_joints",
                                             "checkpoint_interval"};
@@ -357,10 +361,10 @@ std::optional<double> si_or_g(const TableReader& r, std::string_view si_key, std
   return si;
 }
 
-GroundMotionSpec read_ground_motion(const Deck& deck) {
-  const TableReader r(deck, table_or_empty(deck, "ground_motion"), "ground_motion", kGroundMotionKeys);
-  GroundMotionSpec g;
-  g.deck_line = r.line();
+// The keys a motion component has: the section's own and each
+// [[ground_motion.component]]'s (kind, direction, start time, amplitude or
+// rate, period, rise time, record and scale).
+void read_motion_keys(const Deck& deck, const TableReader& r, GroundMotionSpec& g) {
   g.kind = r.choice<GroundMotionKind>("kind",
                                       {{"none", GroundMotionKind::none},
                                        {"constant", GroundMotionKind::constant},
@@ -368,10 +372,6 @@ GroundMotionSpec read_ground_motion(const Deck& deck) {
                                        {"sine_pulse", GroundMotionKind::sine_pulse},
                                        {"record", GroundMotionKind::record}},
                                       g.kind);
-  g.applied_as = r.choice<GroundMotionApplication>(
-      "applied_as",
-      {{"body_force", GroundMotionApplication::body_force}, {"kinematic", GroundMotionApplication::kinematic}},
-      g.applied_as);
   if (const auto d = r.vec3("direction")) {
     if (!(d->norm() > 0)) r.fail("direction", "must not be the zero vector");
     g.direction = d->normalized();
@@ -383,8 +383,6 @@ GroundMotionSpec read_ground_motion(const Deck& deck) {
   g.rate = rate.value_or(g.rate);
   g.period = r.number("period", g.period, Range::positive);
   g.rise_time = r.number("rise_time", g.rise_time, Range::non_negative);
-  g.tower_frequency = r.number("tower_frequency", g.tower_frequency, Range::non_negative);
-  g.tower_damping = r.number("tower_damping", g.tower_damping, Range::non_negative);
   g.scale = r.number("scale", g.scale, Range::any);
   const auto record = r.string("record");
 
@@ -421,6 +419,36 @@ GroundMotionSpec read_ground_motion(const Deck& deck) {
     GroundMotionRecord rec = read_record(g.record_path, 1.0);
     g.record_time = std::move(rec.time);
     g.record_acceleration = std::move(rec.acceleration);
+  }
+}
+
+GroundMotionSpec read_ground_motion(const Deck& deck) {
+  const TableReader r(deck, table_or_empty(deck, "ground_motion"), "ground_motion", kGroundMotionKeys);
+  GroundMotionSpec g;
+  g.deck_line = r.line();
+  g.applied_as = r.choice<GroundMotionApplication>(
+      "applied_as",
+      {{"body_force", GroundMotionApplication::body_force}, {"kinematic", GroundMotionApplication::kinematic}},
+      g.applied_as);
+  g.tower_frequency = r.number("tower_frequency", g.tower_frequency, Range::non_negative);
+  g.tower_damping = r.number("tower_damping", g.tower_damping, Range::non_negative);
+  read_motion_keys(deck, r, g);
+  // [[ground_motion.component]]: further components, each its own keys.
+  if (const toml::node* n = r.table().get("component")) {
+    const auto* arr = n->as_array();
+    if (!arr) r.fail("component", "must be an array of tables: write [[ground_motion.component]] (got " + describe(*n) + ")");
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      const std::string path = indexed("ground_motion.component", i + 1);
+      const auto* t = arr->get(i)->as_table();
+      if (!t) deck.fail(path, arr->get(i), "must be a table: write [[ground_motion.component]]");
+      const TableReader c(deck, *t, path, kGroundMotionComponentKeys);
+      GroundMotionSpec m;
+      m.deck_line = c.line();
+      m.applied_as = g.applied_as;
+      if (!c.has("kind")) c.missing("kind", "every component needs kind (\"constant\", \"ramp\", \"sine_pulse\" or \"record\")");
+      read_motion_keys(deck, c, m);
+      g.components.push_back(std::move(m));
+    }
   }
   return g;
 }
@@ -866,6 +894,7 @@ std::vector<std::string> deck_keys() {
   for (const auto& section : generator_sections()) {
     for (const auto& key : section.keys) keys.push_back(std::string(section.name) + "." + std::string(key));
   }
+  for (const auto& key : kGroundMotionComponentKeys) keys.push_back("ground_motion.component." + std::string(key));
   return keys;
 }
 

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <string>
 
@@ -402,6 +403,173 @@ angular_velocity = [0.0, 0.0, 2.0]
   const Eigen::AngleAxisd turned(r.final_orientation[0] * build_blocks(s.blocks).state.orientation[0].inverse());
   EXPECT_NEAR(turned.angle(), 2.0 * r.end_time, 1e-9);
   EXPECT_NEAR(std::abs(turned.axis().z()), 1.0, 1e-12);
+}
+
+// --------------------------------------------- ground motion components
+
+// A stone on a fixed base under the example's synthetic record along x.
+std::string record_deck(const std::string& extra) {
+  std::string d = R"(
+[simulation]
+end_time = 0.3
+
+[[block]]
+name = "base"
+shape = "box"
+size = [4.0, 4.0, 0.5]
+center = [0.0, 0.0, -0.25]
+motion = "fixed"
+
+[[block]]
+name = "stone"
+shape = "box"
+size = [0.4, 0.4, 1.2]
+center = [0.0, 0.0, 0.6]
+
+[output]
+history_interval = 0.01
+histories = ["stone.position", "stone.velocity", "stone.contact_force"]
+
+[ground_motion]
+kind = "record"
+record = "examples/spire/synthetic_record.csv"
+scale = 2000.0
+direction = [1, 0, 0]
+)";
+  return d + extra;
+}
+
+SceneSpec parse_here(const std::string& text) {
+  // The deck's directory is the source tree, so the example record is found.
+  return parse_deck(text, std::string(POLYDEM_SOURCE_DIR) + "/deck.toml");
+}
+
+void expect_same_bits(const RunReport& a, const RunReport& b, bool histories = true) {
+  ASSERT_EQ(a.steps, b.steps);
+  ASSERT_EQ(a.final_position.size(), b.final_position.size());
+  for (std::size_t i = 0; i < a.final_position.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(a.final_position[i][k], b.final_position[i][k]) << "block " << i;
+      EXPECT_EQ(a.final_velocity[i][k], b.final_velocity[i][k]) << "block " << i;
+    }
+  }
+  if (histories) {
+    EXPECT_EQ(a.histories.rows, b.histories.rows);
+  }
+  EXPECT_EQ(a.energies.rows, b.energies.rows);
+}
+
+// Two further components of zero scale (the y and z records of a set with
+// only x given) leave the run bitwise what the one-component run is.
+TEST(GroundMotionComponents, TwoZeroComponentsGiveTheOneComponentRunsBits) {
+  const RunReport one = run_scene(parse_here(record_deck("")));
+  const RunReport three = run_scene(parse_here(record_deck(R"(
+[[ground_motion.component]]
+kind = "record"
+record = "examples/spire/synthetic_record.csv"
+direction = [0, 1, 0]
+scale = 0.0
+
+[[ground_motion.component]]
+kind = "record"
+record = "examples/spire/synthetic_record.csv"
+direction = [0, 0, 1]
+scale = 0.0
+start_time = 0.05
+)")));
+  expect_same_bits(one, three);
+  // And the motion did something: the stone moved.
+  EXPECT_GT(std::abs(one.final_position[1].x()), 1e-6);
+}
+
+// The same record given as a component (the section's own kind "none")
+// is the same run, bit for bit.
+TEST(GroundMotionComponents, ARecordAsAComponentIsTheSameRun) {
+  const RunReport own = run_scene(parse_here(record_deck("")));
+  std::string deck = record_deck(R"(
+[[ground_motion.component]]
+kind = "record"
+record = "examples/spire/synthetic_record.csv"
+scale = 2000.0
+direction = [1, 0, 0]
+)");
+  replace(deck, "kind = \"record\"\nrecord = \"examples/spire/synthetic_record.csv\"\nscale = 2000.0\ndirection = [1, 0, 0]\n\n",
+          "kind = \"none\"\n\n");
+  const SceneSpec s = parse_here(deck);
+  ASSERT_EQ(s.ground_motion.kind, GroundMotionKind::none);
+  ASSERT_EQ(s.ground_motion.components.size(), 1u);
+  // The histories differ by one column: ground.acceleration is the
+  // section's own component's, and here it has none.
+  expect_same_bits(own, run_scene(s), false);
+}
+
+// A vertical component a_z on a resting stone changes its joint force by
+// m·a_z: the inertial force −m·a_z of the base frame adds to the weight.
+TEST(GroundMotionComponents, AVerticalComponentChangesTheRestingForceByMTimesAz) {
+  const std::string base = R"(
+[simulation]
+end_time = 0.6
+
+[[block]]
+name = "base"
+shape = "box"
+size = [2.0, 2.0, 0.5]
+center = [0.0, 0.0, -0.25]
+motion = "fixed"
+
+[[block]]
+name = "stone"
+shape = "box"
+size = [1.0, 1.0, 1.0]
+center = [0.0, 0.0, 0.5]
+
+[equilibrium]
+
+[output]
+history_interval = 0.01
+histories = ["stone.contact_force"]
+)";
+  const double az = 0.3 * 9.81;
+  const RunReport still = run_scene(parse_deck(base, "still.toml"));
+  const RunReport shaken = run_scene(parse_deck(base + R"(
+[ground_motion]
+kind = "none"
+
+[[ground_motion.component]]
+kind = "constant"
+direction = [0, 0, 1]
+acceleration_g = 0.3
+rise_time = 0.3
+)",
+                                                "shaken.toml"));
+  const std::size_t last = still.histories.row_count() - 1;
+  const double m = 2600.0;
+  const double f0 = at(still.histories, "stone.contact_force.z", last);
+  const double f1 = at(shaken.histories, "stone.contact_force.z", last);
+  EXPECT_NEAR(f0, m * 9.81, 1e-6 * m * 9.81);
+  EXPECT_NEAR(f1 - f0, m * az, 1e-6 * m * az) << "f1 = " << f1 << ", f0 = " << f0;
+}
+
+// The reader on a real PEER record (../shared/data): El Centro as the second
+// horizontal component, its samples scaled and applied along y.
+TEST(GroundMotionComponents, ReadsAPeerRecordAsAComponent) {
+  const std::string at2 = std::string(POLYDEM_SHARED_DIR) + "/data/elcentro-1940-ns.AT2";
+  if (!std::filesystem::exists(at2)) GTEST_SKIP() << "../shared/data is absent: " << at2;
+  const SceneSpec s = parse_deck(record_deck("\n[[ground_motion.component]]\nkind = \"record\"\nrecord = \"" + at2 +
+                                             "\"\ndirection = [0, 1, 0]\nscale = 0.5\nstart_time = 0.1\n"),
+                                 std::string(POLYDEM_SOURCE_DIR) + "/deck.toml");
+  ASSERT_EQ(s.ground_motion.components.size(), 1u);
+  const GroundMotionSpec& c = s.ground_motion.components[0];
+  EXPECT_EQ(c.record_time.size(), 1560u);
+  const GroundMotion g = make_ground_motion(s.ground_motion, s.ground_motion.record_time,
+                                            s.ground_motion.record_acceleration);
+  ASSERT_EQ(g.components.size(), 1u);
+  // At t = 0.1 + t_k the y acceleration is 0.5 × the k-th sample.
+  const std::size_t k = 100;
+  const Vec3 a = g.acceleration_vector(0.1 + c.record_time[k]);
+  EXPECT_NEAR(a.y() - g.acceleration_at(0.1 + c.record_time[k]) * g.direction.y(), 0.5 * c.record_acceleration[k],
+              1e-12);
+  EXPECT_EQ(g.components[0].direction, Vec3(0, 1, 0));
 }
 
 }  // namespace
