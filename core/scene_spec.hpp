@@ -13,6 +13,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace polydem {
@@ -161,8 +162,11 @@ struct GroundMotionSpec {
 };
 
 // [output]
+// A history of a group: "group:NAME.QUANTITY" (HistorySpec::block is then
+// "group:NAME"); quantities position, velocity, contact_force (run/recorder.hpp).
+inline constexpr std::string_view kGroupPrefix = "group:";
 struct HistorySpec {
-  std::string block;     // block name
+  std::string block;     // block name, or "group:" + group name
   std::string quantity;  // "position" | "velocity" | "rotation" | "angular_velocity" | "contact_force"
 };
 struct OutputSpec {
@@ -201,6 +205,7 @@ struct AssessmentSpec {
   double collapse_mass_fraction = 0.1;
   bool stop_on_collapse = false;
   std::string monitor_block;           // empty: the highest free block against gravity
+  std::string monitor_group;           // not empty: the highest free block of this group
   int deck_line = 0;
 };
 

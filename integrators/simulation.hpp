@@ -109,6 +109,8 @@ class Simulation {
   const GroundMotion& ground_motion() const { return motion_; }
   const JointLaw& joint_law() const { return laws_.laws[0]; }  // the default law
   const JointLaws& joint_laws() const { return laws_; }
+  // Block i moves as a [[prescribe]] says (not with the ground motion).
+  bool is_prescribed(int i) const { return !prescription_of_.empty() && prescription_of_[i] >= 0; }
 
   // Energies at the time of the last force evaluation (time() − dt()); the
   // kinetic term is ½·m·v(t − dt/2)·v(t + dt/2) (see energies() in the .cpp).

@@ -61,7 +61,7 @@ constexpr std::string_view kOutputKeys[] = {"history_interval",  "histories",   
                                             "walking",           "snapshot_interval", "snapshot_joints",
                                             "checkpoint_interval"};
 constexpr std::string_view kAssessmentKeys[] = {"damage_displacement", "collapse_displacement", "stop_on_collapse",
-                                                "monitor_block", "collapse_mass_fraction"};
+                                                "monitor_block", "collapse_mass_fraction", "monitor_group"};
 constexpr std::string_view kCheckKeys[] = {"kind", "block", "expected", "tolerance"};
 constexpr std::string_view kEquilibriumKeys[] = {"enabled", "ratio", "max_steps", "local_damping"};
 
@@ -84,6 +84,7 @@ constexpr std::string_view kShapeKeys[] = {"size", "center", "polygon", "z", "ve
 
 constexpr std::string_view kHistoryQuantities[] = {"position", "velocity", "rotation", "angular_velocity",
                                                    "contact_force"};
+constexpr std::string_view kGroupHistoryQuantities[] = {"position", "velocity", "contact_force"};
 constexpr std::string_view kCheckKinds[] = {"resting_weight",      "no_drift",
                                             "slide_acceleration",  "stick",
                                             "rocking_onset",       "housner_restitution",
@@ -583,6 +584,16 @@ OutputSpec read_output(const Deck& deck, const std::vector<BlockSpec>& blocks) {
       if (dot == std::string::npos || dot == 0)
         deck.fail(path, &e, "must be \"BLOCK.QUANTITY\" (got " + in_quotes(text) + ")");
       HistorySpec h{text.substr(0, dot), text.substr(dot + 1)};
+      if (h.block.rfind(kGroupPrefix, 0) == 0) {  // "group:NAME.QUANTITY"
+        const std::string group = h.block.substr(kGroupPrefix.size());
+        if (!contains(kGroupHistoryQuantities, h.quantity))
+          deck.fail(path, &e, "a group's quantity must be one of " + join_quoted(kGroupHistoryQuantities) + " (got " +
+                                  in_quotes(h.quantity) + ")");
+        if (std::none_of(blocks.begin(), blocks.end(), [&](const BlockSpec& b) { return b.group == group; }))
+          deck.fail(path, &e, "no block is in group " + in_quotes(group));
+        o.histories.push_back(std::move(h));
+        continue;
+      }
       if (!contains(kHistoryQuantities, h.quantity))
         deck.fail(path, &e, "quantity must be one of " + join_quoted(kHistoryQuantities) + " (got " +
                                 in_quotes(h.quantity) + ")");
@@ -610,6 +621,14 @@ AssessmentSpec read_assessment(const Deck& deck, const std::vector<BlockSpec>& b
   if (!a.monitor_block.empty() &&
       std::none_of(blocks.begin(), blocks.end(), [&](const BlockSpec& b) { return b.name == a.monitor_block; }))
     r.fail("monitor_block", "no block named " + in_quotes(a.monitor_block));
+  a.monitor_group = r.string("monitor_group").value_or("");
+  if (!a.monitor_group.empty()) {
+    if (!a.monitor_block.empty()) r.fail("monitor_group", "give monitor_block or monitor_group, not both");
+    if (std::none_of(blocks.begin(), blocks.end(), [&](const BlockSpec& b) {
+          return b.group == a.monitor_group && b.motion == BlockMotion::free;
+        }))
+      r.fail("monitor_group", "no free block is in group " + in_quotes(a.monitor_group));
+  }
   return a;
 }
 
