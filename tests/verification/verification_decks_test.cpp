@@ -32,7 +32,8 @@ INSTANTIATE_TEST_SUITE_P(Decks, VerificationDeck,
                          ::testing::Values("resting_block.toml", "slope_slide.toml", "slope_stick.toml",
                                            "rocking_onset.toml", "free_rocking.toml", "energy_conservation.toml",
                                            "stack_of_ten.toml", "dry_stone_wall.toml", "slope_equilibrium.toml",
-                                           "pulse_rocking_body_force.toml", "pulse_rocking_kinematic.toml"),
+                                           "pulse_rocking_body_force.toml", "pulse_rocking_kinematic.toml",
+                                           "dry_base_slide.toml"),
                          [](const auto& info) {
                            std::string n = info.param;
                            return n.substr(0, n.find('.'));
