@@ -39,7 +39,9 @@ void apply_prescriptions(std::vector<BlockSpec>& blocks, const std::vector<Presc
     for (int i : select_blocks(blocks, p.blocks, p.groups)) {
       BlockSpec& b = blocks[static_cast<std::size_t>(i)];
       b.motion = BlockMotion::kinematic;
-      b.velocity = p.velocity_table.empty() ? p.velocity : table_value(p.velocity_table, 0.0);
+      b.velocity = !p.displacement_table.empty() ? Vec3(Vec3::Zero())
+                   : p.velocity_table.empty()     ? p.velocity
+                                                  : table_value(p.velocity_table, 0.0);
       b.angular_velocity = p.angular_velocity;
     }
   }
@@ -71,6 +73,8 @@ BlockLoads resolve_loads(const Blocks& blocks, const std::vector<BlockSpec>& spe
     r.velocity = p.velocity;
     r.angular_velocity = p.angular_velocity;
     r.velocity_table = p.velocity_table;
+    r.displacement_table = p.displacement_table;
+    r.start = blocks.state.position[i];
     out.prescribed.push_back(std::move(r));
   }
   return out;

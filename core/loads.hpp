@@ -63,6 +63,8 @@ struct Prescription {
   int block = 0;
   Vec3 velocity = Vec3::Zero(), angular_velocity = Vec3::Zero();
   TimeTable velocity_table;
+  TimeTable displacement_table;  // when given: the position is start + u(t)
+  Vec3 start = Vec3::Zero();     // the block's centroid at t = 0
   Vec3 velocity_at(double t) const { return velocity_table.empty() ? velocity : table_value(velocity_table, t); }
 };
 

@@ -106,6 +106,10 @@ struct PrescribeSpec {
   Vec3 velocity = Vec3::Zero();          // m/s (without a table)
   Vec3 angular_velocity = Vec3::Zero();  // rad/s (without a table)
   TimeTable velocity_table;              // (t, v): replaces `velocity` when given
+  // (t, u): the displacement from the block's position at t = 0 (zero at
+  // t = 0); replaces `velocity` when given. The block is put at x0 + u(t)
+  // exactly and moves over each step with the mean velocity (u(t+dt) − u(t))/dt.
+  TimeTable displacement_table;
   int deck_line = 0;
 };
 

@@ -69,7 +69,7 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec
         throw std::invalid_argument("a prescribed block must be kinematic: block '" + blocks_.props.name[p.block] +
                                     "' is not");
       prescription_of_[p.block] = static_cast<int>(k);
-      blocks_.state.velocity[p.block] = p.velocity_at(0.0);
+      blocks_.state.velocity[p.block] = p.displacement_table.empty() ? p.velocity_at(0.0) : Vec3(Vec3::Zero());
       blocks_.state.angular_velocity[p.block] = p.angular_velocity;
     }
   }
@@ -366,7 +366,13 @@ void Simulation::move_kinematic_blocks() {
 void Simulation::move_prescribed_block(int i, const Prescription& p) {
   auto& st = blocks_.state;
   const Vec3 v_old = st.velocity[i], w_old = st.angular_velocity[i];
-  const Vec3 v_new = static_stage_ ? Vec3(Vec3::Zero()) : p.velocity_at(time_ + 0.5 * dt_);
+  const bool by_displacement = !p.displacement_table.empty();
+  Vec3 v_new = Vec3::Zero();
+  if (!static_stage_) {
+    v_new = by_displacement ? Vec3((table_value(p.displacement_table, time_ + dt_) -
+                                    table_value(p.displacement_table, time_)) / dt_)
+                            : p.velocity_at(time_ + 0.5 * dt_);
+  }
   const Vec3 w_new = static_stage_ ? Vec3(Vec3::Zero()) : p.angular_velocity;
   velocity_mid_[i] = 0.5 * (v_old + v_new);
   omega_mid_[i] = 0.5 * (w_old + w_new);
@@ -382,7 +388,10 @@ void Simulation::move_prescribed_block(int i, const Prescription& p) {
   h.torque = st.contact_torque[i];
   st.velocity[i] = v_new;
   st.angular_velocity[i] = w_new;
-  st.position[i] += dt_ * v_new;
+  if (by_displacement && !static_stage_)
+    st.position[i] = p.start + table_value(p.displacement_table, time_ + dt_);  // exactly, no drift
+  else
+    st.position[i] += dt_ * v_new;
   if (!w_new.isZero(0.0)) {
     st.orientation[i] = (rotation_quaternion(dt_ * w_new) * st.orientation[i]).normalized();
     st.rotation[i] = st.orientation[i].toRotationMatrix();

@@ -11,6 +11,7 @@
 #include "io/deck_reader.hpp"
 #include "io/generators.hpp"
 #include "io/ground_motion_record.hpp"
+#include "core/loads.hpp"
 #include "core/materials.hpp"
 #include "core/units.hpp"
 
@@ -45,7 +46,8 @@ constexpr std::string_view kJointKeys[] = {"normal_stiffness", "shear_stiffness"
                                            "cohesion",         "tensile_strength", "damping", "between"};
 constexpr std::string_view kGroupKeys[] = {"name", "density"};
 constexpr std::string_view kLoadKeys[] = {"blocks", "groups", "force", "moment", "point", "table"};
-constexpr std::string_view kPrescribeKeys[] = {"blocks", "groups", "velocity", "angular_velocity", "table"};
+constexpr std::string_view kPrescribeKeys[] = {"blocks", "groups", "velocity", "angular_velocity", "table",
+                                               "displacement_table"};
 constexpr std::string_view kBlockKeys[] = {"name",     "shape",    "size",   "center",   "polygon",
                                            "z",        "vertices", "rotation", "offset", "density",
                                            "motion",   "velocity", "angular_velocity", "course", "group"};
@@ -481,15 +483,16 @@ void read_selection(const TableReader& r, const std::vector<BlockSpec>& blocks, 
 }
 
 // table = [[t, ...], ...]: rows of 1 + `width` numbers, times increasing.
-TimeTable read_time_table(const TableReader& r, std::size_t width, std::string_view form) {
+TimeTable read_time_table(const TableReader& r, std::size_t width, std::string_view form,
+                          std::string_view key = "table") {
   TimeTable t;
-  const auto rows = r.points("table", 1 + width, form);
+  const auto rows = r.points(key, 1 + width, form);
   if (!rows) return t;
-  if (rows->empty()) r.fail("table", "must have at least one row " + std::string(form));
+  if (rows->empty()) r.fail(key, "must have at least one row " + std::string(form));
   for (std::size_t k = 0; k < rows->size(); ++k) {
     const auto& row = (*rows)[k];
     if (k > 0 && !(row[0] > t.time.back()))
-      r.fail("table", "times must increase (row " + std::to_string(k + 1) + ": t = " + format_number(row[0]) +
+      r.fail(key, "times must increase (row " + std::to_string(k + 1) + ": t = " + format_number(row[0]) +
                           " after " + format_number(t.time.back()) + ")");
     t.time.push_back(row[0]);
     t.value.emplace_back(row[1], width > 1 ? row[2] : 0.0, width > 2 ? row[3] : 0.0);
@@ -557,6 +560,16 @@ std::vector<PrescribeSpec> read_prescribed(const Deck& deck, const std::vector<B
     p.velocity = r.vec3("velocity").value_or(Vec3::Zero());
     p.angular_velocity = r.vec3("angular_velocity").value_or(Vec3::Zero());
     p.velocity_table = read_time_table(r, 3, "[t, vx, vy, vz]");
+    p.displacement_table = read_time_table(r, 3, "[t, ux, uy, uz]", "displacement_table");
+    if (!p.displacement_table.empty()) {
+      if (r.has("velocity") || r.has("table"))
+        r.fail("displacement_table", "give one of velocity, table (velocities) and displacement_table, not two");
+      const Vec3 u0 = table_value(p.displacement_table, 0.0);
+      if (!u0.isZero(0.0))
+        r.fail("displacement_table", "the displacement at t = 0 must be zero (it is measured from where the block "
+                                     "starts; got [" + format_number(u0.x()) + ", " + format_number(u0.y()) + ", " +
+                                     format_number(u0.z()) + "])");
+    }
     out.push_back(std::move(p));
   }
   return out;

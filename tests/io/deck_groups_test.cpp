@@ -138,6 +138,11 @@ TEST(DeckPrescribe, PrescriptionsAndTheirErrors) {
   expect_error(kBlocks + "[[prescribe]]\nblocks = [\"base\"]\nvelocity = [1, 0, 0]\ntable = [[0, 1, 0, 0]]\n", 16,
                "prescribe[1].table", "not both");
   expect_error(kBlocks + "[[prescribe]]\nvelocity = [1, 0, 0]\n", 13, "prescribe[1].blocks", "select the blocks");
+  expect_error(kBlocks + "[[prescribe]]\nblocks = [\"base\"]\ndisplacement_table = [[0, 0.1, 0, 0], [1, 0.2, 0, 0]]\n",
+               15, "prescribe[1].displacement_table", "must be zero");
+  expect_error(kBlocks + "[[prescribe]]\nblocks = [\"base\"]\nvelocity = [1, 0, 0]\n"
+                         "displacement_table = [[0, 0, 0, 0], [1, 0.2, 0, 0]]\n",
+               16, "prescribe[1].displacement_table", "not two");
 }
 
 TEST(DeckGroupHistories, GroupHistoriesAndMonitorGroup) {

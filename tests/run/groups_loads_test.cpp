@@ -381,6 +381,38 @@ histories = ["stone.velocity", "stone.contact_force", "pusher.velocity", "pusher
   EXPECT_GT(r.energy.load_work, 0.0);
 }
 
+// A displacement history puts the block where it says, step by step: here
+// 10 mm along x over 0.1 s, held after.
+TEST(Prescribe, ADisplacementTableIsFollowedExactly) {
+  const SceneSpec s = parse_deck(R"(
+[simulation]
+end_time = 0.15
+gravity = [0, 0, 0]
+
+[[block]]
+name = "jack"
+shape = "box"
+size = [1.0, 1.0, 1.0]
+center = [0.25, 0.0, 0.0]
+
+[[prescribe]]
+blocks = ["jack"]
+displacement_table = [[0.0, 0.0, 0.0, 0.0], [0.1, 0.01, 0.0, 0.0]]
+
+[output]
+history_interval = 0.01
+histories = ["jack.position", "jack.velocity"]
+)",
+                                 "jack.toml");
+  const RunReport r = run_scene(s);
+  EXPECT_NEAR(r.final_position[0].x(), 0.25 + 0.01, 1e-15);
+  // Half way, at a record time t: x = 0.25 + 0.1·t (the position is at the force time).
+  const double t = at(r.histories, "time", 5);
+  EXPECT_NEAR(at(r.histories, "jack.position.x", 5), 0.25 + 0.1 * t, 1e-15);
+  EXPECT_NEAR(at(r.histories, "jack.velocity.x", 5), 0.1, 1e-9);
+  EXPECT_EQ(at(r.histories, "jack.velocity.x", r.histories.row_count() - 1), 0.0);
+}
+
 // A prescribed angular velocity turns the block about its centroid.
 TEST(Prescribe, AnAngularVelocityTurnsTheBlock) {
   const SceneSpec s = parse_deck(R"(
