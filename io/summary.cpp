@@ -20,10 +20,13 @@ struct GroupTotals {
   std::string name;
   int blocks = 0;
   double mass = 0;  // kg, ρ·V of each block as the run built it
+  int dislodged = 0;
+  double dislodged_mass = 0;  // kg
 };
 
-// Per group, in the order of its first block: the count and the mass.
-std::vector<GroupTotals> group_totals(const std::vector<BlockSpec>& blocks) {
+// Per group, in the order of its first block: the count and the mass, and
+// of them the blocks the assessment found dislodged.
+std::vector<GroupTotals> group_totals(const std::vector<BlockSpec>& blocks, const std::vector<std::string>& dislodged) {
   std::vector<GroupTotals> out;
   for (const BlockSpec& b : blocks) {
     if (b.group.empty()) continue;
@@ -33,7 +36,12 @@ std::vector<GroupTotals> group_totals(const std::vector<BlockSpec>& blocks) {
       it = out.end() - 1;
     }
     ++it->blocks;
-    it->mass += b.density * mass_properties(b.shape).volume;
+    const double m = b.density * mass_properties(b.shape).volume;
+    it->mass += m;
+    if (std::find(dislodged.begin(), dislodged.end(), b.name) != dislodged.end()) {
+      ++it->dislodged;
+      it->dislodged_mass += m;
+    }
   }
   return out;
 }
@@ -157,7 +165,7 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   s.set("contact_margin_m", r.margin);
   s.set("blocks", r.blocks);
   s.set("free_blocks", r.free_blocks);
-  const std::vector<GroupTotals> groups = group_totals(spec.blocks);
+  const std::vector<GroupTotals> groups = group_totals(spec.blocks, r.assessment.dislodged_blocks);
   if (!groups.empty()) {
     Json gs = Json::array();
     for (const GroupTotals& g : groups) {
@@ -165,6 +173,11 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
       j.set("name", g.name);
       j.set("blocks", g.blocks);
       j.set("mass_kg", g.mass);
+      // The group's own collapse measure: its blocks the assessment found
+      // dislodged (moved beyond assessment.collapse_displacement), and their
+      // fraction of the group's mass.
+      j.set("dislodged_blocks", g.dislodged);
+      j.set("dislodged_mass_fraction", g.mass > 0 ? g.dislodged_mass / g.mass : 0.0);
       gs.push_back(std::move(j));
     }
     s.set("groups", std::move(gs));

@@ -2,6 +2,7 @@
 // prescribed motions, each against an exact or analytical result (issue 13).
 #include "core/loads.hpp"
 #include "io/deck.hpp"
+#include "io/summary.hpp"
 #include "run/run_scene.hpp"
 
 #include <gtest/gtest.h>
@@ -713,6 +714,58 @@ TEST(MortaredCoursesExample, ReadsAndRuns) {
   EXPECT_EQ(blocks.group_names.back(), "tip");
   EXPECT_EQ(blocks.group_names.size(), 22u);  // 20 courses of 0.3 m under the 3.4 m tip
   EXPECT_GE(blocks.find_group("course19"), 0);
+}
+
+// summary.json lists each group's blocks, mass and dislodged share: a
+// loose stone falls off its ledge (dislodged), the wall it sat on stays.
+TEST(GroupSummary, ListsEachGroupsMassAndDislodgedShare) {
+  const SceneSpec s = parse_deck(R"(
+[simulation]
+end_time = 0.4
+
+[[block]]
+name = "ledge"
+shape = "box"
+size = [1.0, 1.0, 1.0]
+center = [0.0, 0.0, -0.5]
+motion = "fixed"
+group = "ledge"
+
+[[block]]
+name = "w1"
+shape = "box"
+size = [1.0, 1.0, 0.5]
+center = [0.0, 0.0, 0.25]
+group = "wall"
+
+[[block]]
+name = "w2"
+shape = "box"
+size = [1.0, 1.0, 0.5]
+center = [0.0, 0.0, 0.75]
+group = "wall"
+
+[[block]]
+name = "loose"
+shape = "box"
+size = [0.2, 0.2, 0.2]
+center = [3.0, 0.0, 0.1]
+group = "loose"
+)",
+                                 "ledge.toml");
+  const RunReport r = run_scene(s);
+  const Json j = summary_json(s, r, 1);
+  const Json* groups = j.find("groups");
+  ASSERT_NE(groups, nullptr);
+  ASSERT_EQ(groups->size(), 3u);
+  const Json& wall = groups->at(1);
+  EXPECT_EQ(wall.find("name")->as_string(), "wall");
+  EXPECT_EQ(wall.find("blocks")->as_number(), 2.0);
+  EXPECT_NEAR(wall.find("mass_kg")->as_number(), 2600.0, 1e-9);
+  EXPECT_EQ(wall.find("dislodged_mass_fraction")->as_number(), 0.0);
+  const Json& loose = groups->at(2);
+  EXPECT_EQ(loose.find("dislodged_blocks")->as_number(), 1.0);
+  EXPECT_EQ(loose.find("dislodged_mass_fraction")->as_number(), 1.0);
 }
 
 // ------------------------------------------------------------ determinism
