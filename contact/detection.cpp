@@ -98,7 +98,7 @@ bool ContactDetector::needs_detection(const Blocks& b, double dt) const {
   return r1 + r2 > 0.5 * margin_;
 }
 
-DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bool bond_new, const JointLaw& law) {
+DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bool bond_new, const JointLaws& laws) {
   auto& im = *impl_;
   DetectionTimes times;
   const Clock::time_point t0 = Clock::now();
@@ -147,11 +147,20 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
   // 4. Subcontacts in candidate order (sorted by block pair), with the
   // history of the detection before, carried by position on the joint.
   build_subcontacts(b, im.candidates, im.patches, im.found, bond_new, contacts);
-  carry_history(b, old, contacts, law.ks, margin_, im.carry);
+  if (bond_new && !laws.single()) {  // only the joints whose law has a strength start bonded
+    for (std::size_t s = 0; s < contacts.sub.size(); ++s) {
+      const JointLaw& law = laws.between(contacts.sub.ref_block[s], contacts.sub.inc_block[s]);
+      if (!(law.cohesion > 0 || law.tensile_strength > 0)) contacts.sub.bonded[s] = 0;
+    }
+  }
+  carry_history(b, old, contacts, laws.laws[0].ks, margin_, im.carry);
+  if (!laws.single())  // the shear energy not carried over, at each joint's own ks
+    contacts.dropped_shear_energy =
+        old.dropped_shear_energy + (shear_strain_energy(laws, old.sub) - shear_strain_energy(laws, contacts.sub));
   // The normal strain at this pose, as the previous subcontacts hold it and
   // as the new ones do: the difference is the re-sampling's, not motion's.
   contacts.resampled_normal_energy +=
-      normal_strain_energy_now(law, b.state, old.sub) - normal_strain_energy_now(law, b.state, contacts.sub);
+      normal_strain_energy_now(laws, b.state, old.sub) - normal_strain_energy_now(laws, b.state, contacts.sub);
   contacts.detections = old.detections + 1;
   const Clock::time_point t4 = Clock::now();
 

@@ -59,7 +59,7 @@ class ContactDetector {
   // (`resampled_normal_energy`), so that a detection leaves the ledger's
   // balance as it was. New subcontacts start bonded when `bond_new` is set
   // (cohesion/tension at t = 0). Returns the time spent in each stage.
-  DetectionTimes detect(const Blocks& blocks, ContactSet& contacts, bool bond_new, const JointLaw& law);
+  DetectionTimes detect(const Blocks& blocks, ContactSet& contacts, bool bond_new, const JointLaws& laws);
 
   // Checkpoints: the poses at the last detection (they decide when the next
   // one runs). Nothing else carries over: the contacts of the detection

@@ -1,5 +1,6 @@
 #include "contact/joint_law.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -167,13 +168,20 @@ void compute_joint_forces(const JointLaw& law, const BlockState& st, Subcontacts
   }
 }
 
-void compute_pair_forces(const JointLaw& law, const BlockState& st, const std::vector<ContactPair>& pairs,
-                         Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end) {
+namespace {
+
+// The pair loop; `law_of(r, c)` gives the pair's law (a constant for one law,
+// which the compiler folds: the one-law loop is the loop it always was).
+template <class LawOf>
+[[gnu::always_inline]] inline void pair_forces(const LawOf& law_of, const BlockState& st,
+                                               const std::vector<ContactPair>& pairs, Subcontacts& sub, double dt,
+                                               std::size_t pair_begin, std::size_t pair_end) {
   for (std::size_t q = pair_begin; q < pair_end; ++q) {
     const ContactPair& cp = pairs[q];
     if (cp.count == 0) continue;
     const int r = cp.ref_block;
     const int c = cp.ref_block == cp.a ? cp.b : cp.a;
+    const JointLaw& law = law_of(r, c);
     // Shared by the pair's subcontacts: the common plane and both motions.
     const std::size_t s0 = static_cast<std::size_t>(cp.first);
     const Vec3 n = st.rotation[r] * sub.ref_normal_local[s0];
@@ -198,6 +206,23 @@ void compute_pair_forces(const JointLaw& law, const BlockState& st, const std::v
   }
 }
 
+}  // namespace
+
+void compute_pair_forces(const JointLaw& law, const BlockState& st, const std::vector<ContactPair>& pairs,
+                         Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end) {
+  pair_forces([&law](int, int) -> const JointLaw& { return law; }, st, pairs, sub, dt, pair_begin, pair_end);
+}
+
+void compute_pair_forces(const JointLaws& laws, const BlockState& st, const std::vector<ContactPair>& pairs,
+                         Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end) {
+  if (laws.single()) {
+    compute_pair_forces(laws.laws[0], st, pairs, sub, dt, pair_begin, pair_end);
+    return;
+  }
+  pair_forces([&laws](int a, int b) -> const JointLaw& { return laws.between(a, b); }, st, pairs, sub, dt,
+              pair_begin, pair_end);
+}
+
 void settle_damping_work(const BlockState& st, Subcontacts& sub, double dt) {
   for (std::size_t s = 0; s < sub.size(); ++s) {
     const Vec3& f = sub.damping_force[s];
@@ -212,9 +237,13 @@ void settle_damping_work(const BlockState& st, Subcontacts& sub, double dt) {
   }
 }
 
-double normal_strain_energy_now(const JointLaw& law, const BlockState& st, const Subcontacts& sub) {
+namespace {
+
+template <class LawOf>
+double normal_strain_energy_with(const LawOf& law_of, const BlockState& st, const Subcontacts& sub) {
   double e = 0;
   for (std::size_t s = 0; s < sub.size(); ++s) {
+    const JointLaw& law = law_of(s);
     const int r = sub.ref_block[s];
     const int c = sub.inc_block[s];
     const Vec3 n = st.rotation[r] * sub.ref_normal_local[s];
@@ -225,9 +254,11 @@ double normal_strain_energy_now(const JointLaw& law, const BlockState& st, const
   return e;
 }
 
-double joint_strain_energy(const JointLaw& law, const Subcontacts& sub) {
+template <class LawOf>
+double joint_strain_energy_with(const LawOf& law_of, const Subcontacts& sub) {
   double e = 0;
   for (std::size_t s = 0; s < sub.size(); ++s) {
+    const JointLaw& law = law_of(s);
     const double A = sub.area[s];
     if (A <= 0) continue;
     const double un = sub.overlap[s];
@@ -235,6 +266,99 @@ double joint_strain_energy(const JointLaw& law, const Subcontacts& sub) {
     if (law.ks > 0) e += 0.5 * sub.shear_force[s].squaredNorm() / (law.ks * A);
   }
   return e;
+}
+
+}  // namespace
+
+double normal_strain_energy_now(const JointLaw& law, const BlockState& st, const Subcontacts& sub) {
+  return normal_strain_energy_with([&law](std::size_t) -> const JointLaw& { return law; }, st, sub);
+}
+
+double normal_strain_energy_now(const JointLaws& laws, const BlockState& st, const Subcontacts& sub) {
+  if (laws.single()) return normal_strain_energy_now(laws.laws[0], st, sub);
+  return normal_strain_energy_with(
+      [&](std::size_t s) -> const JointLaw& { return laws.between(sub.ref_block[s], sub.inc_block[s]); }, st, sub);
+}
+
+double joint_strain_energy(const JointLaw& law, const Subcontacts& sub) {
+  return joint_strain_energy_with([&law](std::size_t) -> const JointLaw& { return law; }, sub);
+}
+
+double joint_strain_energy(const JointLaws& laws, const Subcontacts& sub) {
+  if (laws.single()) return joint_strain_energy(laws.laws[0], sub);
+  return joint_strain_energy_with(
+      [&](std::size_t s) -> const JointLaw& { return laws.between(sub.ref_block[s], sub.inc_block[s]); }, sub);
+}
+
+double shear_strain_energy(const JointLaws& laws, const Subcontacts& sub) {
+  double e = 0;
+  for (std::size_t s = 0; s < sub.size(); ++s) {
+    const double ks = laws.between(sub.ref_block[s], sub.inc_block[s]).ks;
+    if (ks > 0 && sub.area[s] > 0) e += 0.5 * sub.shear_force[s].squaredNorm() / (ks * sub.area[s]);
+  }
+  return e;
+}
+
+bool JointLaws::any_bonds() const {
+  for (std::size_t k = 0; k < laws.size(); ++k)
+    if (bonds(k)) return true;
+  return false;
+}
+
+JointLaws make_joint_laws(const Blocks& blocks, const JointSpec& default_joint,
+                          const std::vector<JointPairSpec>& pairs) {
+  JointLaws out(make_joint_law(default_joint));
+  out.specs = {default_joint};
+  std::vector<std::pair<int, int>> present;  // group indices of the entries that act
+  std::vector<const JointSpec*> specs;
+  for (const JointPairSpec& p : pairs) {
+    const int a = blocks.find_group(p.group_a), b = blocks.find_group(p.group_b);
+    if (a < 0 || b < 0) continue;
+    present.emplace_back(a, b);
+    specs.push_back(&p.joint);
+  }
+  if (present.empty()) return out;
+  const int groups = static_cast<int>(blocks.group_names.size());
+  out.slots = groups + 1;
+  out.pair_law.assign(static_cast<std::size_t>(out.slots * out.slots), 0);
+  for (std::size_t k = 0; k < present.size(); ++k) {
+    out.laws.push_back(make_joint_law(*specs[k]));
+    out.specs.push_back(*specs[k]);
+    const int sa = present[k].first + 1, sb = present[k].second + 1;
+    const int law = static_cast<int>(out.laws.size()) - 1;
+    out.pair_law[static_cast<std::size_t>(sa * out.slots + sb)] = law;
+    out.pair_law[static_cast<std::size_t>(sb * out.slots + sa)] = law;
+  }
+  out.block_slot.resize(static_cast<std::size_t>(blocks.count));
+  for (int i = 0; i < blocks.count; ++i) out.block_slot[static_cast<std::size_t>(i)] = blocks.props.group[i] + 1;
+  return out;
+}
+
+JointSpec stiffest_joint(const JointLaws& laws) {
+  if (laws.single()) return laws.specs.empty() ? JointSpec{} : laws.specs[0];
+  // The laws some pair of groups present among the blocks uses.
+  std::vector<char> slot_present(static_cast<std::size_t>(laws.slots), 0);
+  for (int sl : laws.block_slot) slot_present[static_cast<std::size_t>(sl)] = 1;
+  std::vector<char> acts(laws.laws.size(), 0);
+  for (int a = 0; a < laws.slots; ++a)
+    for (int b = 0; b < laws.slots; ++b)
+      if (slot_present[static_cast<std::size_t>(a)] && slot_present[static_cast<std::size_t>(b)])
+        acts[static_cast<std::size_t>(laws.pair_law[static_cast<std::size_t>(a * laws.slots + b)])] = 1;
+  JointSpec out;
+  bool first = true;
+  for (std::size_t k = 0; k < laws.specs.size(); ++k) {
+    if (!acts[k]) continue;
+    const JointSpec& j = laws.specs[k];
+    if (first) {
+      out = j;
+      first = false;
+      continue;
+    }
+    out.normal_stiffness = std::max(out.normal_stiffness, j.normal_stiffness);
+    out.shear_stiffness = std::max(out.shear_stiffness, j.shear_stiffness);
+    out.damping = std::max(out.damping, j.damping);
+  }
+  return out;
 }
 
 }  // namespace polydem

@@ -58,6 +58,43 @@ struct JointLaw {
 
 JointLaw make_joint_law(const JointSpec& spec);
 
+// The laws of a scene's joints by pair of groups ([[joint]] with `between`).
+// laws[0] is the default; a contact between blocks a and b takes
+// laws[pair_law[slot(a)·slots + slot(b)]], with slot 0 for blocks without a
+// group and 1 + the group's index otherwise. A scene with one law (every deck
+// without `between`) keeps laws = {default} and no table: the hot path then
+// runs exactly the one-law loop, the same bits at the same cost.
+struct JointLaws {
+  std::vector<JointLaw> laws;
+  std::vector<JointSpec> specs;  // what each law was made from (empty when built from a JointLaw)
+  int slots = 1;
+  std::vector<int> block_slot;  // per block (empty with one law)
+  std::vector<int> pair_law;    // slots × slots, symmetric (empty with one law)
+
+  JointLaws() : laws(1) {}
+  JointLaws(const JointLaw& one) : laws{one} {}  // NOLINT: one law is a scene's laws
+  bool single() const { return laws.size() == 1; }
+  const JointLaw& between(int a, int b) const {
+    if (single()) return laws[0];
+    return laws[static_cast<std::size_t>(pair_law[static_cast<std::size_t>(block_slot[a] * slots + block_slot[b])])];
+  }
+  // True when some law bonds new joints at the first detection (cohesion or
+  // tension), and whether law k does.
+  bool bonds(std::size_t k) const { return laws[k].cohesion > 0 || laws[k].tensile_strength > 0; }
+  bool any_bonds() const;
+};
+
+// The laws of a scene: the default, then one per [[joint]] `between` whose two
+// groups both exist among the blocks (an entry for a group without blocks acts
+// on no joint and is left out). Block groups: Blocks::props.group.
+JointLaws make_joint_laws(const Blocks& blocks, const JointSpec& default_joint,
+                          const std::vector<JointPairSpec>& pairs);
+
+// The stiffest law that can act, for the time step: the largest kn, ks and
+// damping β over the laws some pair of the blocks' groups uses (the default
+// only if some pair falls to it). One law: that law's spec itself, unchanged.
+JointSpec stiffest_joint(const JointLaws& laws);
+
 // Forces of subcontacts [begin, end) into their slots (sub.force/point/...).
 void compute_joint_forces(const JointLaw& law, const BlockState& state, Subcontacts& sub, double dt,
                           std::size_t begin, std::size_t end);
@@ -65,6 +102,11 @@ void compute_joint_forces(const JointLaw& law, const BlockState& state, Subconta
 // The same for the subcontacts of pairs [pair_begin, pair_end): the hot path.
 // The pair's common plane and the two blocks' motion are loaded once.
 void compute_pair_forces(const JointLaw& law, const BlockState& state, const std::vector<ContactPair>& pairs,
+                         Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end);
+
+// The same with each pair's own law (JointLaws::between); with one law,
+// exactly the one-law loop.
+void compute_pair_forces(const JointLaws& laws, const BlockState& state, const std::vector<ContactPair>& pairs,
                          Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end);
 
 // Books the second half of the last step's dashpot work of every
@@ -77,8 +119,13 @@ void settle_damping_work(const BlockState& state, Subcontacts& sub, double dt);
 // with u_n evaluated at the blocks' current pose (their body-fixed plane and
 // point), J. Detection compares it before and after it re-samples the joints.
 double normal_strain_energy_now(const JointLaw& law, const BlockState& state, const Subcontacts& sub);
+double normal_strain_energy_now(const JointLaws& laws, const BlockState& state, const Subcontacts& sub);
 
 // Elastic strain energy stored in the joints, J.
 double joint_strain_energy(const JointLaw& law, const Subcontacts& sub);
+double joint_strain_energy(const JointLaws& laws, const Subcontacts& sub);
+
+// Shear strain energy Σ |F_s|²/(2·ks·A) with each subcontact's own ks, J.
+double shear_strain_energy(const JointLaws& laws, const Subcontacts& sub);
 
 }  // namespace polydem

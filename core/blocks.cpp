@@ -11,6 +11,12 @@ int Blocks::find(const std::string& n) const {
   return -1;
 }
 
+int Blocks::find_group(const std::string& n) const {
+  for (std::size_t g = 0; g < group_names.size(); ++g)
+    if (group_names[g] == n) return static_cast<int>(g);
+  return -1;
+}
+
 Blocks build_blocks(const std::vector<BlockSpec>& specs) {
   Blocks b;
   b.count = static_cast<int>(specs.size());
@@ -35,6 +41,7 @@ Blocks build_blocks(const std::vector<BlockSpec>& specs) {
   p.radius.resize(n);
   p.size.resize(n);
   p.course.resize(n);
+  p.group.resize(n);
   p.deck_line.resize(n);
 
   for (std::size_t i = 0; i < n; ++i) {
@@ -61,6 +68,11 @@ Blocks build_blocks(const std::vector<BlockSpec>& specs) {
     p.radius[i] = bounding_radius(p.local_shape[i], Vec3::Zero());
     p.size[i] = std::cbrt(mp.volume);
     p.course[i] = spec.course;
+    p.group[i] = spec.group.empty() ? -1 : b.find_group(spec.group);
+    if (!spec.group.empty() && p.group[i] < 0) {
+      p.group[i] = static_cast<int>(b.group_names.size());
+      b.group_names.push_back(spec.group);
+    }
     p.deck_line[i] = spec.deck_line;
     const bool free = spec.motion == BlockMotion::free;
     p.inv_mass[i] = free ? 1.0 / m : 0.0;

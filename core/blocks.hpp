@@ -40,6 +40,7 @@ struct BlockProperties {
   std::vector<double> radius;               // bounding radius about the centroid
   std::vector<double> size;                 // cube root of volume, m
   std::vector<int> course;
+  std::vector<int> group;                   // index into Blocks::group_names, -1 = no group
   std::vector<int> deck_line;
 };
 
@@ -51,9 +52,12 @@ struct Blocks {
   std::vector<int> kinematic_blocks;  // moved by the prescribed base motion
   std::vector<Vec3> initial_position;
   std::vector<Quat> initial_orientation;
+  // The groups' names, in the order of their first block (BlockSpec::group).
+  std::vector<std::string> group_names;
 
   bool is_free(int i) const { return props.motion[i] == BlockMotion::free; }
   int find(const std::string& name) const;  // -1 if absent
+  int find_group(const std::string& name) const;  // -1 if absent
 };
 
 // Builds blocks from the deck's shapes: mass properties, principal frame,

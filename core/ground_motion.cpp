@@ -62,6 +62,36 @@ double GroundMotion::velocity_at(double t) const {
   return 0.0;
 }
 
+Vec3 GroundMotion::acceleration_vector(double t) const {
+  if (components.empty()) return Vec3(acceleration_at(t) * direction);
+  bool first = true;
+  Vec3 a = Vec3::Zero();
+  auto add = [&](const GroundMotion& g) {
+    if (!g.active()) return;
+    const Vec3 term = g.acceleration_at(t) * g.direction;
+    a = first ? term : Vec3(a + term);
+    first = false;
+  };
+  add(*this);
+  for (const GroundMotion& g : components) add(g);
+  return a;
+}
+
+Vec3 GroundMotion::velocity_vector(double t) const {
+  if (components.empty()) return Vec3(velocity_at(t) * direction);
+  bool first = true;
+  Vec3 v = Vec3::Zero();
+  auto add = [&](const GroundMotion& g) {
+    if (!g.active()) return;
+    const Vec3 term = g.velocity_at(t) * g.direction;
+    v = first ? term : Vec3(v + term);
+    first = false;
+  };
+  add(*this);
+  for (const GroundMotion& g : components) add(g);
+  return v;
+}
+
 std::vector<double> oscillator_absolute_acceleration(const std::vector<double>& time,
                                                      const std::vector<double>& ag, double f_hz, double zeta) {
   const double w = 2.0 * std::numbers::pi * f_hz;
@@ -114,6 +144,12 @@ GroundMotion make_ground_motion(const GroundMotionSpec& spec, std::vector<double
     for (std::size_t k = 1; k < g.record_time.size(); ++k)
       g.record_velocity[k] = g.record_velocity[k - 1] + 0.5 * (g.record_acceleration[k - 1] + g.record_acceleration[k]) *
                                                            (g.record_time[k] - g.record_time[k - 1]);
+  }
+  for (const GroundMotionSpec& c : spec.components) {
+    if (c.kind == GroundMotionKind::none) continue;
+    GroundMotion m = make_ground_motion(c, c.record_time, c.record_acceleration);
+    m.applied_as = spec.applied_as;
+    g.components.push_back(std::move(m));
   }
   return g;
 }

@@ -34,9 +34,26 @@ struct GroundMotion {
   // the deck's motion alone, which then has the same bits as without it.
   ExtraGroundAcceleration extra;
 
+  // Further components ([[ground_motion.component]]: e.g. the other
+  // horizontal record and the vertical one of a PEER NGA set), each with its
+  // own direction, kind, scale and start time, applied as this one is.
+  std::vector<GroundMotion> components;
+
+  // This component (the section's own keys) is active; its scalar
+  // acceleration is the one histories, checks and the assessment read.
   bool active() const { return kind != GroundMotionKind::none; }
-  double acceleration_at(double t) const;  // m/s²
+  // Some component is (the section's or a further one).
+  bool any_active() const { return active() || !components.empty(); }
+  double acceleration_at(double t) const;  // m/s², this component along `direction`
   double velocity_at(double t) const;      // m/s
+  // The ground's acceleration and velocity as vectors: Σ a_k(t)·direction_k
+  // over the active components, the section's first, then the others in deck
+  // order. Without further components exactly acceleration_at(t)·direction
+  // (the bits of a one-component deck); a component whose acceleration is
+  // zero (scale = 0) adds +0 or −0 to each coordinate, which leaves every
+  // non-zero sum unchanged.
+  Vec3 acceleration_vector(double t) const;
+  Vec3 velocity_vector(double t) const;
 };
 
 // The absolute acceleration of a linear oscillator (frequency f_hz, damping

@@ -25,8 +25,67 @@
 #include "core/ground_motion.hpp"
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace polydem {
+
+// ---- Point loads and prescribed motions ([[load]], [[prescribe]]) ----
+//
+// A [[load]] puts a force P (at a point fixed in the block, by default its
+// centroid) and a moment M on each block it selects, times f(t), a
+// piecewise-linear table (1 without one). On free block i the time step adds
+// F = f(t)·P and T = (R·r)×F + f(t)·M (r: the point in the body frame) to the
+// force and torque after the contact force (a new last term of the sum, so
+// a deck without loads keeps its bits), and the ledger books their work
+// dt·(F·v + T·ω) at the mid-step velocities: the power of a force at a point
+// moving at v + ω×(R·r) is F·v + ((R·r)×F)·ω.
+//
+// A [[prescribe]] makes its blocks kinematic: each moves with the velocity
+// v(t) (constant or a table) and turns with the angular velocity ω about its
+// centroid; the ground motion's kinematic base does not move them. Their
+// joints push the free blocks, and the ledger books the work the blocks do
+// through the joints, −dt·(F_joint·v + T_joint·ω), as for the base.
+
+// f(t) of a table (the value's x, or the vector): linear between its points,
+// constant beyond its ends.
+Vec3 table_value(const TimeTable& table, double t);
+
+struct PointLoad {
+  int block = 0;
+  Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
+  Vec3 arm_local = Vec3::Zero();  // point − centroid, body frame
+  bool at_point = false;
+  TimeTable factor;
+};
+
+struct Prescription {
+  int block = 0;
+  Vec3 velocity = Vec3::Zero(), angular_velocity = Vec3::Zero();
+  TimeTable velocity_table;
+  TimeTable displacement_table;  // when given: the position is start + u(t)
+  Vec3 start = Vec3::Zero();     // the block's centroid at t = 0
+  Vec3 velocity_at(double t) const { return velocity_table.empty() ? velocity : table_value(velocity_table, t); }
+};
+
+struct BlockLoads {
+  std::vector<PointLoad> loads;          // in deck order, then block order
+  std::vector<Prescription> prescribed;  // one per prescribed block (the last [[prescribe]] selecting it)
+  bool empty() const { return loads.empty() && prescribed.empty(); }
+};
+
+// The blocks a selection names: every block listed by name and every block
+// of every group listed, in block order, each once.
+std::vector<int> select_blocks(const std::vector<BlockSpec>& blocks, const std::vector<std::string>& names,
+                               const std::vector<std::string>& groups);
+
+// Makes the blocks the [[prescribe]] tables select kinematic, with their
+// velocity at t = 0 (setup calls it before building the blocks).
+void apply_prescriptions(std::vector<BlockSpec>& blocks, const std::vector<PrescribeSpec>& prescribed);
+
+// The loads and prescriptions resolved to blocks (points in body frames).
+BlockLoads resolve_loads(const Blocks& blocks, const std::vector<BlockSpec>& specs,
+                         const std::vector<LoadSpec>& loads, const std::vector<PrescribeSpec>& prescribed);
 
 // The ground acceleration felt as a body force at time t (m/s², world):
 // a_g(t) along the record's direction when the motion is applied as a body

@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <utility>
 
 namespace polydem {
 
@@ -56,10 +57,12 @@ void finish(CriticalStep& out, const JointSpec& joint, double safety_factor) {
 
 }  // namespace
 
-CriticalStep critical_time_step_from_contacts(const Blocks& b, const ContactSet& contacts, const JointSpec& joint,
-                                              double safety_factor) {
+namespace {
+
+template <class StiffnessOf>
+CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const StiffnessOf& stiffness_of,
+                           const JointSpec& joint, double safety_factor) {
   CriticalStep out;
-  const double kn = joint.normal_stiffness, ks = joint.shear_stiffness;
   const auto& sub = contacts.sub;
   for (int i : b.free_blocks) {
     Mat6 K = Mat6::Zero();
@@ -69,6 +72,7 @@ CriticalStep critical_time_step_from_contacts(const Blocks& b, const ContactSet&
     const Mat3& R = b.state.rotation[i];
     for (int k = first; k < last; ++k) {
       const int s = contacts.gather_sub[k];
+      const auto [kn, ks] = stiffness_of(s);
       const Vec3 n = R.transpose() * (b.state.rotation[sub.ref_block[s]] * sub.ref_normal_local[s]);
       const Vec3 r = R.transpose() * (sub.point[s] - b.state.position[i]);
       const Mat3 D = sub.area[s] * (kn * n * n.transpose() + ks * (Mat3::Identity() - n * n.transpose()));
@@ -78,6 +82,27 @@ CriticalStep critical_time_step_from_contacts(const Blocks& b, const ContactSet&
   }
   finish(out, joint, safety_factor);
   return out;
+}
+
+}  // namespace
+
+CriticalStep critical_time_step_from_contacts(const Blocks& b, const ContactSet& contacts, const JointSpec& joint,
+                                              double safety_factor) {
+  const std::pair<double, double> k{joint.normal_stiffness, joint.shear_stiffness};
+  return from_contacts(b, contacts, [&k](int) { return k; }, joint, safety_factor);
+}
+
+CriticalStep critical_time_step_from_contacts(const Blocks& b, const ContactSet& contacts, const JointLaws& laws,
+                                              const JointSpec& stiffest, double safety_factor) {
+  if (laws.single()) return critical_time_step_from_contacts(b, contacts, stiffest, safety_factor);
+  const auto& sub = contacts.sub;
+  return from_contacts(
+      b, contacts,
+      [&](int s) {
+        const JointLaw& law = laws.between(sub.ref_block[s], sub.inc_block[s]);
+        return std::pair<double, double>{law.kn, law.ks};
+      },
+      stiffest, safety_factor);
 }
 
 namespace {

@@ -13,6 +13,7 @@
 // is that times the safety factor.
 #pragma once
 
+#include "contact/joint_law.hpp"
 #include "contact/subcontacts.hpp"
 #include "core/blocks.hpp"
 #include "core/scene_spec.hpp"
@@ -48,5 +49,11 @@ std::vector<double> block_frequencies(const Blocks& blocks, const JointSpec& joi
 // joint is detected before it closes).
 CriticalStep critical_time_step_from_contacts(const Blocks& blocks, const ContactSet& contacts, const JointSpec& joint,
                                               double safety_factor);
+
+// The same with each joint's own law (kn, ks of its pair of groups) and the
+// damping β of `stiffest` (stiffest_joint: the largest β that can act). With
+// one law, exactly the call above with that law's spec.
+CriticalStep critical_time_step_from_contacts(const Blocks& blocks, const ContactSet& contacts, const JointLaws& laws,
+                                              const JointSpec& stiffest, double safety_factor);
 
 }  // namespace polydem

@@ -37,20 +37,44 @@ Quat rotation_quaternion(const Vec3& w) {
 }  // namespace
 
 Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec& joint, GroundMotion motion,
-                       double margin, double dt, bool adaptive_time_step)
+                       double margin, double dt, bool adaptive_time_step,
+                       const std::vector<JointPairSpec>& joint_pairs, BlockLoads loads)
     : blocks_(std::move(blocks)),
       sim_(sim),
       joint_(joint),
-      law_(make_joint_law(joint)),
+      laws_(make_joint_laws(blocks_, joint, joint_pairs)),
+      step_joint_(laws_.single() ? joint : stiffest_joint(laws_)),
       motion_(std::move(motion)),
       detector_(blocks_, margin),
-      bond_initial_(joint.cohesion > 0 || joint.tensile_strength > 0),
+      bond_initial_(laws_.any_bonds()),
       adaptive_dt_(adaptive_time_step),
       dt_(dt),
-      dt_prev_(dt) {
+      dt_prev_(dt),
+      loads_(std::move(loads)) {
   governor_ = make_thread_governor(omp_get_max_threads(), sim.adaptive_threads);
   profile_.threads_given = omp_get_max_threads();
   const int n = blocks_.count;
+  if (!loads_.loads.empty()) {
+    loaded_.assign(n, 0);
+    load_force_.assign(n, Vec3::Zero());
+    load_torque_.assign(n, Vec3::Zero());
+    load_force_prev_.assign(n, Vec3::Zero());
+    load_torque_prev_.assign(n, Vec3::Zero());
+    for (const PointLoad& l : loads_.loads) loaded_[l.block] = 1;
+  }
+  if (!loads_.prescribed.empty()) {
+    prescription_of_.assign(n, -1);
+    prescribed_history_.assign(loads_.prescribed.size(), PrescribedHistory{});
+    for (std::size_t k = 0; k < loads_.prescribed.size(); ++k) {
+      const Prescription& p = loads_.prescribed[k];
+      if (blocks_.props.motion[p.block] != BlockMotion::kinematic)
+        throw std::invalid_argument("a prescribed block must be kinematic: block '" + blocks_.props.name[p.block] +
+                                    "' is not");
+      prescription_of_[p.block] = static_cast<int>(k);
+      blocks_.state.velocity[p.block] = p.displacement_table.empty() ? p.velocity_at(0.0) : Vec3(Vec3::Zero());
+      blocks_.state.angular_velocity[p.block] = p.angular_velocity;
+    }
+  }
   velocity_mid_ = blocks_.state.velocity;
   omega_mid_ = blocks_.state.angular_velocity;
   position_prev_ = blocks_.state.position;
@@ -67,16 +91,25 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec
 // shear increment, gravity, the ground motion), so that free flight from a
 // given velocity is the exact parabola and not half a step late.
 void Simulation::start_half_step_back() {
-  compute_joint_forces(law_, blocks_.state, contacts_.sub, 0.0, 0, contacts_.sub.size());
+  if (laws_.single())
+    compute_joint_forces(laws_.laws[0], blocks_.state, contacts_.sub, 0.0, 0, contacts_.sub.size());
+  else
+    compute_pair_forces(laws_, blocks_.state, contacts_.pairs, contacts_.sub, 0.0, 0, contacts_.pairs.size());
   gather_block_forces();
+  if (!loaded_.empty()) compute_point_loads(0.0);
   auto& st = blocks_.state;
   const auto& pr = blocks_.props;
   const Vec3 a_ground = ground_body_acceleration(motion_, 0.0);
   const Vec3 gravity = gravity_at(sim_.gravity, sim_.gravity_rise_time, 0.0);
   for (int i : blocks_.free_blocks) {
-    const Vec3 force = external_force(pr, i, gravity, a_ground) + st.contact_force[i];
+    Vec3 force = external_force(pr, i, gravity, a_ground) + st.contact_force[i];
+    Vec3 torque = st.contact_torque[i];
+    if (!loaded_.empty() && loaded_[i]) {
+      force += load_force_[i];
+      torque += load_torque_[i];
+    }
     st.velocity[i] -= (0.5 * dt_ * pr.inv_mass[i]) * force;
-    st.angular_momentum[i] -= 0.5 * dt_ * st.contact_torque[i];
+    st.angular_momentum[i] -= 0.5 * dt_ * torque;
     const Mat3& R = st.rotation[i];
     st.angular_velocity[i] = R * pr.inv_principal_inertia[i].cwiseProduct(R.transpose() * st.angular_momentum[i]);
   }
@@ -95,9 +128,10 @@ void Simulation::start_half_step_back() {
 DetectionTimes Simulation::detect_contacts() {
   settle_damping_work(blocks_.state, contacts_.sub, dt_);
   const DetectionTimes times =
-      detector_.detect(blocks_, contacts_, bond_initial_ && contacts_.detections == 0, law_);
+      detector_.detect(blocks_, contacts_, bond_initial_ && contacts_.detections == 0, laws_);
   if (!adaptive_dt_) return times;
-  const CriticalStep c = critical_time_step_from_contacts(blocks_, contacts_, joint_, sim_.safety_factor);
+  const CriticalStep c =
+      critical_time_step_from_contacts(blocks_, contacts_, laws_, step_joint_, sim_.safety_factor);
   if (c.chosen > 0 && c.chosen < dt_) {
     dt_ = c.chosen;
     ++dt_reductions_;
@@ -124,6 +158,7 @@ void Simulation::step() {
   // The loads once, before the threads: a caller's extra ground
   // acceleration (GroundMotion::extra) is called once per step, on this thread.
   const StepLoads loads = step_loads();
+  if (!loaded_.empty() && !static_stage_) compute_point_loads(time_);
 #pragma omp parallel if (parallel) num_threads(threads)
   {
     compute_joint_forces_parallel();
@@ -162,7 +197,7 @@ void Simulation::compute_joint_forces_parallel() {
   const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
   const std::size_t chunk = (n + nt - 1) / nt;
   const std::size_t begin = std::min(n, t * chunk), end = std::min(n, begin + chunk);
-  compute_pair_forces(law_, blocks_.state, contacts_.pairs, contacts_.sub, dt_, begin, end);
+  compute_pair_forces(laws_, blocks_.state, contacts_.pairs, contacts_.sub, dt_, begin, end);
 }
 
 void Simulation::gather_block(int i) {
@@ -189,6 +224,11 @@ void Simulation::advance_block(int i, const StepLoads& loads) {
   const Vec3& a_ground = loads.a_ground;
   Vec3 force = external_force(pr, i, loads.gravity, a_ground) + st.contact_force[i];
   Vec3 torque = st.contact_torque[i];
+  const bool loaded = !loaded_.empty() && loaded_[i] && !static_stage_;
+  if (loaded) {  // the point loads: the sum's last term
+    force += load_force_[i];
+    torque += load_torque_[i];
+  }
   if constexpr (kLocalDamping) {
     force = locally_damped(force, st.velocity[i], local_damping_);
     torque = locally_damped(torque, st.angular_velocity[i], local_damping_);
@@ -221,6 +261,19 @@ void Simulation::advance_block(int i, const StepLoads& loads) {
   // Under a rising gravity the ledger's potential counts m·g: the rest of
   // the applied weight, m·(g(t) − g), is a load.
   if (loads.rising) load_work_[i] += load_work(dt, pr.mass[i] * (loads.gravity - sim_.gravity), velocity_mid_[i]);
+  // The point loads' work over the step that ends at the force time, by the
+  // trapezoid: ½(F(t) + F(t − dt))·(x(t) − x(t − dt)), and the same for the
+  // torque and the turn. It is the leapfrog's own: with the ledger's
+  // kinetic energy ½·m·v₋·v₊, ½m·v₋(t)·(v₊(t) − v₋(t − dt)) is exactly
+  // that, so a load of any history keeps the balance to round-off (the
+  // mid-step dt·F·v(t) runs half a step ahead of the kinetic energy).
+  if (loaded) {
+    if (steps_ > 0)
+      load_work_[i] += 0.5 * (load_force_[i] + load_force_prev_[i]).dot(dt_prev_ * v_old) +
+                       0.5 * (load_torque_[i] + load_torque_prev_[i]).dot(dt_prev_ * st.angular_velocity[i]);
+    load_force_prev_[i] = load_force_[i];
+    load_torque_prev_[i] = load_torque_[i];
+  }
 
   st.velocity[i] = v_new;
   st.angular_momentum[i] = L_new;
@@ -325,9 +378,14 @@ void Simulation::move_kinematic_blocks() {
   if (blocks_.kinematic_blocks.empty()) return;
   auto& st = blocks_.state;
   const bool moving =
-      !static_stage_ && motion_.active() && motion_.applied_as == GroundMotionApplication::kinematic;
-  const Vec3 v_next = moving ? Vec3(motion_.velocity_at(time_ + 0.5 * dt_) * motion_.direction) : Vec3::Zero();
+      !static_stage_ && motion_.any_active() && motion_.applied_as == GroundMotionApplication::kinematic;
+  const Vec3 v_next = moving ? motion_.velocity_vector(time_ + 0.5 * dt_) : Vec3(Vec3::Zero());
   for (int i : blocks_.kinematic_blocks) {
+    const int k = prescription_of_.empty() ? -1 : prescription_of_[i];
+    if (k >= 0) {
+      move_prescribed_block(i, loads_.prescribed[static_cast<std::size_t>(k)]);
+      continue;
+    }
     const Vec3 v_old = st.velocity[i];
     const Vec3 v_new = moving ? v_next : v_old;
     velocity_mid_[i] = 0.5 * (v_old + v_new);
@@ -336,6 +394,63 @@ void Simulation::move_kinematic_blocks() {
     load_work_[i] += load_work(-dt_, st.contact_force[i], velocity_mid_[i]);
     st.velocity[i] = v_new;
     st.position[i] += dt_ * v_new;
+  }
+}
+
+// A prescribed block (core/loads.hpp): its velocity at t + dt/2 from its
+// history, its turn by ω·dt about its centroid; it does the work
+// −dt·(F_joint·v + T_joint·ω) on the blocks it pushes. Held still in the
+// static stage.
+void Simulation::move_prescribed_block(int i, const Prescription& p) {
+  auto& st = blocks_.state;
+  const Vec3 v_old = st.velocity[i], w_old = st.angular_velocity[i];
+  const bool by_displacement = !p.displacement_table.empty();
+  Vec3 v_new = Vec3::Zero();
+  if (!static_stage_) {
+    v_new = by_displacement ? Vec3((table_value(p.displacement_table, time_ + dt_) -
+                                    table_value(p.displacement_table, time_)) / dt_)
+                            : p.velocity_at(time_ + 0.5 * dt_);
+  }
+  const Vec3 w_new = static_stage_ ? Vec3(Vec3::Zero()) : p.angular_velocity;
+  velocity_mid_[i] = 0.5 * (v_old + v_new);
+  omega_mid_[i] = 0.5 * (w_old + w_new);
+  position_prev_[i] = st.position[i];
+  orientation_prev_[i] = st.orientation[i];
+  // The work it does through its joints over the step that ends now, by
+  // the trapezoid (as the point loads: exact against the leapfrog's ledger).
+  PrescribedHistory& h = prescribed_history_[static_cast<std::size_t>(prescription_of_[i])];
+  if (steps_ > 0)
+    load_work_[i] -= 0.5 * (st.contact_force[i] + h.force).dot(dt_prev_ * v_old) +
+                     0.5 * (st.contact_torque[i] + h.torque).dot(dt_prev_ * w_old);
+  h.force = st.contact_force[i];
+  h.torque = st.contact_torque[i];
+  st.velocity[i] = v_new;
+  st.angular_velocity[i] = w_new;
+  if (by_displacement && !static_stage_)
+    st.position[i] = p.start + table_value(p.displacement_table, time_ + dt_);  // exactly, no drift
+  else
+    st.position[i] += dt_ * v_new;
+  if (!w_new.isZero(0.0)) {
+    st.orientation[i] = (rotation_quaternion(dt_ * w_new) * st.orientation[i]).normalized();
+    st.rotation[i] = st.orientation[i].toRotationMatrix();
+  }
+}
+
+// The point loads at time t on the blocks they act on (serial, in load order:
+// several loads on one block sum in the deck's order).
+void Simulation::compute_point_loads(double t) {
+  const auto& st = blocks_.state;
+  for (const PointLoad& l : loads_.loads) {
+    load_force_[l.block] = Vec3::Zero();
+    load_torque_[l.block] = Vec3::Zero();
+  }
+  for (const PointLoad& l : loads_.loads) {
+    const double f = table_value(l.factor, t).x();
+    const Vec3 force = f * l.force;
+    Vec3 torque = f * l.moment;
+    if (l.at_point) torque += (st.rotation[l.block] * l.arm_local).cross(force);
+    load_force_[l.block] += force;
+    load_torque_[l.block] += torque;
   }
 }
 
@@ -439,6 +554,16 @@ void Simulation::save_state(ByteWriter& w) const {
   w.put(last_good_step_);
   contacts_.save(w);
   detector_.save(w);
+  // Point loads and prescribed blocks (a scene with neither writes nothing
+  // more: its checkpoints are those it always wrote).
+  if (!loaded_.empty()) {
+    w.put(load_force_prev_);
+    w.put(load_torque_prev_);
+  }
+  for (const PrescribedHistory& h : prescribed_history_) {
+    w.put(h.force);
+    w.put(h.torque);
+  }
 }
 
 void Simulation::load_state(ByteReader& r) {
@@ -469,6 +594,14 @@ void Simulation::load_state(ByteReader& r) {
   r.get(last_good_step_);
   contacts_.load(r, count);
   detector_.load(r);
+  if (!loaded_.empty()) {
+    r.get_sized(load_force_prev_, n, "load_force_prev");
+    r.get_sized(load_torque_prev_, n, "load_torque_prev");
+  }
+  for (PrescribedHistory& h : prescribed_history_) {
+    r.get(h.force);
+    r.get(h.torque);
+  }
 }
 
 double Simulation::largest_opening(int i) const {
@@ -505,7 +638,7 @@ EnergyLedger Simulation::energies() const {
     e.kinetic += 0.5 * wb0.dot(pr.principal_inertia[i].cwiseProduct(wb1));
     e.gravitational += -m * sim_.gravity.dot(position_prev_[i] - blocks_.initial_position[i]);
   }
-  e.strain = joint_strain_energy(law_, contacts_.sub);
+  e.strain = joint_strain_energy(laws_, contacts_.sub);
   e.slip = contacts_.retired_slip_energy;
   e.damping = contacts_.retired_damping_energy;
   for (std::size_t s = 0; s < contacts_.sub.size(); ++s) {

@@ -24,6 +24,7 @@
 #include "contact/joint_law.hpp"
 #include "core/blocks.hpp"
 #include "core/ground_motion.hpp"
+#include "core/loads.hpp"
 #include "integrators/critical_time_step.hpp"
 #include "integrators/thread_governor.hpp"
 
@@ -83,8 +84,13 @@ class Simulation {
   // adaptive_time_step: lower the step when a detection finds stiffer joints
   // (always on in runs; tests switch it off to drive a run unstable on
   // purpose and see the guard act).
+  // joint_pairs: the laws of [[joint]] `between` (each pair of groups its
+  // own; `joint` is the default); loads: point loads and prescribed motions
+  // (core/loads.hpp resolve_loads; the prescribed blocks must be kinematic).
+  // Without either the step is exactly the one it was without them.
   Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec& joint, GroundMotion motion, double margin,
-             double dt, bool adaptive_time_step = true);
+             double dt, bool adaptive_time_step = true, const std::vector<JointPairSpec>& joint_pairs = {},
+             BlockLoads loads = {});
 
   // Steps with fewer subcontacts (and fewer free blocks than a sixteenth of
   // this) run on one thread: below a few thousand subcontacts a step takes
@@ -115,7 +121,10 @@ class Simulation {
   const Blocks& blocks() const { return blocks_; }
   const ContactSet& contacts() const { return contacts_; }
   const GroundMotion& ground_motion() const { return motion_; }
-  const JointLaw& joint_law() const { return law_; }
+  const JointLaw& joint_law() const { return laws_.laws[0]; }  // the default law
+  const JointLaws& joint_laws() const { return laws_; }
+  // Block i moves as a [[prescribe]] says (not with the ground motion).
+  bool is_prescribed(int i) const { return !prescription_of_.empty() && prescription_of_[i] >= 0; }
 
   // Energies at the time of the last force evaluation (time() − dt()); the
   // kinetic term is ½·m·v(t − dt/2)·v(t + dt/2) (see energies() in the .cpp).
@@ -201,12 +210,15 @@ class Simulation {
   template <bool kLocalDamping>
   void advance_block(int i, const StepLoads& loads);
   void move_kinematic_blocks();
+  void compute_point_loads(double t);
+  void move_prescribed_block(int i, const Prescription& p);  // load_force_, load_torque_ at time t
   void check_health();
 
   Blocks blocks_;
   SimulationSpec sim_;
   JointSpec joint_;
-  JointLaw law_;
+  JointLaws laws_;
+  JointSpec step_joint_;  // the stiffest law that can act (the time step's)
   GroundMotion motion_;
   ContactDetector detector_;
   ContactSet contacts_;
@@ -232,6 +244,17 @@ class Simulation {
   double last_good_time_ = 0;
   long last_good_step_ = 0;
   std::vector<double> load_work_;
+  // Point loads and prescribed motions (empty for most scenes: then no
+  // array below is touched by the step).
+  BlockLoads loads_;
+  std::vector<char> loaded_;                  // per block: some point load acts on it
+  std::vector<Vec3> load_force_, load_torque_;  // per block, at the step's time
+  std::vector<Vec3> load_force_prev_, load_torque_prev_;  // per block, at the step before (the ledger's trapezoid)
+  std::vector<int> prescription_of_;          // per block: index into loads_.prescribed, -1 if none
+  struct PrescribedHistory {
+    Vec3 force = Vec3::Zero(), torque = Vec3::Zero();  // its joints' force and torque at the step before
+  };
+  std::vector<PrescribedHistory> prescribed_history_;  // per prescription
   StepProfile profile_;
   // The static stage (begin_static_stage): not checkpointed, a checkpoint is
   // never taken during it.

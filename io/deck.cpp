@@ -12,6 +12,7 @@
 #include "io/deck_reader.hpp"
 #include "io/generators.hpp"
 #include "io/ground_motion_record.hpp"
+#include "core/loads.hpp"
 #include "core/materials.hpp"
 #include "core/units.hpp"
 
@@ -43,19 +44,27 @@ constexpr std::string_view kSimulationKeys[] = {
     "end_time",          "time_step",       "safety_factor", "gravity",    "contact_margin", "threads", "adaptive_threads",
     "overlap_tolerance", "settle_velocity", "settle_time",   "gravity_rise_time"};
 constexpr std::string_view kJointKeys[] = {"normal_stiffness", "shear_stiffness",  "friction_angle",
-                                           "cohesion",         "tensile_strength", "damping"};
+                                           "cohesion",         "tensile_strength", "damping", "between"};
+constexpr std::string_view kGroupKeys[] = {"name", "density"};
+constexpr std::string_view kLoadKeys[] = {"blocks", "groups", "force", "moment", "point", "table"};
+constexpr std::string_view kPrescribeKeys[] = {"blocks", "groups", "velocity", "angular_velocity", "table",
+                                               "displacement_table"};
 constexpr std::string_view kBlockKeys[] = {"name",     "shape",    "size",   "center",   "polygon",
                                            "z",        "vertices", "rotation", "offset", "density",
                                            "motion",   "velocity", "angular_velocity", "course", "group"};
 constexpr std::string_view kGroundMotionKeys[] = {"kind",           "applied_as", "direction", "start_time",
                                                   "acceleration",   "acceleration_g", "rate",  "rate_g",
                                                   "period",         "record",         "scale",
-                                                  "rise_time",      "tower_frequency", "tower_damping"};
+                                                  "rise_time",      "tower_frequency", "tower_damping",
+                                                  "component"};
+constexpr std::string_view kGroundMotionComponentKeys[] = {
+    "kind", "direction", "start_time", "acceleration", "acceleration_g", "rate", "rate_g", "period", "record", "scale",
+    "rise_time"};
 constexpr std::string_view kOutputKeys[] = {"history_interval",  "histories",       "energies",
                                             "walking",           "snapshot_interval", "snapshot_joints",
                                             "checkpoint_interval"};
 constexpr std::string_view kAssessmentKeys[] = {"damage_displacement", "collapse_displacement", "stop_on_collapse",
-                                                "monitor_block", "collapse_mass_fraction"};
+                                                "monitor_block", "collapse_mass_fraction", "monitor_group"};
 constexpr std::string_view kCheckKeys[] = {"kind", "block", "expected", "tolerance"};
 constexpr std::string_view kEquilibriumKeys[] = {"enabled", "ratio", "max_steps", "local_damping", "density_scaling"};
 
@@ -69,6 +78,8 @@ constexpr SectionSchema kSections[] = {
     {"block", true, kBlockKeys},            {"ground_motion", false, kGroundMotionKeys},
     {"output", false, kOutputKeys},         {"check", true, kCheckKeys},
     {"assessment", false, kAssessmentKeys}, {"equilibrium", false, kEquilibriumKeys},
+    {"group", true, kGroupKeys},            {"load", true, kLoadKeys},
+    {"prescribe", true, kPrescribeKeys},
 };
 
 // Keys that define a block's shape, by shape.
@@ -76,6 +87,7 @@ constexpr std::string_view kShapeKeys[] = {"size", "center", "polygon", "z", "ve
 
 constexpr std::string_view kHistoryQuantities[] = {"position", "velocity", "rotation", "angular_velocity",
                                                    "contact_force"};
+constexpr std::string_view kGroupHistoryQuantities[] = {"position", "velocity", "contact_force"};
 constexpr std::string_view kCheckKinds[] = {"resting_weight",      "no_drift",
                                             "slide_acceleration",  "stick",
                                             "rocking_onset",       "housner_restitution",
@@ -109,18 +121,97 @@ SimulationSpec read_simulation(const Deck& deck) {
 }
 
 
-JointSpec read_joint(const Deck& deck, const JointDefaults& defaults) {
-  const TableReader r(deck, table_or_empty(deck, "joint"), "joint", kJointKeys);
-  JointSpec j;
-  j.normal_stiffness = r.number("normal_stiffness", defaults.normal_stiffness, Range::positive);
-  j.shear_stiffness = r.number("shear_stiffness", joint_shear_stiffness(j.normal_stiffness, defaults.shear_ratio), Range::positive);
-  j.friction_angle = r.number("friction_angle", j.friction_angle, Range::non_negative);
+// One joint law from a table: every key it does not give is `base`'s (the
+// stiffness ratio: shear_stiffness follows normal_stiffness by `shear_ratio`
+// unless the table gives it).
+JointSpec read_joint_keys(const TableReader& r, const JointSpec& base, double shear_ratio, bool base_given_shear) {
+  JointSpec j = base;
+  j.normal_stiffness = r.number("normal_stiffness", base.normal_stiffness, Range::positive);
+  const double ks_default =
+      base_given_shear && !r.has("normal_stiffness") ? base.shear_stiffness
+                                                     : joint_shear_stiffness(j.normal_stiffness, shear_ratio);
+  j.shear_stiffness = r.number("shear_stiffness", ks_default, Range::positive);
+  j.friction_angle = r.number("friction_angle", base.friction_angle, Range::non_negative);
   if (j.friction_angle >= 90.0)
     r.fail("friction_angle", "must be in [0, 90) degrees (got " + format_number(j.friction_angle) + ")");
-  j.cohesion = r.number("cohesion", j.cohesion, Range::non_negative);
-  j.tensile_strength = r.number("tensile_strength", j.tensile_strength, Range::non_negative);
-  j.damping = r.number("damping", j.damping, Range::non_negative);
+  j.cohesion = r.number("cohesion", base.cohesion, Range::non_negative);
+  j.tensile_strength = r.number("tensile_strength", base.tensile_strength, Range::non_negative);
+  j.damping = r.number("damping", base.damping, Range::non_negative);
   return j;
+}
+
+JointSpec default_joint(const JointDefaults& defaults) {
+  JointSpec j;
+  j.normal_stiffness = defaults.normal_stiffness;
+  j.shear_stiffness = joint_shear_stiffness(j.normal_stiffness, defaults.shear_ratio);
+  return j;
+}
+
+// [joint] (one law for every joint, as every deck before groups) or
+// [[joint]] (an array: the entry without `between` is the default, at most
+// one; every other entry is the law between two groups, its missing keys the
+// default's). TOML cannot hold both forms, so a deck chooses one; every deck
+// written with [joint] stays valid and means what it meant.
+struct JointSection {
+  JointSpec joint;
+  std::vector<JointPairSpec> pairs;
+};
+
+JointSection read_joints(const Deck& deck, const JointDefaults& defaults, const std::vector<BlockSpec>& blocks) {
+  JointSection out;
+  const toml::node* node = deck.root().get("joint");
+  if (!node || node->as_table()) {
+    const TableReader r(deck, table_or_empty(deck, "joint"), "joint", kJointKeys);
+    if (r.has("between"))
+      r.fail("between", "belongs to a [[joint]] entry (write the default law as a [[joint]] without `between` "
+                        "and each pair of groups as a [[joint]] with it)");
+    out.joint = read_joint_keys(r, default_joint(defaults), defaults.shear_ratio, false);
+    return out;
+  }
+  const auto tables = section_tables(deck, "joint");
+  // The default first, wherever it stands: the pairs inherit from it.
+  int default_index = -1;
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    if (tables[i]->get("between")) continue;
+    if (default_index >= 0) {
+      deck.fail(indexed("joint", i + 1), tables[i],
+                "a second [[joint]] without `between` (the default law is joint[" + std::to_string(default_index + 1) +
+                    "]); give this one `between = [\"GROUP\", \"GROUP\"]`");
+    }
+    default_index = static_cast<int>(i);
+  }
+  if (default_index >= 0) {
+    const TableReader r(deck, *tables[static_cast<std::size_t>(default_index)],
+                        indexed("joint", static_cast<std::size_t>(default_index) + 1), kJointKeys);
+    out.joint = read_joint_keys(r, default_joint(defaults), defaults.shear_ratio, false);
+  } else {
+    out.joint = default_joint(defaults);
+  }
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    if (static_cast<int>(i) == default_index) continue;
+    const TableReader r(deck, *tables[i], indexed("joint", i + 1), kJointKeys);
+    JointPairSpec p;
+    p.deck_line = r.line();
+    const toml::node* between = r.table().get("between");
+    const auto* arr = between->as_array();
+    if (!arr || arr->size() != 2 || !arr->get(0)->as_string() || !arr->get(1)->as_string())
+      r.fail("between", "must be a pair of group names [\"A\", \"B\"] (the same name twice for the joints "
+                        "inside a group) (got " + describe(*between) + ")");
+    p.group_a = arr->get(0)->as_string()->get();
+    p.group_b = arr->get(1)->as_string()->get();
+    for (const std::string* g : {&p.group_a, &p.group_b}) {
+      if (std::none_of(blocks.begin(), blocks.end(), [&](const BlockSpec& b) { return b.group == *g; }))
+        r.fail("between", "no block is in group " + in_quotes(*g) + " ([[block]] group, or a generator's groups)");
+    }
+    for (const JointPairSpec& q : out.pairs) {
+      if ((q.group_a == p.group_a && q.group_b == p.group_b) || (q.group_a == p.group_b && q.group_b == p.group_a))
+        r.fail("between", "the pair " + in_quotes(p.group_a) + ", " + in_quotes(p.group_b) +
+                              " already has a law (the [[joint]] at line " + std::to_string(q.deck_line) + ")");
+    }
+    p.joint = read_joint_keys(r, out.joint, defaults.shear_ratio, true);
+    out.pairs.push_back(std::move(p));
+  }
+  return out;
 }
 
 // R = Rz·Ry·Rx, angles in degrees.
@@ -276,10 +367,10 @@ std::optional<double> si_or_g(const TableReader& r, std::string_view si_key, std
   return si;
 }
 
-GroundMotionSpec read_ground_motion(const Deck& deck) {
-  const TableReader r(deck, table_or_empty(deck, "ground_motion"), "ground_motion", kGroundMotionKeys);
-  GroundMotionSpec g;
-  g.deck_line = r.line();
+// The keys a motion component has: the section's own and each
+// [[ground_motion.component]]'s (kind, direction, start time, amplitude or
+// rate, period, rise time, record and scale).
+void read_motion_keys(const Deck& deck, const TableReader& r, GroundMotionSpec& g) {
   g.kind = r.choice<GroundMotionKind>("kind",
                                       {{"none", GroundMotionKind::none},
                                        {"constant", GroundMotionKind::constant},
@@ -287,10 +378,6 @@ GroundMotionSpec read_ground_motion(const Deck& deck) {
                                        {"sine_pulse", GroundMotionKind::sine_pulse},
                                        {"record", GroundMotionKind::record}},
                                       g.kind);
-  g.applied_as = r.choice<GroundMotionApplication>(
-      "applied_as",
-      {{"body_force", GroundMotionApplication::body_force}, {"kinematic", GroundMotionApplication::kinematic}},
-      g.applied_as);
   if (const auto d = r.vec3("direction")) {
     if (!(d->norm() > 0)) r.fail("direction", "must not be the zero vector");
     g.direction = d->normalized();
@@ -302,8 +389,6 @@ GroundMotionSpec read_ground_motion(const Deck& deck) {
   g.rate = rate.value_or(g.rate);
   g.period = r.number("period", g.period, Range::positive);
   g.rise_time = r.number("rise_time", g.rise_time, Range::non_negative);
-  g.tower_frequency = r.number("tower_frequency", g.tower_frequency, Range::non_negative);
-  g.tower_damping = r.number("tower_damping", g.tower_damping, Range::non_negative);
   g.scale = r.number("scale", g.scale, Range::any);
   const auto record = r.string("record");
 
@@ -341,7 +426,156 @@ GroundMotionSpec read_ground_motion(const Deck& deck) {
     g.record_time = std::move(rec.time);
     g.record_acceleration = std::move(rec.acceleration);
   }
+}
+
+GroundMotionSpec read_ground_motion(const Deck& deck) {
+  const TableReader r(deck, table_or_empty(deck, "ground_motion"), "ground_motion", kGroundMotionKeys);
+  GroundMotionSpec g;
+  g.deck_line = r.line();
+  g.applied_as = r.choice<GroundMotionApplication>(
+      "applied_as",
+      {{"body_force", GroundMotionApplication::body_force}, {"kinematic", GroundMotionApplication::kinematic}},
+      g.applied_as);
+  g.tower_frequency = r.number("tower_frequency", g.tower_frequency, Range::non_negative);
+  g.tower_damping = r.number("tower_damping", g.tower_damping, Range::non_negative);
+  read_motion_keys(deck, r, g);
+  // [[ground_motion.component]]: further components, each its own keys.
+  if (const toml::node* n = r.table().get("component")) {
+    const auto* arr = n->as_array();
+    if (!arr) r.fail("component", "must be an array of tables: write [[ground_motion.component]] (got " + describe(*n) + ")");
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      const std::string path = indexed("ground_motion.component", i + 1);
+      const auto* t = arr->get(i)->as_table();
+      if (!t) deck.fail(path, arr->get(i), "must be a table: write [[ground_motion.component]]");
+      const TableReader c(deck, *t, path, kGroundMotionComponentKeys);
+      GroundMotionSpec m;
+      m.deck_line = c.line();
+      m.applied_as = g.applied_as;
+      if (!c.has("kind")) c.missing("kind", "every component needs kind (\"constant\", \"ramp\", \"sine_pulse\" or \"record\")");
+      read_motion_keys(deck, c, m);
+      g.components.push_back(std::move(m));
+    }
+  }
   return g;
+}
+
+// A selection of blocks: `blocks` (names) and/or `groups` (group names),
+// each name known; at least one block in all.
+void read_selection(const TableReader& r, const std::vector<BlockSpec>& blocks, std::vector<std::string>& names,
+                    std::vector<std::string>& groups) {
+  const auto strings = [&](std::string_view key, std::vector<std::string>& out) {
+    const toml::node* n = r.table().get(key);
+    if (!n) return;
+    const auto* arr = n->as_array();
+    if (!arr) r.fail(key, "must be an array of names [\"...\", ...] (got " + describe(*n) + ")");
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      const auto* str = arr->get(i)->as_string();
+      if (!str) r.deck().fail(indexed(r.key_path(key), i + 1), arr->get(i), "must be a name (got " + describe(*arr->get(i)) + ")");
+      out.push_back(str->get());
+    }
+  };
+  strings("blocks", names);
+  strings("groups", groups);
+  for (const auto& name : names)
+    if (std::none_of(blocks.begin(), blocks.end(), [&](const BlockSpec& b) { return b.name == name; }))
+      r.fail("blocks", "no block named " + in_quotes(name));
+  for (const auto& g : groups)
+    if (std::none_of(blocks.begin(), blocks.end(), [&](const BlockSpec& b) { return b.group == g; }))
+      r.fail("groups", "no block is in group " + in_quotes(g));
+  if (names.empty() && groups.empty()) r.missing("blocks", "select the blocks by blocks = [...] and/or groups = [...]");
+}
+
+// table = [[t, ...], ...]: rows of 1 + `width` numbers, times increasing.
+TimeTable read_time_table(const TableReader& r, std::size_t width, std::string_view form,
+                          std::string_view key = "table") {
+  TimeTable t;
+  const auto rows = r.points(key, 1 + width, form);
+  if (!rows) return t;
+  if (rows->empty()) r.fail(key, "must have at least one row " + std::string(form));
+  for (std::size_t k = 0; k < rows->size(); ++k) {
+    const auto& row = (*rows)[k];
+    if (k > 0 && !(row[0] > t.time.back()))
+      r.fail(key, "times must increase (row " + std::to_string(k + 1) + ": t = " + format_number(row[0]) +
+                          " after " + format_number(t.time.back()) + ")");
+    t.time.push_back(row[0]);
+    t.value.emplace_back(row[1], width > 1 ? row[2] : 0.0, width > 2 ? row[3] : 0.0);
+  }
+  return t;
+}
+
+std::vector<GroupSpec> read_groups(const Deck& deck, std::vector<BlockSpec>& blocks) {
+  std::vector<GroupSpec> out;
+  const auto tables = section_tables(deck, "group");
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    const TableReader r(deck, *tables[i], indexed("group", i + 1), kGroupKeys);
+    GroupSpec g;
+    g.deck_line = r.line();
+    const auto name = r.string("name");
+    if (!name) r.missing("name", "every [[group]] needs the name of a group of blocks");
+    g.name = *name;
+    if (std::none_of(blocks.begin(), blocks.end(), [&](const BlockSpec& b) { return b.group == g.name; }))
+      r.fail("name", "no block is in group " + in_quotes(g.name));
+    for (const GroupSpec& o : out)
+      if (o.name == g.name)
+        r.fail("name", "group " + in_quotes(g.name) + " already has a [[group]] (line " + std::to_string(o.deck_line) + ")");
+    g.density = r.number("density", 0.0, Range::positive);
+    if (g.density > 0)
+      for (BlockSpec& b : blocks)
+        if (b.group == g.name) b.density = g.density;
+    out.push_back(std::move(g));
+  }
+  return out;
+}
+
+std::vector<LoadSpec> read_loads(const Deck& deck, const std::vector<BlockSpec>& blocks) {
+  std::vector<LoadSpec> out;
+  const auto tables = section_tables(deck, "load");
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    const TableReader r(deck, *tables[i], indexed("load", i + 1), kLoadKeys);
+    LoadSpec l;
+    l.deck_line = r.line();
+    read_selection(r, blocks, l.blocks, l.groups);
+    const auto force = r.vec3("force");
+    const auto moment = r.vec3("moment");
+    if (!force && !moment) r.missing("force", "a [[load]] needs force = [x, y, z] (N) and/or moment = [x, y, z] (N·m)");
+    l.force = force.value_or(Vec3::Zero());
+    l.moment = moment.value_or(Vec3::Zero());
+    if (const auto point = r.vec3("point")) {
+      l.at_point = true;
+      l.point = *point;
+    }
+    l.factor = read_time_table(r, 1, "[t, factor]");
+    out.push_back(std::move(l));
+  }
+  return out;
+}
+
+std::vector<PrescribeSpec> read_prescribed(const Deck& deck, const std::vector<BlockSpec>& blocks) {
+  std::vector<PrescribeSpec> out;
+  const auto tables = section_tables(deck, "prescribe");
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    const TableReader r(deck, *tables[i], indexed("prescribe", i + 1), kPrescribeKeys);
+    PrescribeSpec p;
+    p.deck_line = r.line();
+    read_selection(r, blocks, p.blocks, p.groups);
+    if (r.has("velocity") && r.has("table"))
+      r.fail("table", "give either velocity = [vx, vy, vz] or table = [[t, vx, vy, vz], ...], not both");
+    p.velocity = r.vec3("velocity").value_or(Vec3::Zero());
+    p.angular_velocity = r.vec3("angular_velocity").value_or(Vec3::Zero());
+    p.velocity_table = read_time_table(r, 3, "[t, vx, vy, vz]");
+    p.displacement_table = read_time_table(r, 3, "[t, ux, uy, uz]", "displacement_table");
+    if (!p.displacement_table.empty()) {
+      if (r.has("velocity") || r.has("table"))
+        r.fail("displacement_table", "give one of velocity, table (velocities) and displacement_table, not two");
+      const Vec3 u0 = table_value(p.displacement_table, 0.0);
+      if (!u0.isZero(0.0))
+        r.fail("displacement_table", "the displacement at t = 0 must be zero (it is measured from where the block "
+                                     "starts; got [" + format_number(u0.x()) + ", " + format_number(u0.y()) + ", " +
+                                     format_number(u0.z()) + "])");
+    }
+    out.push_back(std::move(p));
+  }
+  return out;
 }
 
 OutputSpec read_output(const Deck& deck, const std::vector<BlockSpec>& blocks) {
@@ -366,6 +600,16 @@ OutputSpec read_output(const Deck& deck, const std::vector<BlockSpec>& blocks) {
       if (dot == std::string::npos || dot == 0)
         deck.fail(path, &e, "must be \"BLOCK.QUANTITY\" (got " + in_quotes(text) + ")");
       HistorySpec h{text.substr(0, dot), text.substr(dot + 1)};
+      if (h.block.rfind(kGroupPrefix, 0) == 0) {  // "group:NAME.QUANTITY"
+        const std::string group = h.block.substr(kGroupPrefix.size());
+        if (!contains(kGroupHistoryQuantities, h.quantity))
+          deck.fail(path, &e, "a group's quantity must be one of " + join_quoted(kGroupHistoryQuantities) + " (got " +
+                                  in_quotes(h.quantity) + ")");
+        if (std::none_of(blocks.begin(), blocks.end(), [&](const BlockSpec& b) { return b.group == group; }))
+          deck.fail(path, &e, "no block is in group " + in_quotes(group));
+        o.histories.push_back(std::move(h));
+        continue;
+      }
       if (!contains(kHistoryQuantities, h.quantity))
         deck.fail(path, &e, "quantity must be one of " + join_quoted(kHistoryQuantities) + " (got " +
                                 in_quotes(h.quantity) + ")");
@@ -393,6 +637,14 @@ AssessmentSpec read_assessment(const Deck& deck, const std::vector<BlockSpec>& b
   if (!a.monitor_block.empty() &&
       std::none_of(blocks.begin(), blocks.end(), [&](const BlockSpec& b) { return b.name == a.monitor_block; }))
     r.fail("monitor_block", "no block named " + in_quotes(a.monitor_block));
+  a.monitor_group = r.string("monitor_group").value_or("");
+  if (!a.monitor_group.empty()) {
+    if (!a.monitor_block.empty()) r.fail("monitor_group", "give monitor_block or monitor_group, not both");
+    if (std::none_of(blocks.begin(), blocks.end(), [&](const BlockSpec& b) {
+          return b.group == a.monitor_group && b.motion == BlockMotion::free;
+        }))
+      r.fail("monitor_group", "no free block is in group " + in_quotes(a.monitor_group));
+  }
   return a;
 }
 
@@ -463,6 +715,7 @@ std::vector<std::string> deck_warnings(const Deck& deck, const SceneSpec& s) {
       !s.equilibrium.enabled && s.joint.damping == 0 && s.joint.friction_angle > 0) {
     const toml::node* joint = deck.root().get("joint");
     const toml::node* at = joint && joint->as_table() ? joint->as_table()->get("damping") : nullptr;
+    if (joint && joint->as_array()) joint = nullptr;  // [[joint]]: the warning names the key alone
     warnings.push_back(deck_warning(
         deck, "joint.damping", at ? at : joint,
         "gravity is applied in full at t = 0 to frictional joints with no damping: the joints unload every "
@@ -622,11 +875,17 @@ SceneSpec parse_deck(const std::string& text, const std::string& path_for_messag
   // Generators ([spire], ...) first: they may set the joints' defaults
   // (from their materials) and they stand in for [[block]] tables.
   const Generated generated = read_generators(deck, scene);
-  scene.joint = read_joint(deck, generated.joint.value_or(JointDefaults{}));
   scene.blocks = read_blocks(deck, !generated.parts.empty());
   append_generated_blocks(deck, generated, scene.blocks);
-  // [[cut]]s last: they cut whatever the tables and generators made.
+  // [[cut]]s next: they cut whatever the tables and generators made; joints,
+  // groups, loads and prescribed motions then see the pieces.
   apply_cuts(deck, scene.blocks);
+  JointSection joints = read_joints(deck, generated.joint.value_or(JointDefaults{}), scene.blocks);
+  scene.joint = joints.joint;
+  scene.joint_pairs = std::move(joints.pairs);
+  scene.groups = read_groups(deck, scene.blocks);
+  scene.loads = read_loads(deck, scene.blocks);
+  scene.prescribed = read_prescribed(deck, scene.blocks);
   scene.ground_motion = read_ground_motion(deck);
   scene.output = read_output(deck, scene.blocks);
   scene.assessment = read_assessment(deck, scene.blocks);
@@ -676,6 +935,7 @@ std::vector<std::string> deck_keys() {
     for (const auto& key : section.keys) keys.push_back(std::string(section.name) + "." + std::string(key));
   }
   for (const auto& key : cut_keys()) keys.push_back("cut." + std::string(key));
+  for (const auto& key : kGroundMotionComponentKeys) keys.push_back("ground_motion.component." + std::string(key));
   return keys;
 }
 

@@ -15,17 +15,19 @@ void SnapshotWriter::write(const Simulation& sim, double time) {
   std::filesystem::create_directories(dir_);  // one stat when it exists; snapshots are rare
   const Blocks& b = sim.blocks();
   std::vector<Polyhedron> shapes;
-  std::vector<int> id, course;
+  std::vector<int> id, course, group;
   std::vector<Vec3> disp, vel;
   for (int i = 0; i < b.count; ++i) {
     shapes.push_back(world_shape(b, i));
     id.push_back(i);
     course.push_back(b.props.course[i]);
+    group.push_back(b.props.group[i]);
     disp.push_back(b.state.position[i] - b.initial_position[i]);
     vel.push_back(b.state.velocity[i]);
   }
   VtkCellData data;
-  data.add_ints("block_id", id).add_ints("course", course).add_vectors("displacement", disp).add_vectors("velocity",
+  // group: the index into results.h5's /blocks/group_names (-1: none).
+  data.add_ints("block_id", id).add_ints("course", course).add_ints("group", group).add_vectors("displacement", disp).add_vectors("velocity",
                                                                                                          vel);
   const std::string name = fmt::format("blocks_{:05d}.vtu", count_);
   write_vtu(dir_ + "/" + name, shapes, data);

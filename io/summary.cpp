@@ -10,9 +10,41 @@
 #define POLYDEM_VERSION "0.1.0"
 #endif
 
+#include <algorithm>
+
 namespace polydem {
 
 namespace {
+
+struct GroupTotals {
+  std::string name;
+  int blocks = 0;
+  double mass = 0;  // kg, ρ·V of each block as the run built it
+  int dislodged = 0;
+  double dislodged_mass = 0;  // kg
+};
+
+// Per group, in the order of its first block: the count and the mass, and
+// of them the blocks the assessment found dislodged.
+std::vector<GroupTotals> group_totals(const std::vector<BlockSpec>& blocks, const std::vector<std::string>& dislodged) {
+  std::vector<GroupTotals> out;
+  for (const BlockSpec& b : blocks) {
+    if (b.group.empty()) continue;
+    auto it = std::find_if(out.begin(), out.end(), [&](const GroupTotals& g) { return g.name == b.group; });
+    if (it == out.end()) {
+      out.push_back({b.group, 0, 0.0});
+      it = out.end() - 1;
+    }
+    ++it->blocks;
+    const double m = b.density * mass_properties(b.shape).volume;
+    it->mass += m;
+    if (std::find(dislodged.begin(), dislodged.end(), b.name) != dislodged.end()) {
+      ++it->dislodged;
+      it->dislodged_mass += m;
+    }
+  }
+  return out;
+}
 
 double number_or(const Json* j, double fallback) {
   return (j && (j->type() == Json::Type::Number || j->type() == Json::Type::Integer)) ? j->as_number() : fallback;
@@ -140,6 +172,23 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   s.set("contact_margin_m", r.margin);
   s.set("blocks", r.blocks);
   s.set("free_blocks", r.free_blocks);
+  const std::vector<GroupTotals> groups = group_totals(spec.blocks, r.assessment.dislodged_blocks);
+  if (!groups.empty()) {
+    Json gs = Json::array();
+    for (const GroupTotals& g : groups) {
+      Json j = Json::object();
+      j.set("name", g.name);
+      j.set("blocks", g.blocks);
+      j.set("mass_kg", g.mass);
+      // The group's own collapse measure: its blocks the assessment found
+      // dislodged (moved beyond assessment.collapse_displacement), and their
+      // fraction of the group's mass.
+      j.set("dislodged_blocks", g.dislodged);
+      j.set("dislodged_mass_fraction", g.mass > 0 ? g.dislodged_mass / g.mass : 0.0);
+      gs.push_back(std::move(j));
+    }
+    s.set("groups", std::move(gs));
+  }
   s.set("contact_detections", r.detections);
   s.set("subcontact_updates", r.subcontact_updates);
   if (r.checkpoints > 0) {
@@ -227,6 +276,20 @@ void write_results_h5(const std::string& path, const SceneSpec& spec, const RunR
   h5.write_attribute("/deck", "polydem_version", POLYDEM_VERSION);
   if (report.histories.columns.size() > 1) write_table(h5, "/histories", report.histories);
   if (!report.energies.columns.empty()) write_table(h5, "/energies", report.energies);
+  // The blocks' names and groups (the VTK snapshots' `group` cell field is
+  // the index into /blocks/group_names, -1 for a block without a group).
+  std::vector<std::string> names, groups, group_names;
+  for (const BlockSpec& b : spec.blocks) {
+    names.push_back(b.name);
+    groups.push_back(b.group);
+    if (!b.group.empty() && std::find(group_names.begin(), group_names.end(), b.group) == group_names.end())
+      group_names.push_back(b.group);
+  }
+  if (!names.empty()) {
+    h5.write_strings("/blocks/name", names);
+    h5.write_strings("/blocks/group", groups);
+    if (!group_names.empty()) h5.write_strings("/blocks/group_names", group_names);
+  }
   h5.commit();
 }
 

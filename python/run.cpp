@@ -365,7 +365,7 @@ void bind_run(py::module_& m) {
            [](const Run& r) {
              const GroundMotion& g = r.sim().ground_motion();
              const double t = r.sim().time();
-             Vec3 a = g.active() ? Vec3(g.acceleration_at(t) * g.direction) : Vec3::Zero();
+             Vec3 a = g.any_active() ? g.acceleration_vector(t) : Vec3(Vec3::Zero());
              if (g.extra) {
                py::gil_scoped_release nogil;  // a Python function takes the GIL itself
                a += g.extra(t);

@@ -12,16 +12,23 @@ AssessmentMonitor::AssessmentMonitor(const AssessmentSpec& spec, const Simulatio
   const Blocks& b = sim.blocks();
   direction_ = sim.ground_motion().active() ? sim.ground_motion().direction : Vec3(1, 0, 0);
   start_ = b.state.position;
-  if (!b.kinematic_blocks.empty()) {
-    reference_ = b.kinematic_blocks.front();
+  // The base the displacements are measured from: the first kinematic block
+  // that follows the ground motion ([[prescribe]]'s blocks push, they are
+  // not the ground).
+  for (int i : b.kinematic_blocks) {
+    if (sim.is_prescribed(i)) continue;
+    reference_ = i;
     reference_start_ = b.state.position[reference_];
+    break;
   }
   if (!spec.monitor_block.empty()) monitor_ = b.find(spec.monitor_block);
+  const int group = spec.monitor_group.empty() ? -1 : b.find_group(spec.monitor_group);
   if (monitor_ < 0) {
-    // The highest free block, "up" being against gravity.
+    // The highest free block (of the monitor group, if one is given), "up"
+    // being against gravity.
     double top = -std::numeric_limits<double>::infinity();
     for (int i : b.free_blocks)
-      if (b.state.position[i].dot(up_) > top) {
+      if ((group < 0 || b.props.group[i] == group) && b.state.position[i].dot(up_) > top) {
         top = b.state.position[i].dot(up_);
         monitor_ = i;
       }

@@ -102,11 +102,24 @@ Slope slope_of(const SceneSpec& s) {
   return sl;
 }
 
+// tan φ of the joint block i slides on: the one law of a scene, or, with laws
+// by pair of groups ([[joint]] between), the law between block i and the
+// first block it touches that is not free (its base).
+double sliding_tan_phi(const SceneSpec& s, const Simulation& sim, int i) {
+  const JointLaws& laws = sim.joint_laws();
+  if (laws.single()) return std::tan(s.joint.friction_angle * std::numbers::pi / 180);
+  for (const ContactPair& p : sim.contacts().pairs) {
+    const int other = p.a == i ? p.b : p.b == i ? p.a : -1;
+    if (other >= 0 && !sim.blocks().is_free(other)) return laws.between(i, other).tan_phi;
+  }
+  return laws.laws[0].tan_phi;
+}
+
 class SlideAcceleration : public CheckMonitor {
  public:
   SlideAcceleration(const CheckSpec& c, const SceneSpec& s, const Simulation& sim)
       : c_(c), i_(block_index(s, c, sim)), slope_(slope_of(s)), g_(s.simulation.gravity.norm()),
-        tan_phi_(std::tan(s.joint.friction_angle * std::numbers::pi / 180)), half_(0.5 * s.simulation.end_time) {}
+        tan_phi_(sliding_tan_phi(s, sim, i_)), half_(0.5 * s.simulation.end_time) {}
   void observe(const Simulation& sim) override {
     const double t = sim.time() - sim.dt();  // time of the mid-step velocity
     const double v = sim.velocity_at_force_time(i_).dot(slope_.down);

@@ -17,6 +17,18 @@ Vec3 rotation_vector(const Quat& q) {
 
 void append_channel(const Simulation& sim, const Channel& c, std::vector<double>& row) {
   const Blocks& b = sim.blocks();
+  if (c.block < 0) {  // a group, in block order
+    Vec3 v = Vec3::Zero();
+    for (int i : c.members) {
+      const double m = b.props.mass[i];
+      if (c.quantity == "position") v += m * sim.position_at_force_time(i);
+      else if (c.quantity == "velocity") v += m * sim.velocity_at_force_time(i);
+      else if (c.quantity == "contact_force") v += b.state.contact_force[i];
+    }
+    if (c.quantity != "contact_force") v /= c.mass;
+    row.insert(row.end(), {v.x(), v.y(), v.z()});
+    return;
+  }
   const int i = c.block;
   Vec3 v = Vec3::Zero();
   if (c.quantity == "position") v = sim.position_at_force_time(i);
@@ -100,9 +112,21 @@ Recorder::Recorder(const SceneSpec& spec, const Simulation& sim) {
   histories.columns.push_back("time");
   histories.units.push_back("s");
   for (const HistorySpec& h : spec.output.histories) {
-    const int i = sim.blocks().find(h.block);
-    if (i < 0) continue;  // the deck reader has checked the names
-    channels.push_back({i, h.quantity});
+    if (h.block.rfind(kGroupPrefix, 0) == 0) {
+      const int g = sim.blocks().find_group(h.block.substr(kGroupPrefix.size()));
+      if (g < 0) continue;  // the deck reader has checked the names
+      Channel c{-1, h.quantity, {}, 0.0};
+      for (int i = 0; i < sim.blocks().count; ++i) {
+        if (sim.blocks().props.group[i] != g) continue;
+        c.members.push_back(i);
+        c.mass += sim.blocks().props.mass[i];
+      }
+      channels.push_back(std::move(c));
+    } else {
+      const int i = sim.blocks().find(h.block);
+      if (i < 0) continue;  // the deck reader has checked the names
+      channels.push_back({i, h.quantity, {}, 0.0});
+    }
     for (const char* axis : {"x", "y", "z"}) {
       histories.columns.push_back(h.block + "." + h.quantity + "." + axis);
       histories.units.push_back(unit_of(h.quantity));

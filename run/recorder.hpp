@@ -71,9 +71,16 @@ struct JointMesh {
 };
 
 // One recorded quantity of one block.
+// One history channel: a block's quantity, or a group's ("group:NAME.QUANTITY":
+// `members` its blocks, `mass` their mass). A group's position is its
+// mass-weighted centroid, its velocity the mass-weighted mean (momentum over
+// mass), its contact_force the sum over its blocks (the joints inside the
+// group cancel: what the rest of the structure puts on it, e.g. a base shear).
 struct Channel {
   int block;
   std::string quantity;
+  std::vector<int> members;  // a group's blocks (block = -1)
+  double mass = 0;
 };
 
 struct Recorder {

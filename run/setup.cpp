@@ -22,7 +22,10 @@ RunSetup choose_margin_and_step(const SceneSpec& spec, const Blocks& blocks) {
   RunSetup s;
   s.margin = spec.simulation.contact_margin > 0 ? spec.simulation.contact_margin : automatic_margin(blocks);
   // Time step: automatic, or the deck's if it is smaller.
-  s.critical = critical_time_step(blocks, spec.joint, spec.simulation.safety_factor);
+  // The stiffest law that can act ([[joint]] `between`); one law: [joint].
+  const JointLaws laws = make_joint_laws(blocks, spec.joint, spec.joint_pairs);
+  s.critical = critical_time_step(blocks, laws.single() ? spec.joint : stiffest_joint(laws),
+                                  spec.simulation.safety_factor);
   double dt = s.critical.chosen;
   if (spec.simulation.time_step > 0) {
     if (s.critical.chosen > 0 && spec.simulation.time_step > s.critical.chosen) {
@@ -56,7 +59,15 @@ void check_initial_overlaps(const SceneSpec& spec, const Simulation& sim) {
 }
 
 std::unique_ptr<Simulation> build_simulation(const SceneSpec& spec, RunSetup& setup, ExtraGroundAcceleration extra) {
-  Blocks blocks = build_blocks(spec.blocks);
+  // [[prescribe]] makes its blocks kinematic before they are built.
+  std::vector<BlockSpec> specs;
+  if (!spec.prescribed.empty()) {
+    specs = spec.blocks;
+    apply_prescriptions(specs, spec.prescribed);
+  }
+  const std::vector<BlockSpec>& block_specs = spec.prescribed.empty() ? spec.blocks : specs;
+  Blocks blocks = build_blocks(block_specs);
+  BlockLoads loads = resolve_loads(blocks, block_specs, spec.loads, spec.prescribed);
   setup = choose_margin_and_step(spec, blocks);
   GroundMotion motion = spec.ground_motion.kind == GroundMotionKind::record
                             ? make_ground_motion(spec.ground_motion, spec.ground_motion.record_time,
@@ -64,7 +75,7 @@ std::unique_ptr<Simulation> build_simulation(const SceneSpec& spec, RunSetup& se
                             : make_ground_motion(spec.ground_motion);
   motion.extra = std::move(extra);
   auto sim = std::make_unique<Simulation>(std::move(blocks), spec.simulation, spec.joint, std::move(motion),
-                                          setup.margin, setup.time_step);
+                                          setup.margin, setup.time_step, true, spec.joint_pairs, std::move(loads));
   check_initial_overlaps(spec, *sim);
   return sim;
 }

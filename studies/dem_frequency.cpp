@@ -141,7 +141,10 @@ DemFrequencyResult measure_dem_frequency(SceneSpec scene, const DemFrequencyOpti
   scene.ground_motion.start_time = o.settle_time;
   scene.ground_motion.acceleration = o.pulse_g * g;
   scene.ground_motion.period = o.pulse_period;
-  if (!o.keep_damping) scene.joint.damping = 0.0;
+  if (!o.keep_damping) {
+    scene.joint.damping = 0.0;
+    for (JointPairSpec& p : scene.joint_pairs) p.joint.damping = 0.0;  // every law's ([[joint]] between)
+  }
   const double t_free = o.settle_time + o.pulse_period;
   scene.simulation.end_time = t_free + o.duration;
   scene.simulation.settle_velocity = 0.0;

@@ -34,7 +34,8 @@ INSTANTIATE_TEST_SUITE_P(Decks, VerificationDeck,
                                            "stack_of_ten.toml", "dry_stone_wall.toml", "slope_equilibrium.toml",
                                            "pulse_rocking_body_force.toml", "pulse_rocking_kinematic.toml",
                                            "arch_self_weight.toml", "column_rocking.toml",
-                                           "cut_wall.toml", "imported_wall.toml"),
+                                           "cut_wall.toml", "imported_wall.toml",
+                                           "dry_base_slide.toml"),
                          [](const auto& info) {
                            std::string n = info.param;
                            return n.substr(0, n.find('.'));
