@@ -1,0 +1,528 @@
+// The wall builder: course by course, unit by unit (see wall.hpp).
+//
+// A course is a row of "segments" along u, [u0, u1], each either one unit
+// per leaf (the leaves share the course's vertical joints) or one block
+// through the whole wall (a header, a through-stone, a jamb stone). The
+// bond's pattern gives the segments (a period repeated and shifted per
+// course, cut at the wall's ends, end pieces under a quarter unit joined to
+// their neighbour); each opening then forces the joints it needs (at its
+// jambs in the courses beside the opening, at the ends of its head in the
+// courses the head spans) and, in the head's courses, merges everything
+// between the head's ends into one segment.
+//
+// Units and the pieces of them beside and under an opening are boxes in the
+// wall's frame: an opening and the regions around it are rectangles in the
+// (u, z) plane,
+//   left   u <= position,                    z <= head (arch: springing)
+//   below  position <= u <= position + width, z <= sill
+//   right  u >= position + width,             z <= head (arch: springing)
+// and a unit that meets an opening's zone (its head's extent times the
+// opening's height, up to the top of the head) is replaced by its
+// intersections with those three. The head blocks fill the rest of the zone
+// above the head: a lintel (a box) or voussoirs, each the intersection of
+// half-spaces (the chord of the intrados, the two radial joints through the
+// arch's centre, the zone's ends and top) built by halfspace_intersection
+// (CGAL, exact predicates). Boxes are built in the wall frame with
+// coordinates computed once per joint, so neighbours share their faces
+// exactly before the rigid motion to the world.
+#include "geometry/wall.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <sstream>
+
+namespace polydem {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kSliver = 0.25;  // no piece shorter than this fraction of unit_length (or of the course height)
+
+std::string num(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+void require(bool ok, const char* field, int opening, const std::string& what) {
+  if (!ok) throw WallSpecError(field, opening, what);
+}
+
+std::string zero_padded(int v, int width) {
+  std::string s = std::to_string(v);
+  while (static_cast<int>(s.size()) < width) s.insert(s.begin(), '0');
+  return s;
+}
+
+struct Segment {
+  double u0, u1;
+  bool through;  // one block through the wall (else one per leaf)
+  WallBlockKind kind;
+};
+
+struct PatternElement {
+  double s, e;
+  bool through;
+  WallBlockKind kind;
+};
+
+struct Pattern {
+  double period;
+  double offset;
+  std::vector<PatternElement> elements;
+};
+
+int n_courses(const WallSpec& s) {
+  return s.courses > 0 ? s.courses : std::max(1, static_cast<int>(std::lround(s.height / s.unit_height)));
+}
+
+int leaves_of(const WallSpec& s) { return s.bond == WallBond::stretcher ? s.leaves : 2; }
+
+Pattern course_pattern(const WallSpec& s, int c) {
+  const bool odd = c % 2 == 1;
+  const double L = s.unit_length, w = s.unit_width;
+  switch (s.bond) {
+    case WallBond::stretcher: return {L, odd ? 0.5 * L : 0.0, {{0, L, false, WallBlockKind::unit}}};
+    case WallBond::header: return {w, odd ? 0.5 * w : 0.0, {{0, w, true, WallBlockKind::header}}};
+    case WallBond::english:
+      if (!odd) return {L, 0.0, {{0, L, false, WallBlockKind::unit}}};
+      return {w, 0.5 * w, {{0, w, true, WallBlockKind::header}}};
+    case WallBond::flemish:
+      return {3 * w, odd ? 1.5 * w : 0.0,
+              {{0, w, true, WallBlockKind::header}, {w, 3 * w, false, WallBlockKind::unit}}};
+  }
+  return {};
+}
+
+// The bond's segments of course c, cut at the ends, end slivers joined.
+std::vector<Segment> bond_segments(const WallSpec& s, int c) {
+  const Pattern p = course_pattern(s, c);
+  const double L = s.length, tol = 1e-12 * L;
+  std::vector<Segment> out;
+  const long k0 = static_cast<long>(std::floor(-p.offset / p.period)) - 1;
+  for (long k = k0;; ++k) {
+    const double base = p.offset + static_cast<double>(k) * p.period;
+    if (base >= L - tol) break;
+    for (const auto& e : p.elements) {
+      const double u0 = std::max(0.0, base + e.s), u1 = std::min(L, base + e.e);
+      if (u1 - u0 > tol) out.push_back({u0, u1, e.through, e.kind});
+    }
+  }
+  std::sort(out.begin(), out.end(), [](const Segment& a, const Segment& b) { return a.u0 < b.u0; });
+  for (auto& seg : out) seg.u0 = std::clamp(seg.u0, 0.0, L), seg.u1 = std::clamp(seg.u1, 0.0, L);
+  out.front().u0 = 0.0;
+  out.back().u1 = L;
+  // Through-stones: every Nth unit of a course, staggered course by course.
+  if (s.bond == WallBond::stretcher && s.through_every > 0) {
+    const int N = s.through_every;
+    const int shift = c % 2 == 1 ? N / 2 : 0;
+    for (std::size_t i = 0; i < out.size(); ++i)
+      if ((static_cast<int>(i) + shift) % N == 0) out[i].through = true, out[i].kind = WallBlockKind::through_stone;
+  }
+  // The sliver rule at the ends.
+  const double min_len = kSliver * s.unit_length * (1 - 1e-9);
+  auto merge_into = [&](std::size_t keep, std::size_t drop) {
+    Segment& k = out[keep];
+    const Segment& d = out[drop];
+    k.u0 = std::min(k.u0, d.u0);
+    k.u1 = std::max(k.u1, d.u1);
+    if (d.through && !k.through) k.through = true, k.kind = d.kind;
+    out.erase(out.begin() + static_cast<long>(drop));
+  };
+  if (out.size() > 1 && out.front().u1 - out.front().u0 < min_len) merge_into(1, 0);
+  if (out.size() > 1 && out.back().u1 - out.back().u0 < min_len) merge_into(out.size() - 2, out.size() - 1);
+  return out;
+}
+
+// Puts a joint at x (the sliver rule: an existing joint closer than a
+// quarter unit moves onto x, unless it is the wall's end).
+void force_joint(std::vector<Segment>& segs, double x, double min_len, double tol) {
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    Segment& g = segs[i];
+    if (std::abs(g.u0 - x) <= tol || std::abs(g.u1 - x) <= tol) {
+      // Already a joint: make it exact.
+      if (std::abs(g.u0 - x) <= tol && i > 0) g.u0 = x, segs[i - 1].u1 = x;
+      if (std::abs(g.u1 - x) <= tol && i + 1 < segs.size()) g.u1 = x, segs[i + 1].u0 = x;
+      return;
+    }
+    if (!(g.u0 < x && x < g.u1)) continue;
+    const double left = x - g.u0, right = g.u1 - x;
+    const bool can_left = i > 0, can_right = i + 1 < segs.size();
+    if (left < min_len && can_left && (right >= min_len || left <= right || !can_right)) {
+      g.u0 = x, segs[i - 1].u1 = x;
+    } else if (right < min_len && can_right) {
+      g.u1 = x, segs[i + 1].u0 = x;
+    } else {
+      Segment second = g;
+      g.u1 = x;
+      second.u0 = x;
+      segs.insert(segs.begin() + static_cast<long>(i) + 1, second);
+    }
+    return;
+  }
+}
+
+struct OpeningGeometry {
+  double a, b;          // jambs: u = a (left), u = b (right)
+  double sill;
+  double head;          // the top of the rectangular part: the lintel's bed, or the springing
+  double top;           // sill + height: the lintel's bed or the crown
+  double zone_a, zone_b;  // the head's extent along u
+  int head_lo = -1, head_hi = -1;  // the courses the head blocks span
+  double head_top = 0;  // z of the top of the head blocks
+  bool arch = false;
+  int voussoirs = 0;
+  double radius = 0, centre = 0;  // arch: radius and u of the centre (at z = head)
+};
+
+double bearing_of(const WallSpec& s, const WallOpening& o) {
+  if (o.head == OpeningHead::lintel) return o.bearing > 0 ? o.bearing : 0.5 * s.unit_length;
+  return o.ring > 0 ? o.ring : 0.5 * s.unit_length;
+}
+
+OpeningGeometry opening_geometry(const WallSpec& s, const WallOpening& o, int courses, double ch) {
+  OpeningGeometry g;
+  g.a = o.position;
+  g.b = o.position + o.width;
+  g.sill = o.sill;
+  g.top = o.sill + o.height;
+  g.arch = o.head == OpeningHead::arch;
+  g.radius = 0.5 * o.width;
+  g.centre = o.position + g.radius;
+  g.head = g.arch ? g.top - g.radius : g.top;
+  g.voussoirs = o.voussoirs;
+  const double e = bearing_of(s, o);
+  g.zone_a = g.a - e;
+  g.zone_b = g.b + e;
+  const double tol = 1e-9 * ch;
+  for (int c = 0; c < courses; ++c) {
+    const double z1 = (c + 1) * ch;
+    if (g.head_lo < 0 && z1 > g.head + tol) g.head_lo = c;
+    if (g.head_lo >= 0 && z1 >= g.top + 0.5 * ch - tol) {
+      g.head_hi = c;
+      break;
+    }
+  }
+  if (g.head_hi >= 0) g.head_top = (g.head_hi + 1) * ch;
+  return g;
+}
+
+// Distance of z above the bed joint below it (0 on a joint).
+double above_bed(double z, double ch) {
+  const double k = std::floor(z / ch + 1e-9);
+  return std::max(0.0, z - k * ch);
+}
+
+}  // namespace
+
+const char* to_string(WallBlockKind kind) {
+  switch (kind) {
+    case WallBlockKind::unit: return "unit";
+    case WallBlockKind::header: return "header";
+    case WallBlockKind::through_stone: return "through_stone";
+    case WallBlockKind::jamb: return "jamb";
+    case WallBlockKind::lintel: return "lintel";
+    case WallBlockKind::voussoir: return "voussoir";
+  }
+  return "?";
+}
+
+double wall_thickness(const WallSpec& s) {
+  return s.bond == WallBond::stretcher ? s.leaves * s.unit_width : s.unit_length;
+}
+
+void validate_wall(const WallSpec& s) {
+  auto finite_positive = [&](double v, const char* field) {
+    require(std::isfinite(v) && v > 0, field, -1, "must be > 0 and finite (got " + num(v) + ")");
+  };
+  require(!s.name.empty(), "name", -1, "must not be empty");
+  finite_positive(s.length, "length");
+  finite_positive(s.height, "height");
+  finite_positive(s.unit_length, "unit_length");
+  finite_positive(s.unit_height, "unit_height");
+  finite_positive(s.unit_width, "unit_width");
+  require(std::isfinite(s.direction), "direction", -1, "must be finite");
+  require(s.origin.allFinite(), "origin", -1, "must be finite");
+  require(s.unit_length <= s.length * (1 + 1e-12), "unit_length", -1,
+          "a unit (" + num(s.unit_length) + " m) is longer than the wall (" + num(s.length) + " m)");
+  require(s.unit_height <= s.height * (1 + 1e-12), "unit_height", -1,
+          "a unit (" + num(s.unit_height) + " m) is taller than the wall (" + num(s.height) + " m)");
+  require(s.courses >= 0 && s.courses <= 2000, "courses", -1,
+          "must be in [1, 2000] (got " + std::to_string(s.courses) + ")");
+  require(s.leaves >= 1 && s.leaves <= 16, "leaves", -1, "must be in [1, 16] (got " + std::to_string(s.leaves) + ")");
+  require(s.leaves == 1 || s.bond == WallBond::stretcher, "leaves", -1,
+          "only a stretcher bond has several leaves (header, English and Flemish bond walls are one unit length "
+          "thick)");
+  require(s.through_every >= 0, "through_every", -1, "must be >= 0 (got " + std::to_string(s.through_every) + ")");
+  require(s.through_every == 0 || (s.bond == WallBond::stretcher && s.leaves >= 2), "through_every", -1,
+          "through-stones cross the leaves of a stretcher bond wall with at least 2 leaves");
+  if (s.bond == WallBond::english || s.bond == WallBond::flemish)
+    require(std::abs(2 * s.unit_width - s.unit_length) <= 1e-9 * s.unit_length, "unit_width", -1,
+            std::string("an ") + (s.bond == WallBond::english ? "English" : "Flemish") +
+                " bond cannot close across the wall unless two stretchers side by side fill a header's length: "
+                "unit_width must be unit_length/2 = " +
+                num(0.5 * s.unit_length) + " (got " + num(s.unit_width) + ")");
+  const int courses = n_courses(s);
+  const double ch = s.height / courses;
+  const double units_per_course = s.length / std::min(s.unit_length, s.unit_width) + 2;
+  const double blocks = units_per_course * courses * leaves_of(s);
+  require(blocks <= 20000, "length", -1,
+          "with these unit sizes the wall would have about " + num(std::round(blocks)) + " blocks (at most 20000)");
+  require(s.openings.size() <= 64, "opening", -1, "at most 64 openings per wall");
+
+  const double min_len = kSliver * s.unit_length;
+  std::vector<OpeningGeometry> done;
+  for (std::size_t i = 0; i < s.openings.size(); ++i) {
+    const WallOpening& o = s.openings[i];
+    const int k = static_cast<int>(i);
+    require(std::isfinite(o.width) && o.width > 0, "width", k, "must be > 0 (got " + num(o.width) + ")");
+    require(std::isfinite(o.height) && o.height > 0, "height", k, "must be > 0 (got " + num(o.height) + ")");
+    require(std::isfinite(o.sill) && o.sill >= 0, "sill", k, "must be >= 0 (got " + num(o.sill) + ")");
+    require(std::isfinite(o.position), "position", k, "must be finite");
+    require(std::isfinite(o.bearing) && o.bearing >= 0, "bearing", k, "must be >= 0 (got " + num(o.bearing) + ")");
+    require(std::isfinite(o.ring) && o.ring >= 0, "ring", k, "must be >= 0 (got " + num(o.ring) + ")");
+    const double e = bearing_of(s, o);
+    const char* e_key = o.head == OpeningHead::lintel ? "bearing" : "ring";
+    require(e >= min_len * (1 - 1e-9), e_key, k,
+            "must be at least a quarter unit (" + num(min_len) + " m) (got " + num(e) + ")");
+    if (o.head == OpeningHead::arch) {
+      require(o.voussoirs >= 3 && o.voussoirs <= 64, "voussoirs", k,
+              "must be in [3, 64] (got " + std::to_string(o.voussoirs) + ")");
+      require(o.height >= 0.5 * o.width * (1 - 1e-12), "height", k,
+              "a semicircular arch of width " + num(o.width) + " m rises " + num(0.5 * o.width) +
+                  " m: height must be at least that (got " + num(o.height) + ")");
+    }
+    require(o.position - e >= min_len * (1 - 1e-9), "position", k,
+            "the opening and its head's " + std::string(e_key) + " (" + num(e) +
+                " m each side) must leave at least a quarter unit (" + num(min_len) +
+                " m) of wall before it: position must be at least " + num(e + min_len) + " (got " +
+                num(o.position) + ")");
+    require(o.position + o.width + e <= s.length - min_len * (1 - 1e-9), "width", k,
+            "the opening and its head's " + std::string(e_key) + " reach u = " + num(o.position + o.width + e) +
+                ", leaving less than a quarter unit (" + num(min_len) + " m) of the wall (length " + num(s.length) +
+                ") after it");
+    const OpeningGeometry g = opening_geometry(s, o, courses, ch);
+    require(g.head_hi >= 0, "height", k,
+            "the head at z = " + num(g.top) + " leaves less than half a course (" + num(0.5 * ch) +
+                " m) of wall above it for the " + (g.arch ? "voussoirs" : "lintel") + " (wall height " +
+                num(s.height) + "): the opening cuts the top course");
+    const double ds = above_bed(o.sill, ch);
+    require(ds < 1e-9 * ch || ds >= kSliver * ch * (1 - 1e-9), "sill", k,
+            "is " + num(ds) + " m above a bed joint: the piece under it would be thinner than a quarter course (" +
+                num(kSliver * ch) + " m); put the sill on a bed joint (" + num(o.sill - ds) + ") or higher");
+    const double dh = above_bed(g.head, ch);
+    require(dh < 1e-9 * ch || dh >= kSliver * ch * (1 - 1e-9), "height", k,
+            std::string("puts the ") + (g.arch ? "springing" : "head") + " at z = " + num(g.head) + ", " + num(dh) +
+                " m above a bed joint: the pieces beside the opening would be thinner than a quarter course (" +
+                num(kSliver * ch) + " m); make it " + num(o.height - dh) + " or at least " +
+                num(o.height - dh + kSliver * ch));
+    for (std::size_t j = 0; j < done.size(); ++j) {
+      const OpeningGeometry& h = done[j];
+      const bool apart = g.zone_a >= h.zone_b + min_len * (1 - 1e-9) || h.zone_a >= g.zone_b + min_len * (1 - 1e-9);
+      require(apart, "position", k,
+              "the opening with its head (u from " + num(g.zone_a) + " to " + num(g.zone_b) + ") overlaps opening " +
+                  std::to_string(j) + " with its head (u from " + num(h.zone_a) + " to " + num(h.zone_b) +
+                  ") or leaves less than a quarter unit (" + num(min_len) + " m) between them");
+    }
+    done.push_back(g);
+  }
+}
+
+WallModel build_wall(const WallSpec& s) {
+  validate_wall(s);
+  WallModel m;
+  m.n_courses = n_courses(s);
+  m.course_height = s.height / m.n_courses;
+  m.thickness = wall_thickness(s);
+  const double th = s.direction * kPi / 180.0;
+  const Vec3 eu(std::cos(th), std::sin(th), 0), ev(-std::sin(th), std::cos(th), 0), ez(0, 0, 1);
+  m.rotation.col(0) = eu;
+  m.rotation.col(1) = ev;
+  m.rotation.col(2) = ez;
+  const double ch = m.course_height, T = m.thickness, L = s.length;
+  const double tol = 1e-12 * L;
+  const double min_len = kSliver * s.unit_length * (1 - 1e-9);
+  const int leaves = leaves_of(s);
+  const double leaf_w = T / leaves;
+  const int course_digits = std::max(2, static_cast<int>(std::to_string(m.n_courses - 1).size()));
+
+  std::vector<OpeningGeometry> openings;
+  m.solid_volume = L * s.height * T;
+  for (const auto& o : s.openings) {
+    openings.push_back(opening_geometry(s, o, m.n_courses, ch));
+    const OpeningGeometry& g = openings.back();
+    double area = o.width * (g.head - g.sill);
+    if (g.arch) area += 0.5 * g.voussoirs * g.radius * g.radius * std::sin(kPi / g.voussoirs);
+    m.solid_volume -= area * T;
+  }
+
+  auto place = [&](const Polyhedron& local) { return transformed(local, m.rotation, s.origin); };
+  auto box = [&](double u0, double u1, double v0, double v1, double z0, double z1) {
+    return place(make_box(Vec3(u1 - u0, v1 - v0, z1 - z0), Vec3(0.5 * (u0 + u1), 0.5 * (v0 + v1), 0.5 * (z0 + z1))));
+  };
+
+  for (int c = 0; c < m.n_courses; ++c) {
+    const double z0 = c * ch, z1 = c + 1 == m.n_courses ? s.height : (c + 1) * ch;
+    std::vector<Segment> segs = bond_segments(s, c);
+    // The joints the openings need in this course.
+    for (const auto& g : openings) {
+      const bool beside = z0 < g.head - 1e-9 * ch && z1 > g.sill + 1e-9 * ch;
+      const bool head_course = c >= g.head_lo && c <= g.head_hi;
+      if (head_course) {
+        force_joint(segs, g.zone_a, min_len, tol);
+        force_joint(segs, g.zone_b, min_len, tol);
+        // One jamb segment between the head's ends.
+        std::vector<Segment> merged;
+        bool jamb_added = false;
+        for (const auto& seg : segs) {
+          if (seg.u0 >= g.zone_a - tol && seg.u1 <= g.zone_b + tol) {
+            if (!jamb_added) merged.push_back({g.zone_a, g.zone_b, true, WallBlockKind::jamb});
+            jamb_added = true;
+          } else {
+            merged.push_back(seg);
+          }
+        }
+        segs = merged;
+      } else if (beside) {
+        force_joint(segs, g.a, min_len, tol);
+        force_joint(segs, g.b, min_len, tol);
+      }
+    }
+    int unit_index = 0;
+    for (const auto& seg : segs) {
+      const int i = unit_index++;
+      // The pieces of this segment, as (u0, u1, z0, z1) rectangles.
+      struct Rect {
+        double u0, u1, z0, z1;
+      };
+      std::vector<Rect> rects = {{seg.u0, seg.u1, z0, z1}};
+      bool cut = false;
+      for (const auto& g : openings) {
+        const bool meets = seg.u0 < g.zone_b - tol && seg.u1 > g.zone_a + tol && z0 < g.head_top - 1e-9 * ch &&
+                           z1 > g.sill + 1e-9 * ch;
+        if (!meets) continue;
+        cut = true;
+        std::vector<Rect> next;
+        for (const Rect& r : rects) {
+          const Rect regions[] = {{r.u0, std::min(r.u1, g.a), r.z0, std::min(r.z1, g.head)},
+                                  {std::max(r.u0, g.a), std::min(r.u1, g.b), r.z0, std::min(r.z1, g.sill)},
+                                  {std::max(r.u0, g.b), r.u1, r.z0, std::min(r.z1, g.head)}};
+          for (const Rect& q : regions)
+            if (q.u1 - q.u0 > tol && q.z1 - q.z0 > 1e-9 * ch) next.push_back(q);
+        }
+        rects = next;
+      }
+      const std::string base_name =
+          s.name + "_course" + zero_padded(c, course_digits);
+      for (std::size_t p = 0; p < rects.size(); ++p) {
+        const Rect& r = rects[p];
+        const std::string piece = cut ? "_piece" + std::to_string(p) : std::string();
+        if (seg.through) {
+          WallBlock b;
+          b.shape = box(r.u0, r.u1, -0.5 * T, 0.5 * T, r.z0, r.z1);
+          b.kind = seg.kind;
+          b.course = c;
+          b.name = base_name + "_unit" + std::to_string(i) + piece;
+          m.blocks.push_back(std::move(b));
+        } else {
+          for (int l = 0; l < leaves; ++l) {
+            WallBlock b;
+            const double v0 = -0.5 * T + l * leaf_w, v1 = l + 1 == leaves ? 0.5 * T : v0 + leaf_w;
+            b.shape = box(r.u0, r.u1, v0, v1, r.z0, r.z1);
+            b.kind = seg.kind;
+            b.course = c;
+            b.leaf = l;
+            b.name = base_name + "_leaf" + std::to_string(l) + "_unit" + std::to_string(i) + piece;
+            m.blocks.push_back(std::move(b));
+          }
+        }
+      }
+    }
+    // The head blocks of the openings whose head starts in this course.
+    for (std::size_t k = 0; k < openings.size(); ++k) {
+      const OpeningGeometry& g = openings[k];
+      if (g.head_lo != c) continue;
+      const std::string prefix = s.name + "_opening" + std::to_string(k);
+      if (!g.arch) {
+        WallBlock b;
+        b.shape = box(g.zone_a, g.zone_b, -0.5 * T, 0.5 * T, g.head, g.head_top);
+        b.kind = WallBlockKind::lintel;
+        b.course = c;
+        b.opening = static_cast<int>(k);
+        b.name = prefix + "_lintel";
+        m.blocks.push_back(std::move(b));
+        continue;
+      }
+      // Voussoir j lies between the radial joints at angles
+      // π - jπ/n and π - (j+1)π/n about the centre (centre, head), above
+      // the chord joining the intrados points on them.
+      const int n = g.voussoirs;
+      auto at_angle = [&](int j) {
+        const double a = kPi - kPi * j / n;
+        Vec2 p(g.centre + g.radius * std::cos(a), g.head + g.radius * std::sin(a));
+        if (j == 0) p = Vec2(g.a, g.head);
+        if (j == n) p = Vec2(g.b, g.head);
+        return p;
+      };
+      for (int j = 0; j < n; ++j) {
+        const double a0 = kPi - kPi * j / n, a1 = kPi - kPi * (j + 1) / n;
+        // sin and cos, exact at the springings (angles π and 0).
+        auto dir = [](double a, int k, int last) {
+          if (k == 0) return Vec2(-1, 0);
+          if (k == last) return Vec2(1, 0);
+          return Vec2(std::cos(a), std::sin(a));
+        };
+        const Vec2 d0 = dir(a0, j, n), d1 = dir(a1, j + 1, n);
+        std::vector<Vec3> normals;
+        std::vector<double> offsets;
+        // (u, z) half-plane a u + b z <= d, extruded through the wall.
+        auto add = [&](double a, double b, double d) {
+          normals.push_back(m.rotation * Vec3(a, 0, b));
+          offsets.push_back(d + normals.back().dot(s.origin));
+        };
+        // The radial joints: keep the polar angle about C within [a1, a0].
+        // n0 = (sin a0, -cos a0) points from the ray at a0 towards smaller
+        // angles, n1 = (-sin a1, cos a1) from the ray at a1 towards larger.
+        const Vec2 C(g.centre, g.head);
+        const Vec2 n0(d0.y(), -d0.x());  // towards decreasing angle from ray a0
+        add(-n0.x(), -n0.y(), -n0.dot(C));
+        const Vec2 n1(-d1.y(), d1.x());  // towards increasing angle from ray a1
+        add(-n1.x(), -n1.y(), -n1.dot(C));
+        // Outside the intrados chord.
+        const Vec2 P0 = at_angle(j), P1 = at_angle(j + 1);
+        const Vec2 t = P1 - P0;
+        const Vec2 up(-t.y(), t.x());  // normal away from the centre (chords run clockwise)
+        add(-up.x(), -up.y(), -up.dot(P0));
+        add(-1, 0, -g.zone_a);
+        add(1, 0, g.zone_b);
+        add(0, 1, g.head_top);
+        // The wall's two faces.
+        const Vec3 face = m.rotation * Vec3(0, 1, 0);
+        normals.push_back(face), offsets.push_back(0.5 * T + face.dot(s.origin));
+        normals.push_back(-face), offsets.push_back(0.5 * T - face.dot(s.origin));
+        const double am = 0.5 * (a0 + a1);
+        const double reach = std::min(g.zone_b - g.b, g.head_top - g.top);
+        const double r = g.radius + 0.5 * reach;
+        const Vec3 interior =
+            s.origin + m.rotation * Vec3(g.centre + r * std::cos(am), 0, g.head + r * std::sin(am));
+        WallBlock b;
+        const std::string name = prefix + "_voussoir" + std::to_string(j);
+        try {
+          b.shape = halfspace_intersection(normals, offsets, interior);
+        } catch (const GeometryError& e) {
+          throw GeometryError("wall: cannot build " + name + ": " + e.what());
+        }
+        b.kind = WallBlockKind::voussoir;
+        b.course = c;
+        b.opening = static_cast<int>(k);
+        b.name = name;
+        m.blocks.push_back(std::move(b));
+      }
+    }
+  }
+  return m;
+}
+
+}  // namespace polydem
