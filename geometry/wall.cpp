@@ -27,6 +27,8 @@
 // exactly before the rigid motion to the world.
 #include "geometry/wall.hpp"
 
+#include "geometry/coursed_openings.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -38,7 +40,6 @@ namespace polydem {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kSliver = 0.25;  // no piece shorter than this fraction of unit_length (or of the course height)
 
 std::string num(double v) {
   std::ostringstream s;
@@ -56,16 +57,15 @@ std::string zero_padded(int v, int width) {
   return s;
 }
 
-struct Segment {
-  double u0, u1;
-  bool through;  // one block through the wall (else one per leaf)
-  WallBlockKind kind;
-};
+using masonry::Segment;
+using masonry::kSliver;
+
+int kind_id(WallBlockKind k) { return static_cast<int>(k); }
 
 struct PatternElement {
   double s, e;
   bool through;
-  WallBlockKind kind;
+  int kind;
 };
 
 struct Pattern {
@@ -84,14 +84,14 @@ Pattern course_pattern(const WallSpec& s, int c) {
   const bool odd = c % 2 == 1;
   const double L = s.unit_length, w = s.unit_width;
   switch (s.bond) {
-    case WallBond::stretcher: return {L, odd ? 0.5 * L : 0.0, {{0, L, false, WallBlockKind::unit}}};
-    case WallBond::header: return {w, odd ? 0.5 * w : 0.0, {{0, w, true, WallBlockKind::header}}};
+    case WallBond::stretcher: return {L, odd ? 0.5 * L : 0.0, {{0, L, false, kind_id(WallBlockKind::unit)}}};
+    case WallBond::header: return {w, odd ? 0.5 * w : 0.0, {{0, w, true, kind_id(WallBlockKind::header)}}};
     case WallBond::english:
-      if (!odd) return {L, 0.0, {{0, L, false, WallBlockKind::unit}}};
-      return {w, 0.5 * w, {{0, w, true, WallBlockKind::header}}};
+      if (!odd) return {L, 0.0, {{0, L, false, kind_id(WallBlockKind::unit)}}};
+      return {w, 0.5 * w, {{0, w, true, kind_id(WallBlockKind::header)}}};
     case WallBond::flemish:
       return {3 * w, odd ? 1.5 * w : 0.0,
-              {{0, w, true, WallBlockKind::header}, {w, 3 * w, false, WallBlockKind::unit}}};
+              {{0, w, true, kind_id(WallBlockKind::header)}, {w, 3 * w, false, kind_id(WallBlockKind::unit)}}};
   }
   return {};
 }
@@ -119,7 +119,7 @@ std::vector<Segment> bond_segments(const WallSpec& s, int c) {
     const int N = s.through_every;
     const int shift = c % 2 == 1 ? N / 2 : 0;
     for (std::size_t i = 0; i < out.size(); ++i)
-      if ((static_cast<int>(i) + shift) % N == 0) out[i].through = true, out[i].kind = WallBlockKind::through_stone;
+      if ((static_cast<int>(i) + shift) % N == 0) out[i].through = true, out[i].kind = kind_id(WallBlockKind::through_stone);
   }
   // The sliver rule at the ends.
   const double min_len = kSliver * s.unit_length * (1 - 1e-9);
@@ -136,83 +136,14 @@ std::vector<Segment> bond_segments(const WallSpec& s, int c) {
   return out;
 }
 
-// Puts a joint at x (the sliver rule: an existing joint closer than a
-// quarter unit moves onto x, unless it is the wall's end).
-void force_joint(std::vector<Segment>& segs, double x, double min_len, double tol) {
-  for (std::size_t i = 0; i < segs.size(); ++i) {
-    Segment& g = segs[i];
-    if (std::abs(g.u0 - x) <= tol || std::abs(g.u1 - x) <= tol) {
-      // Already a joint: make it exact.
-      if (std::abs(g.u0 - x) <= tol && i > 0) g.u0 = x, segs[i - 1].u1 = x;
-      if (std::abs(g.u1 - x) <= tol && i + 1 < segs.size()) g.u1 = x, segs[i + 1].u0 = x;
-      return;
-    }
-    if (!(g.u0 < x && x < g.u1)) continue;
-    const double left = x - g.u0, right = g.u1 - x;
-    const bool can_left = i > 0, can_right = i + 1 < segs.size();
-    if (left < min_len && can_left && (right >= min_len || left <= right || !can_right)) {
-      g.u0 = x, segs[i - 1].u1 = x;
-    } else if (right < min_len && can_right) {
-      g.u1 = x, segs[i + 1].u0 = x;
-    } else {
-      Segment second = g;
-      g.u1 = x;
-      second.u0 = x;
-      segs.insert(segs.begin() + static_cast<long>(i) + 1, second);
-    }
-    return;
-  }
-}
-
-struct OpeningGeometry {
-  double a, b;          // jambs: u = a (left), u = b (right)
-  double sill;
-  double head;          // the top of the rectangular part: the lintel's bed, or the springing
-  double top;           // sill + height: the lintel's bed or the crown
-  double zone_a, zone_b;  // the head's extent along u
-  int head_lo = -1, head_hi = -1;  // the courses the head blocks span
-  double head_top = 0;  // z of the top of the head blocks
-  bool arch = false;
-  int voussoirs = 0;
-  double radius = 0, centre = 0;  // arch: radius and u of the centre (at z = head)
-};
-
 double bearing_of(const WallSpec& s, const WallOpening& o) {
   if (o.head == OpeningHead::lintel) return o.bearing > 0 ? o.bearing : 0.5 * s.unit_length;
   return o.ring > 0 ? o.ring : 0.5 * s.unit_length;
 }
 
-OpeningGeometry opening_geometry(const WallSpec& s, const WallOpening& o, int courses, double ch) {
-  OpeningGeometry g;
-  g.a = o.position;
-  g.b = o.position + o.width;
-  g.sill = o.sill;
-  g.top = o.sill + o.height;
-  g.arch = o.head == OpeningHead::arch;
-  g.radius = 0.5 * o.width;
-  g.centre = o.position + g.radius;
-  g.head = g.arch ? g.top - g.radius : g.top;
-  g.voussoirs = o.voussoirs;
-  const double e = bearing_of(s, o);
-  g.zone_a = g.a - e;
-  g.zone_b = g.b + e;
-  const double tol = 1e-9 * ch;
-  for (int c = 0; c < courses; ++c) {
-    const double z1 = (c + 1) * ch;
-    if (g.head_lo < 0 && z1 > g.head + tol) g.head_lo = c;
-    if (g.head_lo >= 0 && z1 >= g.top + 0.5 * ch - tol) {
-      g.head_hi = c;
-      break;
-    }
-  }
-  if (g.head_hi >= 0) g.head_top = (g.head_hi + 1) * ch;
-  return g;
-}
-
-// Distance of z above the bed joint below it (0 on a joint).
-double above_bed(double z, double ch) {
-  const double k = std::floor(z / ch + 1e-9);
-  return std::max(0.0, z - k * ch);
+masonry::Opening opening_of(const WallSpec& s, const WallOpening& o, int courses, double ch) {
+  return masonry::make_opening(o.position, o.sill, o.width, o.height, o.head == OpeningHead::arch, bearing_of(s, o),
+                               o.voussoirs, courses, ch);
 }
 
 }  // namespace
@@ -273,7 +204,7 @@ void validate_wall(const WallSpec& s) {
   require(s.openings.size() <= 64, "opening", -1, "at most 64 openings per wall");
 
   const double min_len = kSliver * s.unit_length;
-  std::vector<OpeningGeometry> done;
+  std::vector<masonry::Opening> done;
   for (std::size_t i = 0; i < s.openings.size(); ++i) {
     const WallOpening& o = s.openings[i];
     const int k = static_cast<int>(i);
@@ -303,23 +234,11 @@ void validate_wall(const WallSpec& s) {
             "the opening and its head's " + std::string(e_key) + " reach u = " + num(o.position + o.width + e) +
                 ", leaving less than a quarter unit (" + num(min_len) + " m) of the wall (length " + num(s.length) +
                 ") after it");
-    const OpeningGeometry g = opening_geometry(s, o, courses, ch);
-    require(g.head_hi >= 0, "height", k,
-            "the head at z = " + num(g.top) + " leaves less than half a course (" + num(0.5 * ch) +
-                " m) of wall above it for the " + (g.arch ? "voussoirs" : "lintel") + " (wall height " +
-                num(s.height) + "): the opening cuts the top course");
-    const double ds = above_bed(o.sill, ch);
-    require(ds < 1e-9 * ch || ds >= kSliver * ch * (1 - 1e-9), "sill", k,
-            "is " + num(ds) + " m above a bed joint: the piece under it would be thinner than a quarter course (" +
-                num(kSliver * ch) + " m); put the sill on a bed joint (" + num(o.sill - ds) + ") or higher");
-    const double dh = above_bed(g.head, ch);
-    require(dh < 1e-9 * ch || dh >= kSliver * ch * (1 - 1e-9), "height", k,
-            std::string("puts the ") + (g.arch ? "springing" : "head") + " at z = " + num(g.head) + ", " + num(dh) +
-                " m above a bed joint: the pieces beside the opening would be thinner than a quarter course (" +
-                num(kSliver * ch) + " m); make it " + num(o.height - dh) + " or at least " +
-                num(o.height - dh + kSliver * ch));
+    const masonry::Opening g = opening_of(s, o, courses, ch);
+    for (const auto& problem : masonry::level_problems(g, o.height, ch, s.height))
+      throw WallSpecError(problem.key, k, problem.what);
     for (std::size_t j = 0; j < done.size(); ++j) {
-      const OpeningGeometry& h = done[j];
+      const masonry::Opening& h = done[j];
       const bool apart = g.zone_a >= h.zone_b + min_len * (1 - 1e-9) || h.zone_a >= g.zone_b + min_len * (1 - 1e-9);
       require(apart, "position", k,
               "the opening with its head (u from " + num(g.zone_a) + " to " + num(g.zone_b) + ") overlaps opening " +
@@ -348,14 +267,11 @@ WallModel build_wall(const WallSpec& s) {
   const double leaf_w = T / leaves;
   const int course_digits = std::max(2, static_cast<int>(std::to_string(m.n_courses - 1).size()));
 
-  std::vector<OpeningGeometry> openings;
+  std::vector<masonry::Opening> openings;
   m.solid_volume = L * s.height * T;
   for (const auto& o : s.openings) {
-    openings.push_back(opening_geometry(s, o, m.n_courses, ch));
-    const OpeningGeometry& g = openings.back();
-    double area = o.width * (g.head - g.sill);
-    if (g.arch) area += 0.5 * g.voussoirs * g.radius * g.radius * std::sin(kPi / g.voussoirs);
-    m.solid_volume -= area * T;
+    openings.push_back(opening_of(s, o, m.n_courses, ch));
+    m.solid_volume -= masonry::opening_area(openings.back()) * T;
   }
 
   auto place = [&](const Polyhedron& local) { return transformed(local, m.rotation, s.origin); };
@@ -367,62 +283,22 @@ WallModel build_wall(const WallSpec& s) {
     const double z0 = c * ch, z1 = c + 1 == m.n_courses ? s.height : (c + 1) * ch;
     std::vector<Segment> segs = bond_segments(s, c);
     // The joints the openings need in this course.
-    for (const auto& g : openings) {
-      const bool beside = z0 < g.head - 1e-9 * ch && z1 > g.sill + 1e-9 * ch;
-      const bool head_course = c >= g.head_lo && c <= g.head_hi;
-      if (head_course) {
-        force_joint(segs, g.zone_a, min_len, tol);
-        force_joint(segs, g.zone_b, min_len, tol);
-        // One jamb segment between the head's ends.
-        std::vector<Segment> merged;
-        bool jamb_added = false;
-        for (const auto& seg : segs) {
-          if (seg.u0 >= g.zone_a - tol && seg.u1 <= g.zone_b + tol) {
-            if (!jamb_added) merged.push_back({g.zone_a, g.zone_b, true, WallBlockKind::jamb});
-            jamb_added = true;
-          } else {
-            merged.push_back(seg);
-          }
-        }
-        segs = merged;
-      } else if (beside) {
-        force_joint(segs, g.a, min_len, tol);
-        force_joint(segs, g.b, min_len, tol);
-      }
-    }
+    for (const auto& g : openings)
+      masonry::fit_course(segs, g, c, z0, z1, ch, min_len, tol, kind_id(WallBlockKind::jamb));
     int unit_index = 0;
     for (const auto& seg : segs) {
       const int i = unit_index++;
-      // The pieces of this segment, as (u0, u1, z0, z1) rectangles.
-      struct Rect {
-        double u0, u1, z0, z1;
-      };
-      std::vector<Rect> rects = {{seg.u0, seg.u1, z0, z1}};
       bool cut = false;
-      for (const auto& g : openings) {
-        const bool meets = seg.u0 < g.zone_b - tol && seg.u1 > g.zone_a + tol && z0 < g.head_top - 1e-9 * ch &&
-                           z1 > g.sill + 1e-9 * ch;
-        if (!meets) continue;
-        cut = true;
-        std::vector<Rect> next;
-        for (const Rect& r : rects) {
-          const Rect regions[] = {{r.u0, std::min(r.u1, g.a), r.z0, std::min(r.z1, g.head)},
-                                  {std::max(r.u0, g.a), std::min(r.u1, g.b), r.z0, std::min(r.z1, g.sill)},
-                                  {std::max(r.u0, g.b), r.u1, r.z0, std::min(r.z1, g.head)}};
-          for (const Rect& q : regions)
-            if (q.u1 - q.u0 > tol && q.z1 - q.z0 > 1e-9 * ch) next.push_back(q);
-        }
-        rects = next;
-      }
+      const std::vector<masonry::Rect> rects = masonry::cut_by_openings({seg.u0, seg.u1, z0, z1}, openings, ch, tol, cut);
       const std::string base_name =
           s.name + "_course" + zero_padded(c, course_digits);
       for (std::size_t p = 0; p < rects.size(); ++p) {
-        const Rect& r = rects[p];
+        const masonry::Rect& r = rects[p];
         const std::string piece = cut ? "_piece" + std::to_string(p) : std::string();
         if (seg.through) {
           WallBlock b;
           b.shape = box(r.u0, r.u1, -0.5 * T, 0.5 * T, r.z0, r.z1);
-          b.kind = seg.kind;
+          b.kind = static_cast<WallBlockKind>(seg.kind);
           b.course = c;
           b.name = base_name + "_unit" + std::to_string(i) + piece;
           m.blocks.push_back(std::move(b));
@@ -431,7 +307,7 @@ WallModel build_wall(const WallSpec& s) {
             WallBlock b;
             const double v0 = -0.5 * T + l * leaf_w, v1 = l + 1 == leaves ? 0.5 * T : v0 + leaf_w;
             b.shape = box(r.u0, r.u1, v0, v1, r.z0, r.z1);
-            b.kind = seg.kind;
+            b.kind = static_cast<WallBlockKind>(seg.kind);
             b.course = c;
             b.leaf = l;
             b.name = base_name + "_leaf" + std::to_string(l) + "_unit" + std::to_string(i) + piece;
@@ -442,7 +318,7 @@ WallModel build_wall(const WallSpec& s) {
     }
     // The head blocks of the openings whose head starts in this course.
     for (std::size_t k = 0; k < openings.size(); ++k) {
-      const OpeningGeometry& g = openings[k];
+      const masonry::Opening& g = openings[k];
       if (g.head_lo != c) continue;
       const std::string prefix = s.name + "_opening" + std::to_string(k);
       if (!g.arch) {
@@ -455,58 +331,20 @@ WallModel build_wall(const WallSpec& s) {
         m.blocks.push_back(std::move(b));
         continue;
       }
-      // Voussoir j lies between the radial joints at angles
-      // π - jπ/n and π - (j+1)π/n about the centre (centre, head), above
-      // the chord joining the intrados points on them.
-      const int n = g.voussoirs;
-      auto at_angle = [&](int j) {
-        const double a = kPi - kPi * j / n;
-        Vec2 p(g.centre + g.radius * std::cos(a), g.head + g.radius * std::sin(a));
-        if (j == 0) p = Vec2(g.a, g.head);
-        if (j == n) p = Vec2(g.b, g.head);
-        return p;
-      };
-      for (int j = 0; j < n; ++j) {
-        const double a0 = kPi - kPi * j / n, a1 = kPi - kPi * (j + 1) / n;
-        // sin and cos, exact at the springings (angles π and 0).
-        auto dir = [](double a, int k, int last) {
-          if (k == 0) return Vec2(-1, 0);
-          if (k == last) return Vec2(1, 0);
-          return Vec2(std::cos(a), std::sin(a));
-        };
-        const Vec2 d0 = dir(a0, j, n), d1 = dir(a1, j + 1, n);
+      for (int j = 0; j < g.voussoirs; ++j) {
+        Vec2 inside;
         std::vector<Vec3> normals;
         std::vector<double> offsets;
-        // (u, z) half-plane a u + b z <= d, extruded through the wall.
-        auto add = [&](double a, double b, double d) {
-          normals.push_back(m.rotation * Vec3(a, 0, b));
-          offsets.push_back(d + normals.back().dot(s.origin));
-        };
-        // The radial joints: keep the polar angle about C within [a1, a0].
-        // n0 = (sin a0, -cos a0) points from the ray at a0 towards smaller
-        // angles, n1 = (-sin a1, cos a1) from the ray at a1 towards larger.
-        const Vec2 C(g.centre, g.head);
-        const Vec2 n0(d0.y(), -d0.x());  // towards decreasing angle from ray a0
-        add(-n0.x(), -n0.y(), -n0.dot(C));
-        const Vec2 n1(-d1.y(), d1.x());  // towards increasing angle from ray a1
-        add(-n1.x(), -n1.y(), -n1.dot(C));
-        // Outside the intrados chord.
-        const Vec2 P0 = at_angle(j), P1 = at_angle(j + 1);
-        const Vec2 t = P1 - P0;
-        const Vec2 up(-t.y(), t.x());  // normal away from the centre (chords run clockwise)
-        add(-up.x(), -up.y(), -up.dot(P0));
-        add(-1, 0, -g.zone_a);
-        add(1, 0, g.zone_b);
-        add(0, 1, g.head_top);
+        // Each (u, z) half-plane a u + b z <= d extruded through the wall.
+        for (const masonry::HalfPlane& h : masonry::voussoir(g, j, inside)) {
+          normals.push_back(m.rotation * Vec3(h.a, 0, h.b));
+          offsets.push_back(h.d + normals.back().dot(s.origin));
+        }
         // The wall's two faces.
         const Vec3 face = m.rotation * Vec3(0, 1, 0);
         normals.push_back(face), offsets.push_back(0.5 * T + face.dot(s.origin));
         normals.push_back(-face), offsets.push_back(0.5 * T - face.dot(s.origin));
-        const double am = 0.5 * (a0 + a1);
-        const double reach = std::min(g.zone_b - g.b, g.head_top - g.top);
-        const double r = g.radius + 0.5 * reach;
-        const Vec3 interior =
-            s.origin + m.rotation * Vec3(g.centre + r * std::cos(am), 0, g.head + r * std::sin(am));
+        const Vec3 interior = s.origin + m.rotation * Vec3(inside.x(), 0, inside.y());
         WallBlock b;
         const std::string name = prefix + "_voussoir" + std::to_string(j);
         try {
