@@ -5,7 +5,7 @@ namespace polydem {
 using namespace deck_reader;
 
 std::span<const GeneratorSection> generator_sections() {
-  static const GeneratorSection sections[] = {kSpireSection, kWallSection};
+  static const GeneratorSection sections[] = {kSpireSection, kWallSection, kTowerSection};
   return sections;
 }
 

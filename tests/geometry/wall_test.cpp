@@ -14,6 +14,8 @@
 #include <numbers>
 #include <set>
 
+#include "convex_overlap.hpp"
+
 namespace polydem {
 namespace {
 
@@ -21,29 +23,7 @@ constexpr double kPi = std::numbers::pi;
 
 double volume(const Polyhedron& p) { return mass_properties(p).volume; }
 
-// True if the interiors of two convex polyhedra overlap by more than tol
-// along every candidate separating axis (both sets of face normals and the
-// cross products of their edges).
-bool interiors_overlap(const Polyhedron& a, const Polyhedron& b, double tol) {
-  auto separated = [&](Vec3 axis) {
-    const double n = axis.norm();
-    if (n < 1e-12) return false;
-    axis /= n;
-    double a0 = 1e300, a1 = -1e300, b0 = 1e300, b1 = -1e300;
-    for (const auto& v : a.vertices) a0 = std::min(a0, axis.dot(v)), a1 = std::max(a1, axis.dot(v));
-    for (const auto& v : b.vertices) b0 = std::min(b0, axis.dot(v)), b1 = std::max(b1, axis.dot(v));
-    return a1 <= b0 + tol || b1 <= a0 + tol;
-  };
-  for (const auto& n : a.normals)
-    if (separated(n)) return false;
-  for (const auto& n : b.normals)
-    if (separated(n)) return false;
-  for (const auto& ea : a.edges)
-    for (const auto& eb : b.edges)
-      if (separated((a.vertices[ea[1]] - a.vertices[ea[0]]).cross(b.vertices[eb[1]] - b.vertices[eb[0]])))
-        return false;
-  return true;
-}
+using test::interiors_overlap;
 
 // Vertices in the wall's frame (u, v, z).
 std::vector<Vec3> local(const WallSpec& s, const WallModel& m, const Polyhedron& p) {
