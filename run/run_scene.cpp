@@ -73,9 +73,18 @@ void load_loop(ByteReader& r, RunReport& rep, Recorder& rec, LoopState& s, std::
 }
 
 // True when every free block has been slower than settle_velocity for
-// settle_time (simulation.settle_*; never when settle_velocity is 0).
+// settle_time (simulation.settle_*; never when settle_velocity is 0). The
+// quiet time counts only once a constant ground acceleration has risen to
+// its value: a stiff structure creeps slower than settle_velocity under the
+// rising load, and stopping then would call "intact" a trial whose load
+// never reached the acceleration it tests (collapse searches).
 bool settled(const SceneSpec& spec, const Simulation& sim, double& quiet_since) {
   if (!(spec.simulation.settle_velocity > 0)) return false;
+  const GroundMotionSpec& g = spec.ground_motion;
+  if (g.kind == GroundMotionKind::constant && sim.time() < g.start_time + g.rise_time) {
+    quiet_since = -1;
+    return false;
+  }
   double vmax = 0;
   for (int i : sim.blocks().free_blocks) vmax = std::max(vmax, sim.blocks().state.velocity[i].norm());
   if (vmax >= spec.simulation.settle_velocity) {
