@@ -194,4 +194,40 @@ std::vector<HalfPlane> voussoir(const Opening& g, int j, Vec2& interior) {
   return out;
 }
 
+std::vector<Vec2> clip(const std::vector<Vec2>& poly, const Line& l) {
+  std::vector<Vec2> out;
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2& p = poly[i];
+    const Vec2& q = poly[(i + 1) % n];
+    const double fp = l.a.dot(p) - l.d, fq = l.a.dot(q) - l.d;
+    if (fp <= 0) out.push_back(p);
+    if ((fp < 0 && fq > 0) || (fp > 0 && fq < 0)) out.push_back(p + (fp / (fp - fq)) * (q - p));
+  }
+  return out;
+}
+
+std::vector<Vec2> cleaned(const std::vector<Vec2>& poly, double tol) {
+  std::vector<Vec2> p;
+  for (const auto& v : poly)
+    if (p.empty() || (v - p.back()).norm() > tol) p.push_back(v);
+  while (p.size() > 1 && (p.front() - p.back()).norm() <= tol) p.pop_back();
+  bool changed = true;
+  while (changed && p.size() >= 3) {
+    changed = false;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const Vec2& a = p[(i + p.size() - 1) % p.size()];
+      const Vec2& b = p[i];
+      const Vec2& c = p[(i + 1) % p.size()];
+      const Vec2 u = b - a, w = c - b;
+      if (std::abs(u.x() * w.y() - u.y() * w.x()) <= tol * (u.norm() + w.norm())) {
+        p.erase(p.begin() + static_cast<long>(i));
+        changed = true;
+        break;
+      }
+    }
+  }
+  return p;
+}
+
 }  // namespace polydem::masonry

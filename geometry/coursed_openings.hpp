@@ -94,4 +94,16 @@ struct HalfPlane {
 // under head_top. `interior` receives a point strictly inside.
 std::vector<HalfPlane> voussoir(const Opening& o, int j, Vec2& interior);
 
+// a·x <= d in a plane.
+struct Line {
+  Vec2 a;
+  double d;
+};
+
+// The convex polygon cut by a line (Sutherland-Hodgman; empty if nothing is left).
+std::vector<Vec2> clip(const std::vector<Vec2>& poly, const Line& l);
+
+// Drops repeated and collinear corners within tol (make_prism refuses them).
+std::vector<Vec2> cleaned(const std::vector<Vec2>& poly, double tol);
+
 }  // namespace polydem::masonry

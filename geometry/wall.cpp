@@ -96,23 +96,23 @@ Pattern course_pattern(const WallSpec& s, int c) {
   return {};
 }
 
-// The bond's segments of course c, cut at the ends, end slivers joined.
-std::vector<Segment> bond_segments(const WallSpec& s, int c) {
+// The bond's segments of course c between u = a and u = b (the wall's ends,
+// or where a gable's slopes cross the course's bed), end slivers joined.
+std::vector<Segment> bond_segments(const WallSpec& s, int c, double a, double b) {
   const Pattern p = course_pattern(s, c);
-  const double L = s.length, tol = 1e-12 * L;
+  const double L = b, tol = 1e-12 * s.length;
   std::vector<Segment> out;
-  const long k0 = static_cast<long>(std::floor(-p.offset / p.period)) - 1;
+  const long k0 = static_cast<long>(std::floor((a - p.offset) / p.period)) - 1;
   for (long k = k0;; ++k) {
     const double base = p.offset + static_cast<double>(k) * p.period;
     if (base >= L - tol) break;
     for (const auto& e : p.elements) {
-      const double u0 = std::max(0.0, base + e.s), u1 = std::min(L, base + e.e);
+      const double u0 = std::max(a, base + e.s), u1 = std::min(L, base + e.e);
       if (u1 - u0 > tol) out.push_back({u0, u1, e.through, e.kind});
     }
   }
-  std::sort(out.begin(), out.end(), [](const Segment& a, const Segment& b) { return a.u0 < b.u0; });
-  for (auto& seg : out) seg.u0 = std::clamp(seg.u0, 0.0, L), seg.u1 = std::clamp(seg.u1, 0.0, L);
-  out.front().u0 = 0.0;
+  std::sort(out.begin(), out.end(), [](const Segment& x, const Segment& y) { return x.u0 < y.u0; });
+  out.front().u0 = a;
   out.back().u1 = L;
   // Through-stones: every Nth unit of a course, staggered course by course.
   if (s.bond == WallBond::stretcher && s.through_every > 0) {
@@ -146,6 +146,63 @@ masonry::Opening opening_of(const WallSpec& s, const WallOpening& o, int courses
                                o.voussoirs, courses, ch);
 }
 
+// The gable's courses and its apex stone (see wall.hpp), appended to m.
+template <class PlaceUz>
+void build_gable(const WallSpec& s, WallModel& m, const PlaceUz& place_uz) {
+  const double L = s.length, H = s.height, g = s.gable_height, ch = m.course_height, T = m.thickness;
+  const double tol = 1e-12 * L;
+  const int leaves = leaves_of(s);
+  const double leaf_w = T / leaves;
+  auto width_at = [&](double z) { return L * (1.0 - (z - H) / g); };
+  // The slopes: z <= H + (2g/L) u and z <= H + (2g/L)(L - u).
+  const masonry::Line left{Vec2(-2 * g / L, 1), H}, right{Vec2(2 * g / L, 1), H + 2 * g};
+  int c = m.n_courses;
+  double z0 = H;
+  const int digits = std::max(2, static_cast<int>(std::to_string(m.n_courses + static_cast<int>(g / ch) + 1).size()));
+  while (z0 + ch < H + g - 1e-9 * ch && width_at(z0) >= 1.5 * s.unit_length * (1 - 1e-9)) {
+    const double z1 = z0 + ch;
+    const double a = 0.5 * (L - width_at(z0)), b = L - a;
+    const std::vector<Segment> segs = bond_segments(s, c, a, b);
+    for (std::size_t i = 0; i < segs.size(); ++i) {
+      const Segment& seg = segs[i];
+      std::vector<Vec2> poly = {{seg.u0, z0}, {seg.u1, z0}, {seg.u1, z1}, {seg.u0, z1}};
+      poly = masonry::cleaned(masonry::clip(masonry::clip(poly, left), right), tol);
+      const std::string base = s.name + "_course" + zero_padded(c, digits);
+      const auto make = [&](double v0, double v1, int leaf, const std::string& name) {
+        WallBlock blk;
+        try {
+          blk.shape = place_uz(poly, v0, v1);
+        } catch (const GeometryError& e) {
+          throw GeometryError("wall: cannot build " + name + ": " + e.what());
+        }
+        blk.kind = static_cast<WallBlockKind>(seg.kind);
+        blk.course = c;
+        blk.leaf = leaf;
+        blk.name = name;
+        m.blocks.push_back(std::move(blk));
+      };
+      if (seg.through) {
+        make(-0.5 * T, 0.5 * T, -1, base + "_unit" + std::to_string(i));
+      } else {
+        for (int l = 0; l < leaves; ++l) {
+          const double v0 = -0.5 * T + l * leaf_w, v1 = l + 1 == leaves ? 0.5 * T : v0 + leaf_w;
+          make(v0, v1, l, base + "_leaf" + std::to_string(l) + "_unit" + std::to_string(i));
+        }
+      }
+    }
+    ++c;
+    z0 = z1;
+  }
+  m.gable_courses = c - m.n_courses;
+  const double a = 0.5 * (L - width_at(z0));
+  WallBlock apex;
+  apex.shape = place_uz({{a, z0}, {L - a, z0}, {0.5 * L, H + g}}, -0.5 * T, 0.5 * T);
+  apex.kind = WallBlockKind::apex;
+  apex.course = c;
+  apex.name = s.name + "_apex";
+  m.blocks.push_back(std::move(apex));
+}
+
 }  // namespace
 
 const char* to_string(WallBlockKind kind) {
@@ -156,6 +213,7 @@ const char* to_string(WallBlockKind kind) {
     case WallBlockKind::jamb: return "jamb";
     case WallBlockKind::lintel: return "lintel";
     case WallBlockKind::voussoir: return "voussoir";
+    case WallBlockKind::apex: return "apex";
   }
   return "?";
 }
@@ -186,6 +244,8 @@ void validate_wall(const WallSpec& s) {
   require(s.leaves == 1 || s.bond == WallBond::stretcher, "leaves", -1,
           "only a stretcher bond has several leaves (header, English and Flemish bond walls are one unit length "
           "thick)");
+  require(std::isfinite(s.gable_height) && s.gable_height >= 0 && s.gable_height <= 100 * s.height, "gable_height",
+          -1, "must be in [0, 100·height] (got " + num(s.gable_height) + ")");
   require(s.through_every >= 0, "through_every", -1, "must be >= 0 (got " + std::to_string(s.through_every) + ")");
   require(s.through_every == 0 || (s.bond == WallBond::stretcher && s.leaves >= 2), "through_every", -1,
           "through-stones cross the leaves of a stretcher bond wall with at least 2 leaves");
@@ -198,7 +258,7 @@ void validate_wall(const WallSpec& s) {
   const int courses = n_courses(s);
   const double ch = s.height / courses;
   const double units_per_course = s.length / std::min(s.unit_length, s.unit_width) + 2;
-  const double blocks = units_per_course * courses * leaves_of(s);
+  const double blocks = units_per_course * (courses + std::ceil(s.gable_height / ch)) * leaves_of(s);
   require(blocks <= 20000, "length", -1,
           "with these unit sizes the wall would have about " + num(std::round(blocks)) + " blocks (at most 20000)");
   require(s.openings.size() <= 64, "opening", -1, "at most 64 openings per wall");
@@ -268,7 +328,7 @@ WallModel build_wall(const WallSpec& s) {
   const int course_digits = std::max(2, static_cast<int>(std::to_string(m.n_courses - 1).size()));
 
   std::vector<masonry::Opening> openings;
-  m.solid_volume = L * s.height * T;
+  m.solid_volume = L * s.height * T + 0.5 * L * s.gable_height * T;
   for (const auto& o : s.openings) {
     openings.push_back(opening_of(s, o, m.n_courses, ch));
     m.solid_volume -= masonry::opening_area(openings.back()) * T;
@@ -278,10 +338,18 @@ WallModel build_wall(const WallSpec& s) {
   auto box = [&](double u0, double u1, double v0, double v1, double z0, double z1) {
     return place(make_box(Vec3(u1 - u0, v1 - v0, z1 - z0), Vec3(0.5 * (u0 + u1), 0.5 * (v0 + v1), 0.5 * (z0 + z1))));
   };
+  // A (u, z) polygon through the wall from v0 to v1: make_prism extrudes
+  // along its third axis w, and (x, y, w) -> (u, v, z) = (x, -w, y) is a
+  // rotation, so the prism's faces stay outward.
+  const auto place_uz = [&](const std::vector<Vec2>& poly, double v0, double v1) {
+    Mat3 turn;
+    turn << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+    return transformed(make_prism(poly, -v1, -v0), m.rotation * turn, s.origin);
+  };
 
   for (int c = 0; c < m.n_courses; ++c) {
     const double z0 = c * ch, z1 = c + 1 == m.n_courses ? s.height : (c + 1) * ch;
-    std::vector<Segment> segs = bond_segments(s, c);
+    std::vector<Segment> segs = bond_segments(s, c, 0.0, L);
     // The joints the openings need in this course.
     for (const auto& g : openings)
       masonry::fit_course(segs, g, c, z0, z1, ch, min_len, tol, kind_id(WallBlockKind::jamb));
@@ -360,6 +428,7 @@ WallModel build_wall(const WallSpec& s) {
       }
     }
   }
+  if (s.gable_height > 0) build_gable(s, m, place_uz);
   return m;
 }
 

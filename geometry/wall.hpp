@@ -53,6 +53,13 @@
 // The sill and the head (or springing) must lie on a bed joint or at least a
 // quarter course above one: no piece is thinner than a quarter course.
 //
+// A gable (gable_height > 0) continues the courses above `height` at the
+// same course height, each cut at its bed by the two slopes (its ends where
+// the slopes cross its bed, with the sliver rule there) and its end units
+// by the slopes themselves (trapezoids or triangles through the wall). The
+// top of the gable is one apex stone, a triangle from the lowest bed joint at
+// which the gable is less than 1.5 units wide. Openings stay below `height`.
+//
 // Sizes and the rules above are checked by validate_wall(): each failure is
 // a WallSpecError naming the WallSpec field (= the [[wall]] deck key) and,
 // for an opening, its index. No CGAL here; wall.cpp uses it through
@@ -93,6 +100,9 @@ struct WallSpec {
   WallBond bond = WallBond::stretcher;
   int leaves = 1;                    // stretcher bond only
   int through_every = 0;             // stretcher bond, leaves >= 2: every Nth unit a through-stone; 0 = none
+  // A gable on top: the wall rises from `height` at its ends to height +
+  // gable_height at its middle, the courses cut by the two slopes; 0 = none.
+  double gable_height = 0;
   std::vector<WallOpening> openings;
 };
 
@@ -109,7 +119,7 @@ struct WallSpecError : GeometryError {
   std::string detail;
 };
 
-enum class WallBlockKind { unit, header, through_stone, jamb, lintel, voussoir };
+enum class WallBlockKind { unit, header, through_stone, jamb, lintel, voussoir, apex };
 
 struct WallBlock {
   Polyhedron shape;  // world coordinates
@@ -119,17 +129,19 @@ struct WallBlock {
   int opening = -1;  // the opening whose head it is (lintel, voussoir), -1 otherwise
   // "<name>_course03_leaf1_unit4", "<name>_course03_unit4" (through the
   // wall), "..._piece1" for a piece beside or under an opening,
-  // "<name>_opening0_lintel", "<name>_opening0_voussoir3".
+  // "<name>_opening0_lintel", "<name>_opening0_voussoir3", "<name>_apex".
   std::string name;
 };
 
 struct WallModel {
   std::vector<WallBlock> blocks;  // course by course, unit by unit; head blocks after their lowest course
-  int n_courses = 0;
+  int n_courses = 0;         // up to `height`
+  int gable_courses = 0;     // above it, under the slopes (the apex stone not counted)
   double course_height = 0;
   double thickness = 0;
   // The solid the blocks fill: length·height·thickness minus the openings
-  // (an arch's opening bounded by its chords). The blocks' volumes sum to it.
+  // (an arch's opening bounded by its chords), plus the gable's triangle.
+  // The blocks' volumes sum to it.
   double solid_volume = 0;
   Mat3 rotation = Mat3::Identity();  // columns e_u, e_v, e_z
 };

@@ -20,7 +20,7 @@ using namespace deck_reader;
 constexpr std::string_view kWallKeys[] = {
     "name",    "origin",        "direction",      "start",           "end",          "length",
     "height",  "courses",       "unit_size",      "bond",            "leaves",       "through_every",
-    "density", "group_by",      "group",          "opening",         "opening.position", "opening.sill",
+    "density", "group_by",      "group",  "gable_height",          "opening",         "opening.position", "opening.sill",
     "opening.width", "opening.height", "opening.head", "opening.bearing", "opening.voussoirs", "opening.ring"};
 
 std::vector<std::string_view> table_keys() {
@@ -115,6 +115,7 @@ WallSection read_wall(const Deck& deck, const toml::table& t, std::size_t index)
     if (*n < 0 || *n > 1000) r.fail("through_every", "must be in [0, 1000] (got " + std::to_string(*n) + ")");
     s.through_every = static_cast<int>(*n);
   }
+  s.gable_height = r.number("gable_height", s.gable_height, Range::non_negative);
   out.density = r.number("density", out.density, Range::positive);
   out.group_by = r.choice<GroupBy>(
       "group_by", {{"course", GroupBy::course}, {"leaf", GroupBy::leaf}, {"kind", GroupBy::kind}, {"wall", GroupBy::wall}},

@@ -54,7 +54,7 @@ Polyhedron opening_prism(const WallSpec& s, const WallModel& m, const WallOpenin
 }
 
 double box_minus_openings(const WallSpec& s, double thickness) {
-  double area = s.length * s.height;
+  double area = s.length * s.height + 0.5 * s.length * s.gable_height;
   for (const auto& o : s.openings) {
     if (o.head == OpeningHead::lintel) {
       area -= o.width * o.height;
@@ -87,7 +87,7 @@ WallModel expect_exact_tiling(const WallSpec& s) {
       EXPECT_GE(x.y(), -0.5 * T - tol) << b.name;
       EXPECT_LE(x.y(), 0.5 * T + tol) << b.name;
       EXPECT_GE(x.z(), -tol) << b.name;
-      EXPECT_LE(x.z(), s.height + tol) << b.name;
+      EXPECT_LE(x.z(), s.height + s.gable_height * (1 - std::abs(2 * x.x() / s.length - 1)) + tol) << b.name;
     }
     for (std::size_t k = 0; k < holes.size(); ++k)
       EXPECT_FALSE(interiors_overlap(b.shape, holes[k], 1e-9)) << b.name << " is in opening " << k;
@@ -328,6 +328,27 @@ TEST(Wall, HeadAndSillBetweenBedJoints) {
   // 0.3 + 0.75 = 1.05, a quarter course above the joint at 1.0.
   s.openings = {WallOpening{.position = 0.9, .sill = 0.3, .width = 0.6, .height = 0.75}};
   expect_exact_tiling(s);
+}
+
+TEST(Wall, GableCoursesCutByTheSlopesUnderAnApexStone) {
+  for (WallBond bond : {WallBond::stretcher, WallBond::flemish}) {
+    WallSpec s = small_wall();
+    s.length = 3.0;
+    s.height = 1.2;
+    s.gable_height = 1.1;  // not a whole number of courses: the apex stone takes the rest
+    s.bond = bond;
+    s.openings = {WallOpening{.position = 1.2, .sill = 0.4, .width = 0.6, .height = 0.6}};
+    const WallModel m = expect_exact_tiling(s);
+    EXPECT_EQ(m.n_courses, 6);
+    // Gable courses while the gable is 1.5 units (0.6 m) wide at their bed:
+    // width 3 (1 - (z - 1.2)/1.1) >= 0.6 up to z = 2.08, so beds 1.2 .. 2.0.
+    EXPECT_EQ(m.gable_courses, 5);
+    const auto apex = std::find_if(m.blocks.begin(), m.blocks.end(), [](const WallBlock& b) { return b.kind == WallBlockKind::apex; });
+    ASSERT_NE(apex, m.blocks.end());
+    EXPECT_EQ(apex->name, "w_apex");
+    EXPECT_EQ(apex->shape.vertices.size(), 6u);  // a triangle through the wall
+    EXPECT_GE(shortest_piece(s, m), 0.25 * s.unit_length - 1e-12);
+  }
 }
 
 void expect_spec_error(const WallSpec& s, const std::string& field, int opening, const std::string& fragment) {

@@ -34,7 +34,8 @@ TEST_P(StructuresExample, ShortRunStaysPut) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Decks, StructuresExample,
-                         ::testing::Values("wall_gallery.toml", "tower_gallery.toml", "bell_tower.toml"),
+                         ::testing::Values("wall_gallery.toml", "tower_gallery.toml", "bell_tower.toml",
+                                           "gable_wall.toml"),
                          [](const auto& info) {
                            std::string n = info.param;
                            return n.substr(0, n.find('.'));
