@@ -33,6 +33,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <utility>
 #include <sstream>
 
 namespace polydem {
@@ -144,6 +145,14 @@ double bearing_of(const WallSpec& s, const WallOpening& o) {
 masonry::Opening opening_of(const WallSpec& s, const WallOpening& o, int courses, double ch) {
   return masonry::make_opening(o.position, o.sill, o.width, o.height, o.head == OpeningHead::arch, bearing_of(s, o),
                                o.voussoirs, courses, ch);
+}
+
+// Where course c starts and ends along u (a corner may shorten it).
+std::pair<double, double> course_ends(const WallSpec& s, int c) {
+  double a = 0, b = s.length;
+  for (const WallCorner& k : s.corners)
+    if (c < k.courses && c % 2 == k.parity) (k.at_end ? b : a) = k.at_end ? s.length - k.depth : k.depth;
+  return {a, b};
 }
 
 // The gable's courses and its apex stone (see wall.hpp), appended to m.
@@ -264,6 +273,17 @@ void validate_wall(const WallSpec& s) {
   require(s.openings.size() <= 64, "opening", -1, "at most 64 openings per wall");
 
   const double min_len = kSliver * s.unit_length;
+  double start_clear = 0, end_clear = 0;  // what corners take from the ends
+  for (const WallCorner& k : s.corners) {
+    require(s.bond == WallBond::stretcher, "bond", -1,
+            "cannot close a corner: a corner is built for stretcher bond walls (header, English and Flemish bonds "
+            "need closers at a quoin)");
+    require(std::isfinite(k.depth) && k.depth >= min_len * (1 - 1e-9) && k.depth <= 0.5 * s.length, "length", -1,
+            "a corner takes " + num(k.depth) + " m (the other wall's thickness) from the wall's " +
+                (k.at_end ? "end" : "start") + ": it must be between a quarter unit and half the length");
+    require(s.gable_height == 0, "gable_height", -1, "a wall with a corner has no gable here (not built)");
+    (k.at_end ? end_clear : start_clear) = k.depth;
+  }
   std::vector<masonry::Opening> done;
   for (std::size_t i = 0; i < s.openings.size(); ++i) {
     const WallOpening& o = s.openings[i];
@@ -285,15 +305,16 @@ void validate_wall(const WallSpec& s) {
               "a semicircular arch of width " + num(o.width) + " m rises " + num(0.5 * o.width) +
                   " m: height must be at least that (got " + num(o.height) + ")");
     }
-    require(o.position - e >= min_len * (1 - 1e-9), "position", k,
+    require(o.position - e >= start_clear + min_len * (1 - 1e-9), "position", k,
             "the opening and its head's " + std::string(e_key) + " (" + num(e) +
                 " m each side) must leave at least a quarter unit (" + num(min_len) +
-                " m) of wall before it: position must be at least " + num(e + min_len) + " (got " +
+                " m) of wall before it (after any corner): position must be at least " +
+                num(start_clear + e + min_len) + " (got " +
                 num(o.position) + ")");
-    require(o.position + o.width + e <= s.length - min_len * (1 - 1e-9), "width", k,
+    require(o.position + o.width + e <= s.length - end_clear - min_len * (1 - 1e-9), "width", k,
             "the opening and its head's " + std::string(e_key) + " reach u = " + num(o.position + o.width + e) +
                 ", leaving less than a quarter unit (" + num(min_len) + " m) of the wall (length " + num(s.length) +
-                ") after it");
+                ", less " + num(end_clear) + " m for a corner) after it");
     const masonry::Opening g = opening_of(s, o, courses, ch);
     for (const auto& problem : masonry::level_problems(g, o.height, ch, s.height))
       throw WallSpecError(problem.key, k, problem.what);
@@ -329,6 +350,9 @@ WallModel build_wall(const WallSpec& s) {
 
   std::vector<masonry::Opening> openings;
   m.solid_volume = L * s.height * T + 0.5 * L * s.gable_height * T;
+  for (const WallCorner& k : s.corners)
+    for (int c = 0; c < std::min(k.courses, m.n_courses); ++c)
+      if (c % 2 == k.parity) m.solid_volume -= k.depth * ch * T;
   for (const auto& o : s.openings) {
     openings.push_back(opening_of(s, o, m.n_courses, ch));
     m.solid_volume -= masonry::opening_area(openings.back()) * T;
@@ -349,7 +373,8 @@ WallModel build_wall(const WallSpec& s) {
 
   for (int c = 0; c < m.n_courses; ++c) {
     const double z0 = c * ch, z1 = c + 1 == m.n_courses ? s.height : (c + 1) * ch;
-    std::vector<Segment> segs = bond_segments(s, c, 0.0, L);
+    const auto [ca, cb] = course_ends(s, c);
+    std::vector<Segment> segs = bond_segments(s, c, ca, cb);
     // The joints the openings need in this course.
     for (const auto& g : openings)
       masonry::fit_course(segs, g, c, z0, z1, ch, min_len, tol, kind_id(WallBlockKind::jamb));

@@ -60,6 +60,12 @@
 // top of the gable is one apex stone, a triangle from the lowest bed joint at
 // which the gable is less than 1.5 units wide. Openings stay below `height`.
 //
+// Corners: two stretcher bond walls of the same course height meet at a
+// right angle with one wall's units running through the corner square in
+// even courses and the other's in odd ones (WallCorner): the quoins
+// interlock course by course. The other bonds would need closers to turn a
+// corner and are refused.
+//
 // Sizes and the rules above are checked by validate_wall(): each failure is
 // a WallSpecError naming the WallSpec field (= the [[wall]] deck key) and,
 // for an opening, its index. No CGAL here; wall.cpp uses it through
@@ -87,6 +93,18 @@ struct WallOpening {
   double ring = 0;      // arch: extent of the voussoirs beyond each jamb; 0 = half a unit length
 };
 
+// Where another wall meets this one at a right angle (a corner or return):
+// in the courses below `courses` whose parity is `parity` (0 even, 1 odd),
+// this wall stops `depth` short of its start or end, where the other wall's
+// units run through the corner. Set by the deck reader for both walls of a
+// corner (io/wall_section.cpp), so that they interlock course by course.
+struct WallCorner {
+  bool at_end = true;
+  double depth = 0;   // the other wall's thickness
+  int parity = 1;
+  int courses = 0;
+};
+
 struct WallSpec {
   std::string name = "wall";         // prefix of every block's name
   Vec3 origin = Vec3::Zero();        // world point of (u, v, z) = 0: the start of the centre line at the base
@@ -104,6 +122,7 @@ struct WallSpec {
   // gable_height at its middle, the courses cut by the two slopes; 0 = none.
   double gable_height = 0;
   std::vector<WallOpening> openings;
+  std::vector<WallCorner> corners;   // at most one per end
 };
 
 // An invalid WallSpec: `field` is the WallSpec (or WallOpening) member =

@@ -20,7 +20,7 @@ using namespace deck_reader;
 constexpr std::string_view kWallKeys[] = {
     "name",    "origin",        "direction",      "start",           "end",          "length",
     "height",  "courses",       "unit_size",      "bond",            "leaves",       "through_every",
-    "density", "group_by",      "group",  "gable_height",          "opening",         "opening.position", "opening.sill",
+    "density", "group_by",      "group",  "gable_height", "corner_with", "corner_at", "turn",          "opening",         "opening.position", "opening.sill",
     "opening.width", "opening.height", "opening.head", "opening.bearing", "opening.voussoirs", "opening.ring"};
 
 std::vector<std::string_view> table_keys() {
@@ -47,6 +47,12 @@ struct WallSection {
   std::string group_prefix;
   int line = 0;
   const toml::table* table = nullptr;
+  std::string path;                  // "wall[2]"
+  std::vector<TableReader> readers;  // [0]: the wall's, then its openings'
+  // A corner with an earlier wall: its name, at its end or start, turning left or right.
+  std::string corner_with;
+  bool corner_at_end = true;
+  bool turn_left = true;
 };
 
 std::string two_digits(int v) {
@@ -57,9 +63,16 @@ std::string two_digits(int v) {
 
 WallSection read_wall(const Deck& deck, const toml::table& t, std::size_t index) {
   const std::string path = indexed("wall", index + 1);
-  const std::vector<std::string_view> keys = table_keys();
-  const TableReader r(deck, t, path, keys);
+  static const std::vector<std::string_view> keys = table_keys();
   WallSection out;
+  out.path = path;
+  // The openings' readers go after the wall's: room for all of them first,
+  // so that `r` below stays valid.
+  const toml::node* openings_node = t.get("opening");
+  const auto* openings_array = openings_node ? openings_node->as_array() : nullptr;
+  out.readers.reserve(1 + (openings_array ? openings_array->size() : 0));
+  out.readers.emplace_back(deck, t, path, keys);
+  const TableReader& r = out.readers.front();
   out.line = r.line();
   out.table = &t;
   WallSpec& s = out.spec;
@@ -67,8 +80,18 @@ WallSection read_wall(const Deck& deck, const toml::table& t, std::size_t index)
   if (s.name.empty() || s.name.find_first_of(" \t\n\"") != std::string::npos)
     r.fail("name", "must be a non-empty name without spaces or quotes (it starts every block's name)");
 
-  // Where the wall stands: origin + direction + length, or start + end.
-  if (r.has("start") || r.has("end")) {
+  // Where the wall stands: origin + direction + length, start + end, or at
+  // a corner of an earlier wall (placed by read_wall_sections).
+  if (r.has("corner_with")) {
+    for (const char* k : {"origin", "direction", "start", "end"})
+      if (r.has(k)) r.fail(k, "a wall at a corner (corner_with) is placed by the wall it meets: give only its length");
+    out.corner_with = *r.string("corner_with");
+    out.corner_at_end = r.choice<bool>("corner_at", {{"end", true}, {"start", false}}, true);
+    out.turn_left = r.choice<bool>("turn", {{"left", true}, {"right", false}}, true);
+    s.length = r.number("length", s.length, Range::positive);
+  } else if (r.has("corner_at") || r.has("turn")) {
+    r.fail(r.has("corner_at") ? "corner_at" : "turn", "applies with corner_with only");
+  } else if (r.has("start") || r.has("end")) {
     for (const char* k : {"origin", "direction", "length"})
       if (r.has(k)) r.fail(k, "give either start and end, or origin, direction and length");
     if (!r.has("start")) r.missing("start", "end is given: the wall runs from start to end");
@@ -135,11 +158,11 @@ WallSection read_wall(const Deck& deck, const toml::table& t, std::size_t index)
       opening_tables.push_back(ot);
     }
   }
-  const std::vector<std::string_view> okeys = opening_keys();
-  std::vector<TableReader> opening_readers;
+  static const std::vector<std::string_view> okeys = opening_keys();
+  const std::string opening_path = r.key_path("opening");
   for (std::size_t i = 0; i < opening_tables.size(); ++i) {
-    opening_readers.emplace_back(deck, *opening_tables[i], indexed(r.key_path("opening"), i + 1), okeys);
-    const TableReader& o = opening_readers.back();
+    out.readers.emplace_back(deck, *opening_tables[i], indexed(opening_path, i + 1), okeys);
+    const TableReader& o = out.readers.back();
     WallOpening op;
     for (const char* k : {"position", "width", "height"})
       if (!o.has(k)) o.missing(k, "an opening needs position, width and height");
@@ -163,21 +186,55 @@ WallSection read_wall(const Deck& deck, const toml::table& t, std::size_t index)
     s.openings.push_back(op);
   }
 
+  return out;
+}
+
+void build_section(const Deck& deck, WallSection& w) {
+  const TableReader& r = w.readers.front();
   try {
-    out.model = build_wall(s);
+    w.model = build_wall(w.spec);
   } catch (const WallSpecError& e) {
     std::string key = e.field;
     if (key == "unit_length" || key == "unit_height" || key == "unit_width") key = "unit_size";
-    if (e.opening >= 0) opening_readers[static_cast<std::size_t>(e.opening)].fail(key, e.detail);
+    if (e.opening >= 0) w.readers[static_cast<std::size_t>(e.opening) + 1].fail(key, e.detail);
     if (key == "length" && !r.has("length") && r.has("end")) key = "end";
     if (key == "height" && !r.has("height") && r.has("courses")) key = "courses";
     r.fail(key, e.detail);
   } catch (const GeometryError& e) {
-    deck.fail(path, &t, std::string("cannot build the wall: ") + e.what());
+    deck.fail(w.path, w.table, std::string("cannot build the wall: ") + e.what());
   }
-  return out;
 }
 
+// Wall b at a corner of the earlier wall a: b's frame from a's, and the
+// corner's cuts on both (geometry/wall.hpp, WallCorner).
+void place_at_corner(WallSection& b, WallSection& a) {
+  const TableReader& r = b.readers.front();
+  WallSpec& A = a.spec;
+  WallSpec& B = b.spec;
+  if (A.bond != WallBond::stretcher || B.bond != WallBond::stretcher)
+    r.fail("corner_with", "bonds that cannot close a corner: a corner is built between stretcher bond walls (" +
+                              in_quotes(A.name) + " and this one); header, English and Flemish bonds need closers");
+  const int na = A.courses > 0 ? A.courses : std::max(1, static_cast<int>(std::lround(A.height / A.unit_height)));
+  const int nb = B.courses > 0 ? B.courses : std::max(1, static_cast<int>(std::lround(B.height / B.unit_height)));
+  const double cha = A.height / na, chb = B.height / nb;
+  if (std::abs(cha - chb) > 1e-9 * cha)
+    r.fail("corner_with", "the courses cannot interlock: course height " + format_number(chb) + " m here, " +
+                              format_number(cha) + " m in " + in_quotes(A.name));
+  for (const WallCorner& k : A.corners)
+    if (k.at_end == b.corner_at_end)
+      r.fail("corner_at", std::string("wall ") + in_quotes(A.name) + " already has a corner at its " +
+                              (b.corner_at_end ? "end" : "start"));
+  const double ta = wall_thickness(A), tb = wall_thickness(B);
+  const double th = A.direction * std::numbers::pi / 180.0;
+  const Vec3 eu(std::cos(th), std::sin(th), 0), ev(-std::sin(th), std::cos(th), 0);
+  const double along = b.corner_at_end ? A.length - 0.5 * tb : 0.5 * tb;
+  B.origin = A.origin + along * eu + (b.turn_left ? -0.5 : 0.5) * ta * ev;
+  B.direction = A.direction + (b.turn_left ? 90.0 : -90.0);
+  const int shared = std::min(na, nb);
+  // a's units run through the corner in even courses, b's in odd ones.
+  A.corners.push_back({b.corner_at_end, tb, 1, shared});
+  B.corners.push_back({false, ta, 0, shared});
+}
 std::string group_of(const WallSection& w, const WallBlock& b) {
   std::string g = w.group_prefix;
   switch (w.group_by) {
@@ -194,6 +251,13 @@ void read_wall_sections(const Deck& deck, Generated& out, SceneSpec&) {
   std::vector<WallSection> walls;
   for (std::size_t i = 0; i < tables.size(); ++i) {
     WallSection w = read_wall(deck, *tables[i], i);
+    if (!w.corner_with.empty()) {
+      std::size_t j = 0;
+      while (j < walls.size() && walls[j].spec.name != w.corner_with) ++j;
+      if (j == walls.size())
+        w.readers.front().fail("corner_with", "no [[wall]] above this one is named " + in_quotes(w.corner_with));
+      place_at_corner(w, walls[j]);
+    }
     for (std::size_t j = 0; j < walls.size(); ++j)
       if (walls[j].spec.name == w.spec.name) {
         const toml::node* at = tables[i]->get("name");
@@ -204,6 +268,7 @@ void read_wall_sections(const Deck& deck, Generated& out, SceneSpec&) {
       }
     walls.push_back(std::move(w));
   }
+  for (WallSection& w : walls) build_section(deck, w);
   for (std::size_t i = 0; i < walls.size(); ++i) {
     const WallSection& w = walls[i];
     Generated::Part part;

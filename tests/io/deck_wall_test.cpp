@@ -108,6 +108,80 @@ TEST(DeckWall, TwoWallsWithOpeningsAndGroups) {
   EXPECT_EQ(std::count_if(s.blocks.begin(), s.blocks.end(), [](const BlockSpec& b) { return b.name == "front_opening0_lintel"; }), 1);
 }
 
+// Two stretcher bond walls meeting at a right angle (corner_with): no two
+// blocks overlap, the volumes sum to the L-shaped plan's times the height,
+// and the corner square belongs to the first wall's units in even courses
+// and to the second's in odd ones.
+TEST(DeckWall, CornerInterlocksCourseByCourse) {
+  const std::string deck = R"([[wall]]
+name = "a"
+origin = [0, 0, 0]
+direction = 0
+length = 2.0
+height = 1.0
+leaves = 2
+
+[[wall]]
+name = "b"
+corner_with = "a"
+corner_at = "end"
+turn = "left"
+length = 1.6
+height = 1.0
+)";
+  const SceneSpec s = parse_deck(deck, kFile);
+  double volume = 0;
+  for (const auto& b : s.blocks) volume += mass_properties(b.shape).volume;
+  // a: 2.0 x 0.4 in plan; b: 1.6 x 0.2 from a's outer face (y = -0.2), its
+  // corner square 0.2 x 0.4 shared: 0.8 + 0.32 - 0.08 = 1.04 m², 1 m high.
+  EXPECT_NEAR(volume, 1.04, 1e-12);
+  // The corner square: x in [1.8, 2.0], y in [-0.2, 0.2].
+  const Vec3 probe(1.9, 0.0, 0.0);
+  for (int c = 0; c < 5; ++c) {
+    int owners = 0;
+    for (const auto& b : s.blocks) {
+      const Vec3 p = probe + Vec3(0, 0.1 * (b.name.find("leaf1") != std::string::npos ? 1 : -1), 0.2 * c + 0.1);
+      bool inside = true;
+      for (std::size_t f = 0; f < b.shape.faces.size(); ++f)
+        inside = inside && b.shape.normals[f].dot(p) < b.shape.offsets[f] - 1e-9;
+      if (!inside) continue;
+      ++owners;
+      EXPECT_EQ(b.name.substr(0, 2), c % 2 == 0 ? "a_" : "b_") << "course " << c << ": " << b.name;
+    }
+    EXPECT_GE(owners, 1) << "course " << c;
+  }
+  // No overlaps: every pair whose boxes meet is separated along a face normal
+  // of one of them (boxes in the walls' frames).
+  for (std::size_t i = 0; i < s.blocks.size(); ++i)
+    for (std::size_t j = i + 1; j < s.blocks.size(); ++j) {
+      bool apart = false;
+      for (const auto* p : {&s.blocks[i].shape, &s.blocks[j].shape})
+        for (const auto& n : p->normals) {
+          double a0 = 1e300, a1 = -1e300, b0 = 1e300, b1 = -1e300;
+          for (const auto& v : s.blocks[i].shape.vertices) a0 = std::min(a0, n.dot(v)), a1 = std::max(a1, n.dot(v));
+          for (const auto& v : s.blocks[j].shape.vertices) b0 = std::min(b0, n.dot(v)), b1 = std::max(b1, n.dot(v));
+          apart = apart || a1 <= b0 + 1e-9 || b1 <= a0 + 1e-9;
+        }
+      EXPECT_TRUE(apart) << s.blocks[i].name << " overlaps " << s.blocks[j].name;
+    }
+}
+
+TEST(DeckWall, CornersThatCannotCloseAreRefused) {
+  const std::string a = "[[wall]]\nname = \"a\"\nlength = 2.0\nheight = 1.0\n";
+  expect_error(a + "[[wall]]\ncorner_with = \"z\"\n", 6, "wall[2].corner_with", "no [[wall]] above");
+  expect_error(a + "bond = \"english\"\n[[wall]]\ncorner_with = \"a\"\n", 7, "wall[2].corner_with",
+               "cannot close a corner");
+  expect_error(a + "[[wall]]\ncorner_with = \"a\"\nheight = 1.0\nunit_size = [0.4, 0.25, 0.2]\n", 6,
+               "wall[2].corner_with", "cannot interlock");
+  expect_error(a + "[[wall]]\ncorner_with = \"a\"\norigin = [0, 0, 0]\n", 7, "wall[2].origin", "placed by");
+  expect_error(a + "[[wall]]\nname = \"b\"\ncorner_with = \"a\"\nheight = 1.0\n[[wall]]\ncorner_with = \"a\"\nheight = 1.0\n", 9,
+               "wall[3].corner_at", "already has a corner");
+  expect_error(a + "[[wall]]\nturn = \"left\"\n", 6, "wall[2].turn", "with corner_with only");
+  // An opening too close to the corner.
+  expect_error(a + "[[wall.opening]]\nposition = 0.6\nwidth = 1.0\nheight = 0.4\n[[wall]]\ncorner_with = \"a\"\nheight = 1.0\n",
+               7, "wall[1].opening[1].width", "for a corner");
+}
+
 TEST(DeckWall, GroupByLeafAndWall) {
   const std::string base = "[[wall]]\nname = \"w\"\nlength = 2.0\nheight = 0.4\nleaves = 2\nthrough_every = 2\n";
   const SceneSpec by_leaf = parse_deck(base + "group_by = \"leaf\"\n", kFile);
