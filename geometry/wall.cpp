@@ -25,6 +25,12 @@
 // (CGAL, exact predicates). Boxes are built in the wall frame with
 // coordinates computed once per joint, so neighbours share their faces
 // exactly before the rigid motion to the world.
+//
+// A corner shortens the courses of one parity at one end (course_ends); a
+// gable's courses are the bond's segments between the slopes' crossings of
+// their bed, each unit's (u, z) rectangle cut by the slopes (2D clipping,
+// the corners on the slopes computed from the same formula by both
+// neighbours) and extruded through the wall.
 #include "geometry/wall.hpp"
 
 #include "geometry/coursed_openings.hpp"
