@@ -320,7 +320,7 @@ void validate_wall(const WallSpec& s) {
     require(o.position + o.width + e <= s.length - end_clear - min_len * (1 - 1e-9), "width", k,
             "the opening and its head's " + std::string(e_key) + " reach u = " + num(o.position + o.width + e) +
                 ", leaving less than a quarter unit (" + num(min_len) + " m) of the wall (length " + num(s.length) +
-                ", less " + num(end_clear) + " m for a corner) after it");
+                (end_clear > 0 ? ", less " + num(end_clear) + " m for a corner" : std::string()) + ") after it");
     const masonry::Opening g = opening_of(s, o, courses, ch);
     for (const auto& problem : masonry::level_problems(g, o.height, ch, s.height))
       throw WallSpecError(problem.key, k, problem.what);
