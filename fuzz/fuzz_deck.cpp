@@ -59,7 +59,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // A deck that passes is trusted downstream (io/deck.cpp: "a deck that
     // passes here is trusted downstream"): check what the engine relies on.
     // A violation aborts with a message, so libFuzzer saves the input.
-    if (spec.blocks.empty()) broken("no blocks");  // "a deck needs at least one [[block]] (or a [spire])"
+    if (spec.blocks.empty()) broken("no blocks");  // "a deck needs at least one [[block]] (or a generator)"
     for (const auto& b : spec.blocks) {
       if (!(b.density > 0) || !std::isfinite(b.density)) broken("a density not positive and finite");
       const auto& s = b.shape;

@@ -340,7 +340,7 @@ BlockSpec read_block(const Deck& deck, const toml::table& t, std::size_t number)
 std::vector<BlockSpec> read_blocks(const Deck& deck, bool generated) {
   const auto tables = section_tables(deck, "block");
   if (tables.empty() && !generated)
-    deck.fail("block", &deck.root(), "missing: a deck needs at least one [[block]] (or a [spire])");
+    deck.fail("block", &deck.root(), "missing: a deck needs at least one [[block]] (or a generator: [spire], [[wall]], [[tower]])");
   std::vector<BlockSpec> blocks;
   for (std::size_t i = 0; i < tables.size(); ++i) {
     BlockSpec b = read_block(deck, *tables[i], i + 1);

@@ -7,7 +7,7 @@ namespace polydem {
 using namespace deck_reader;
 
 std::span<const GeneratorSection> generator_sections() {
-  static const GeneratorSection sections[] = {kSpireSection, kArchSection, kColumnSection, kImportSection};
+  static const GeneratorSection sections[] = {kSpireSection, kWallSection, kTowerSection, kArchSection, kColumnSection, kImportSection};
   return sections;
 }
 

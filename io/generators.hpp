@@ -1,6 +1,7 @@
-// Deck sections that generate blocks: today [spire] (io/spire_section.cpp);
-// walls, arches, columns and towers join here. The deck reader knows them
-// only through this table: each has a section name, the keys it accepts
+// Deck sections that generate blocks: [spire] (io/spire_section.cpp),
+// [[wall]] (io/wall_section.cpp) and [[tower]] (io/tower_section.cpp);
+// arches and columns join here. The deck reader knows them only through
+// this table: each has a section name, the keys it accepts
 // (checked like every section's, listed by deck_keys()), and a reader that
 // adds its blocks to a Generated part (and may set the joints' defaults from
 // its materials, and its own fields of the SceneSpec).
@@ -52,6 +53,10 @@ void append_generated_blocks(const deck_reader::Deck& deck, const Generated& gen
 
 // [spire] (io/spire_section.cpp).
 extern const GeneratorSection kSpireSection;
+// [[wall]] (io/wall_section.cpp).
+extern const GeneratorSection kWallSection;
+// [[tower]] (io/tower_section.cpp).
+extern const GeneratorSection kTowerSection;
 // [[arch]] (io/arch_section.cpp).
 extern const GeneratorSection kArchSection;
 // [[column]] (io/column_section.cpp).

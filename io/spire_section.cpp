@@ -18,7 +18,7 @@ constexpr std::string_view kSpireKeys[] = {
     "window_faces",     "window_sill",           "window_width",        "window_head",
     "window_head_shape", "window_arch_segments", "base_thickness",      "base_apothem",        "base_motion",
     "density",          "stone_youngs_modulus",  "mortar_youngs_modulus", "mortar_thickness",
-    "shear_stiffness_ratio"};
+    "shear_stiffness_ratio", "origin"};
 
 struct SpireSection {
   SpireSpec spec;
@@ -26,6 +26,7 @@ struct SpireSection {
   JointDefaults joint;
   double density = 2600.0;
   BlockMotion base_motion = BlockMotion::fixed;
+  Vec3 origin = Vec3::Zero();  // where the spire's frame origin (the axis at the bed of course 0) stands
   int line = 0;
 };
 
@@ -87,6 +88,7 @@ std::optional<SpireSection> read_spire(const Deck& deck) {
   if (r.has("base_motion") && s.base_thickness == 0)
     r.fail("base_motion", "there is no base block (base_thickness = 0)");
   out.density = r.number("density", out.density, Range::positive);
+  out.origin = r.vec3("origin").value_or(out.origin);
 
   try {
     out.model = build_spire(s);
@@ -126,7 +128,7 @@ void read_spire_section(const Deck& deck, Generated& out, SceneSpec& scene) {
   for (const auto& sb : spire->model.blocks) {
     BlockSpec b;
     b.name = sb.name;
-    b.shape = sb.shape;
+    b.shape = spire->origin.isZero() ? sb.shape : transformed(sb.shape, Mat3::Identity(), spire->origin);
     b.density = spire->density;
     b.motion = sb.kind == SpireBlockKind::base ? spire->base_motion : BlockMotion::free;
     b.course = sb.course;

@@ -78,16 +78,28 @@ void load_loop(ByteReader& r, RunReport& rep, Recorder& rec, LoopState& s, std::
 // blocks at rest have not settled under the run's loads, only under part of
 // them (a slow rise starts at rest); infinite for a ramp, which never ends.
 double loads_final_time(const SceneSpec& spec) {
-  const GroundMotionSpec& g = spec.ground_motion;
-  double t = spec.simulation.gravity_rise_time;
-  switch (g.kind) {
-    case GroundMotionKind::none: break;
-    case GroundMotionKind::constant: t = std::max(t, g.start_time + g.rise_time); break;
-    case GroundMotionKind::sine_pulse: t = std::max(t, g.start_time + g.period); break;
-    case GroundMotionKind::record:
-      t = std::max(t, g.start_time + (g.record_time.empty() ? 0.0 : g.record_time.back()));
-      break;
-    case GroundMotionKind::ramp: t = std::numeric_limits<double>::infinity(); break;
+  const auto motion_final = [](const GroundMotionSpec& g) {
+    switch (g.kind) {
+      case GroundMotionKind::none: return 0.0;
+      case GroundMotionKind::constant: return g.start_time + g.rise_time;
+      case GroundMotionKind::sine_pulse: return g.start_time + g.period;
+      case GroundMotionKind::record: return g.start_time + (g.record_time.empty() ? 0.0 : g.record_time.back());
+      case GroundMotionKind::ramp: return std::numeric_limits<double>::infinity();
+    }
+    return 0.0;
+  };
+  double t = std::max(spec.simulation.gravity_rise_time, motion_final(spec.ground_motion));
+  for (const GroundMotionSpec& c : spec.ground_motion.components) t = std::max(t, motion_final(c));
+  // [[load]] tables end at their last time; [[prescribe]] tables too, and a
+  // block pushed at a constant velocity never lets the others come to rest.
+  for (const LoadSpec& l : spec.loads)
+    if (!l.factor.empty()) t = std::max(t, l.factor.time.back());
+  for (const PrescribeSpec& p : spec.prescribed) {
+    if (!p.velocity_table.empty()) t = std::max(t, p.velocity_table.time.back());
+    if (!p.displacement_table.empty()) t = std::max(t, p.displacement_table.time.back());
+    if (p.velocity_table.empty() && p.displacement_table.empty() &&
+        (p.velocity.norm() > 0 || p.angular_velocity.norm() > 0))
+      t = std::numeric_limits<double>::infinity();
   }
   return t;
 }

@@ -174,6 +174,28 @@ TEST_F(RunCommandTest, NegativeDensityIsRejectedWithFileLineAndKey) {
   expect_nothing_written();
 }
 
+// A generated wall whose window does not fit (issue 13): refused naming the
+// opening's key, and nothing written.
+TEST_F(RunCommandTest, WallOpeningThatDoesNotFitIsRejectedAndNothingWritten) {
+  const std::string deck = kDeck + std::string(R"(
+[[wall]]
+name = "w"
+origin = [3.0, 0.0, 0.0]
+length = 2.0
+height = 1.6
+
+[[wall.opening]]
+position = 0.7
+width = 1.2
+height = 0.6
+)");
+  EXPECT_EQ(run(deck), exit_bad_input);
+  const std::string where = deck_.string() + ":" + std::to_string(line_of(deck, "width = 1.2"));
+  EXPECT_NE(err_.find(where), std::string::npos) << err_;
+  EXPECT_NE(err_.find("wall[1].opening[1].width"), std::string::npos) << err_;
+  expect_nothing_written();
+}
+
 TEST_F(RunCommandTest, OverlappingBlocksAreRejected) {
   // The stone sunk 0.1 m into the base.
   const std::string deck = replace_once(kDeck, "center = [0.0, 0.0, 0.5]", "center = [0.0, 0.0, 0.4]");

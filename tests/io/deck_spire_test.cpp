@@ -225,7 +225,7 @@ TEST(DeckSpire, BadKeysNameFileLineAndKey) {
   expect_error("[spire]\ndensity = 0\n", 2, "spire.density", "must be > 0");
   expect_error("[spire]\nshear_stiffness_ratio = -1\n", 2, "spire.shear_stiffness_ratio", "must be > 0");
   expect_error("spire = 3\n", 1, "spire", "must be a table");
-  expect_error("[simulation]\nend_time = 1\n", 1, "block", "(or a [spire])");
+  expect_error("[simulation]\nend_time = 1\n", 1, "block", "(or a generator: [spire], [[wall]], [[tower]])");
 }
 
 TEST(DeckSpire, ExampleDeckReads) {
