@@ -61,8 +61,9 @@ namespace {
 
 template <class StiffnessOf>
 CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const StiffnessOf& stiffness_of,
-                           const JointSpec& joint, double safety_factor) {
+                           const JointSpec& joint, double safety_factor, std::vector<double>* per_block = nullptr) {
   CriticalStep out;
+  if (per_block) per_block->assign(static_cast<std::size_t>(b.count), 0.0);
   const auto& sub = contacts.sub;
   for (int i : b.free_blocks) {
     Mat6 K = Mat6::Zero();
@@ -79,6 +80,7 @@ CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const St
       add_point(K, D, r, 1.0);
     }
     keep_highest(out, b, i, K);
+    if (per_block) (*per_block)[i] = std::sqrt(block_omega_squared(b, i, K));
   }
   finish(out, joint, safety_factor);
   return out;
@@ -154,6 +156,19 @@ std::vector<double> block_frequencies(const Blocks& b, const JointSpec& joint) {
   std::vector<double> w(static_cast<std::size_t>(b.count), 0.0);
   for (int i : b.free_blocks)
     w[i] = std::sqrt(block_omega_squared(b, i, all_faces_stiffness(b, i, joint.normal_stiffness, joint.shear_stiffness)));
+  return w;
+}
+
+std::vector<double> block_frequencies_from_contacts(const Blocks& b, const ContactSet& contacts, const JointLaws& laws) {
+  std::vector<double> w;
+  const auto& sub = contacts.sub;
+  from_contacts(
+      b, contacts,
+      [&](int s) {
+        const JointLaw& law = laws.single() ? laws.laws[0] : laws.between(sub.ref_block[s], sub.inc_block[s]);
+        return std::pair<double, double>{law.kn, law.ks};
+      },
+      JointSpec{}, 1.0, &w);
   return w;
 }
 

@@ -56,4 +56,12 @@ CriticalStep critical_time_step_from_contacts(const Blocks& blocks, const Contac
 CriticalStep critical_time_step_from_contacts(const Blocks& blocks, const ContactSet& contacts, const JointLaws& laws,
                                               const JointSpec& stiffest, double safety_factor);
 
+// Each free block's ω_b on the joints it has now (the subcontacts of the
+// last detection, each law's kn and ks; 0 for blocks without joints). A
+// block's subcontacts can be stiffer than its all-faces bound (a face's
+// corners carry a quarter of it each: rocking on them is 3 times stiffer than
+// on the spread face), so density scaling takes the larger of the two.
+std::vector<double> block_frequencies_from_contacts(const Blocks& blocks, const ContactSet& contacts,
+                                                    const JointLaws& laws);
+
 }  // namespace polydem

@@ -177,7 +177,8 @@ void Simulation::step() {
   profile_.joint_law += seconds(t1, t2);
   profile_.gather_update += seconds(t2, t3);
   ++profile_.steps;
-  if (big) {
+  // A sample only if the step could run in parallel after its detection too.
+  if (big && (contacts_.sub.size() >= parallel_threshold_ || 16 * blocks_.free_blocks.size() >= parallel_threshold_)) {
     record_step(governor_, seconds(t1, t3), steps_);
     profile_.thread_probes = governor_.probes;
     profile_.thread_switches = governor_.switches;
@@ -323,9 +324,15 @@ void Simulation::begin_static_stage(double local_damping, const Vec3& load, bool
   scaled_inv_mass_.clear();
   scaled_inv_inertia_.clear();
   if (!density_scaling) return;
-  const std::vector<double> w = block_frequencies(blocks_, joint_);
+  // Each block's highest frequency, on all its faces or on the joints it
+  // has now, whichever is higher; the step was chosen for the highest of all.
+  std::vector<double> w = block_frequencies(blocks_, step_joint_);
+  const std::vector<double> wc = block_frequencies_from_contacts(blocks_, contacts_, laws_);
   double top = 0;
-  for (int i : blocks_.free_blocks) top = std::max(top, w[i]);
+  for (int i : blocks_.free_blocks) {
+    w[i] = std::max(w[i], wc[i]);
+    top = std::max(top, w[i]);
+  }
   scaled_inv_mass_ = blocks_.props.inv_mass;
   scaled_inv_inertia_ = blocks_.props.inv_principal_inertia;
   if (!(top > 0)) return;

@@ -103,6 +103,8 @@ class Simulation {
     governor_.shortest_interval = governor_.interval = shortest_interval;
     governor_.longest_interval = longest_interval;
     governor_.probe_steps = probe_steps;
+    governor_.many_times.reserve(static_cast<std::size_t>(probe_steps));
+    governor_.one_times.reserve(static_cast<std::size_t>(probe_steps));
   }
   const ThreadGovernor& thread_governor() const { return governor_; }
 

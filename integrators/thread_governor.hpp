@@ -11,8 +11,9 @@
 //
 // How: the step times itself (it does already, for the profile). Now and
 // then the governor probes: it times `probe_steps` steps on all the threads
-// and as many on one, and keeps the faster (the median step of each, steps
-// with a detection left out: they are longer for another reason). The probes
+// and as many on one, and keeps the faster (the median step of each,
+// timed without its detection, which is longer for another reason; steps
+// too small to run in parallel are not samples). The probes
 // start after `first_probe` steps; when a probe confirms the choice, the
 // wait to the next doubles (up to `longest_interval`), when it changes it the
 // wait starts short again, so a competitor that comes or goes is noticed in

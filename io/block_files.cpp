@@ -399,7 +399,11 @@ BlockFile parse_ply(std::string_view bytes, const std::string& path) {
     }
     if (is_vertex && (ix < 0 || iy < 0 || iz < 0)) fail_at(path, 0, "the vertex element has no x, y, z properties");
     if (is_face && ilist < 0) fail_at(path, 0, "the face element has no vertex_indices list");
-    // Every instance takes at least one byte (binary) or two (ASCII).
+    // Every instance takes at least one byte (binary) or two (ASCII) — if
+    // it has a property: an element without any would let a header line ask
+    // for any number of empty instances (a hostile file's endless loop).
+    if (e.properties.empty() && e.count > 0)
+      fail_at(path, 0, "element '" + e.name + "' has " + std::to_string(e.count) + " entries but no properties");
     if (static_cast<unsigned long long>(e.count) > body.left())
       body.fail("element '" + e.name + "' declares " + std::to_string(e.count) + " entries, more than the data holds");
     have_vertices = have_vertices || is_vertex;
@@ -688,10 +692,12 @@ Polyhedron part_block(const BlockFile& file, std::size_t index, double convex_re
     fail("has " + std::to_string(part.vertices.size()) + " vertices and " + std::to_string(nf) +
          " faces: a closed solid needs at least 4 of each");
   for (std::size_t f = 0; f < nf; ++f) {
-    const auto& loop = part.faces[f];
-    for (std::size_t k = 0; k < loop.size(); ++k)
-      for (std::size_t l = 0; l < k; ++l)
-        if (loop[k] == loop[l]) fail("face at " + part.face_where[f] + " visits vertex " + vid(loop[k]) + " twice");
+    // Sorted copy: a face of n corners costs n log n, not n² (a hostile file
+    // may have one face of a million corners).
+    std::vector<int> sorted = part.faces[f];
+    std::sort(sorted.begin(), sorted.end());
+    const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
+    if (twice != sorted.end()) fail("face at " + part.face_where[f] + " visits vertex " + vid(*twice) + " twice");
   }
   // Closed: every undirected edge in exactly two faces.
   std::map<std::pair<int, int>, std::vector<std::size_t>> edge_faces;

@@ -43,6 +43,7 @@ void read_one_column(const Deck& deck, const toml::table& t, std::size_t number,
   if (const toml::node* n = t.get("drum_heights")) {
     const auto* arr = n->as_array();
     if (!arr) r.fail("drum_heights", "must be an array of heights, one per drum, bottom up (got " + describe(*n) + ")");
+    if (arr->empty()) r.fail("drum_heights", "must list at least one drum's height (or give height)");
     for (std::size_t i = 0; i < arr->size(); ++i) {
       const toml::node& e = *arr->get(i);
       const std::string p = indexed(r.key_path("drum_heights"), i + 1);

@@ -7,6 +7,7 @@
 #include "geometry/cut.hpp"
 #include "io/block_files.hpp"
 
+#include <limits>
 #include <algorithm>
 #include <filesystem>
 #include <numbers>

@@ -45,6 +45,7 @@ ThinnestStanding thinnest_standing(const std::function<SceneSpec(double)>& scene
   r.stands = stands;
   while (std::abs(r.stands - r.falls) > tolerance) {
     const double mid = 0.5 * (r.falls + r.stands);
+    if (mid == r.falls || mid == r.stands) break;  // the bracket is as narrow as doubles allow
     (trial(mid) ? r.stands : r.falls) = mid;
   }
   return r;

@@ -217,6 +217,7 @@ TEST(DeckColumn, BadKeysNameFileLineAndKey) {
   expect_error("[[column]]\nheight = 2\ndrum_heights = [1, 1]\n", 3, "column[1].drum_heights", "not both");
   expect_error("[[column]]\ndrums = 3\ndrum_heights = [1, 1]\n", 3, "column[1].drum_heights", "one height per drum");
   expect_error("[[column]]\ndrum_heights = [1, -1]\n", 2, "column[1].drum_heights[2]", "must be > 0");
+  expect_error("[[column]]\ndrum_heights = []\n", 2, "column[1].drum_heights", "at least one");
   expect_error("[[column]]\ncapital = \"ionic\"\n", 2, "column[1].capital", "\"abacus\"");
   expect_error("[[column]]\ncapital_height = 0.3\n", 2, "column[1].capital_height", "no capital");
   expect_error("[[column]]\nplinth_height = 0.2\nplinth_width = 0.3\n", 3, "column[1].plinth_width",

@@ -251,6 +251,28 @@ TEST(Equilibrium, DensityScalingReachesTheSameStateInFewerSteps) {
   }
 }
 
+// Density scaling on blocks held on two faces (a stack of three 1 m cubes
+// beside a 5 cm one that sets the step): the stage must stay stable where a
+// block's joints are stiffer than its all-faces bound alone would say, and
+// each joint settles by the weight above it, w = n·ρ·g·h/kn.
+TEST(Equilibrium, DensityScalingStaysStableOnAStack) {
+  std::string text =
+      "[simulation]\nend_time = 0.001\n\n[equilibrium]\nratio = 1e-7\ndensity_scaling = true\n\n[joint]\n"
+      "normal_stiffness = 1e9\nshear_stiffness = 4e8\ndamping = 0\n\n"
+      "[[block]]\nname = \"base\"\nshape = \"box\"\nsize = [8.0, 4.0, 0.5]\ncenter = [0.0, 0.0, -0.25]\n"
+      "motion = \"fixed\"\n\n[[block]]\nname = \"cube\"\nshape = \"box\"\nsize = [0.05, 0.05, 0.05]\n"
+      "center = [2.5, 0.0, 0.025]\n";
+  for (int k = 0; k < 3; ++k)
+    text += "\n[[block]]\nshape = \"box\"\nsize = [1.0, 1.0, 1.0]\ncenter = [-1.5, 0.0, " + std::to_string(0.5 + k) + "]\n";
+  const RunReport r = run_scene(parse_deck(text, "stack.toml"));
+  ASSERT_FALSE(r.unstable) << r.instability;
+  EXPECT_LE(r.equilibrium.ratio, 1e-7);
+  const double w = 2600 * 9.81 * 1.0 / 1e9;  // one cube's weight over kn·A
+  EXPECT_NEAR(r.final_position[2].z(), 0.5 - 3 * w, 1e-3 * w);
+  EXPECT_NEAR(r.final_position[3].z(), 1.5 - 5 * w, 1e-3 * w);
+  EXPECT_NEAR(r.final_position[4].z(), 2.5 - 6 * w, 1e-3 * w);
+}
+
 // The 52-stone dry-stone wall converges to the ratio tolerance, and stays.
 TEST(Equilibrium, DryStoneWallConverges) {
   const std::string path = std::string(POLYDEM_SOURCE_DIR) + "/examples/verification/dry_stone_wall.toml";
