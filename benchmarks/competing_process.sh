@@ -18,7 +18,12 @@ repeat=${3:-3}
 polydem="$build/polydem"
 deck=examples/spire/earthquake.toml
 tmp=$(mktemp -d)
-trap 'kill $(jobs -p) 2>/dev/null || true; rm -rf "$tmp"' EXIT
+stop_competitor() {
+  kill "${competitor:-}" 2>/dev/null || true
+  pkill -f "$tmp/competitor" 2>/dev/null || true
+  sleep 1
+}
+trap 'stop_competitor; rm -rf "$tmp"' EXIT
 
 rate() {  # threads adaptive -> subcontact updates per second of one run
   "$polydem" run "$deck" --quiet --threads "$1" --set simulation.end_time="$end_time" \
@@ -49,5 +54,5 @@ for load in none polydem; do
     row="$row | $(printf '%.3g' "$r")"
   done
   echo "$row |"
-  if [ "$load" = polydem ]; then kill "$competitor" 2>/dev/null || true; pkill -P "$competitor" 2>/dev/null || true; fi
+  if [ "$load" = polydem ]; then stop_competitor; fi
 done

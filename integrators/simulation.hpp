@@ -98,13 +98,13 @@ class Simulation {
   // badly so on a loaded machine.
   void set_parallel_threshold(std::size_t subcontacts) { parallel_threshold_ = subcontacts; }
   // The thread governor's probing schedule (tests probe every few steps).
-  void set_thread_probing(long first_probe, long shortest_interval, long longest_interval, int probe_steps) {
+  void set_thread_probing(long first_probe, long shortest_interval, long longest_interval, int probe_steps,
+                          double probe_seconds) {
     governor_.first_probe = governor_.next_probe = first_probe;
     governor_.shortest_interval = governor_.interval = shortest_interval;
     governor_.longest_interval = longest_interval;
     governor_.probe_steps = probe_steps;
-    governor_.many_times.reserve(static_cast<std::size_t>(probe_steps));
-    governor_.one_times.reserve(static_cast<std::size_t>(probe_steps));
+    governor_.probe_seconds = probe_seconds;
   }
   const ThreadGovernor& thread_governor() const { return governor_; }
 
