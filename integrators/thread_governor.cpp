@@ -13,7 +13,9 @@ ThreadGovernor make_thread_governor(int most, bool enabled) {
   return g;
 }
 
-int faster_choice(int most, double many_mean, double one_mean) { return many_mean < one_mean ? most : 1; }
+int faster_choice(int most, double many_mean, double one_mean, double margin) {
+  return many_mean < margin * one_mean ? most : 1;
+}
 
 int threads_for_step(ThreadGovernor& g, long step) {
   if (g.most <= 1) return g.now;
@@ -47,7 +49,7 @@ void record_step(ThreadGovernor& g, double seconds, long step) {
   g.one_seconds += seconds;
   if (!side_done(g, g.one_steps, g.one_seconds)) return;
   const int choice = faster_choice(g.most, g.many_seconds / static_cast<double>(g.many_steps),
-                                   g.one_seconds / static_cast<double>(g.one_steps));
+                                   g.one_seconds / static_cast<double>(g.one_steps), g.margin);
   ++g.probes;
   if (choice != g.now) {
     ++g.switches;

@@ -18,7 +18,8 @@
 // scheduler slices of a few milliseconds, so the threads run many steps at
 // full speed and then stall for a whole slice. A median of a few steps
 // misses the stalls (measured: it kept two threads at half the speed of
-// one); the mean over several slices counts them. The probes start after
+// one); the mean over many slices counts them, and all threads must beat
+// one by a margin (10 %) to be kept. The probes start after
 // `first_probe` steps; when a probe confirms the choice, the wait to the
 // next doubles (up to `longest_interval`), when it changes it the wait
 // starts short again, so a competitor that comes or goes is noticed within
@@ -37,10 +38,11 @@ struct ThreadGovernor {
   // Settings.
   int most = 1;                   // threads OpenMP was given; 1: the governor never acts
   long first_probe = 512;         // steps before the first probe
-  long shortest_interval = 4096;  // steps between probes after a change
-  long longest_interval = 65536;  // ... once the choice has held
+  long shortest_interval = 16384;  // steps between probes after a change
+  long longest_interval = 262144;  // ... once the choice has held
   int probe_steps = 32;           // at least this many timed steps per side of a probe
-  double probe_seconds = 0.03;    // ... and at least this much wall time (s)
+  double probe_seconds = 0.1;     // ... and at least this much wall time (s)
+  double margin = 0.9;            // all threads are kept only when their mean step is below this times one's
   long probe_steps_most = 20000;  // a side ends after this many steps whatever its time
 
   // State.
@@ -67,8 +69,9 @@ int threads_for_step(ThreadGovernor& g, long step);
 void record_step(ThreadGovernor& g, double seconds, long step);
 
 // The choice between the two mean step times (exposed for tests): all
-// threads when they are faster than one, one otherwise (a tie included:
-// one thread cannot be slowed by a competitor).
-int faster_choice(int most, double many_mean, double one_mean);
+// threads when their mean step is below `margin` times one thread's, one
+// otherwise (a near tie included: one thread cannot be slowed by a
+// competitor, and a probe's few hundred milliseconds are noisy).
+int faster_choice(int most, double many_mean, double one_mean, double margin = 0.9);
 
 }  // namespace polydem

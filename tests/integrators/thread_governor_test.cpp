@@ -89,7 +89,9 @@ TEST(ThreadGovernor, OneThreadOrSwitchedOffNeverProbes) {
 TEST(ThreadGovernor, FasterChoice) {
   EXPECT_EQ(faster_choice(4, 1.0, 2.0), 4);
   EXPECT_EQ(faster_choice(4, 2.0, 1.0), 1);
-  EXPECT_EQ(faster_choice(4, 1.0, 1.0), 1);  // a tie: one thread, which cannot be slowed by a competitor
+  EXPECT_EQ(faster_choice(4, 1.0, 1.0), 1);   // a tie: one thread, which cannot be slowed by a competitor
+  EXPECT_EQ(faster_choice(4, 0.95, 1.0), 1);  // within the 10 % margin: one thread
+  EXPECT_EQ(faster_choice(4, 0.85, 1.0), 4);
 }
 
 // A 120-stone wall under a pulse, every step parallel, the governor probing
