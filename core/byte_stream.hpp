@@ -67,6 +67,7 @@ class ByteWriter {
     out_.append(b, static_cast<std::size_t>(bytes));
   }
   void put_doubles(const double* p, std::size_t n) {
+    if (n == 0) return;
     if constexpr (std::endian::native == std::endian::little) {
       out_.append(reinterpret_cast<const char*>(p), 8 * n);
     } else {
@@ -148,6 +149,7 @@ class ByteReader {
     return v;
   }
   void get_doubles(double* p, std::size_t n) {
+    if (n == 0) return;  // an empty vector's data() may be null: memcpy must not see it
     if constexpr (std::endian::native == std::endian::little) {
       if (n > remaining() / 8) throw StateFormatError("truncated (ends inside a record)");
       std::memcpy(p, take(8 * n), 8 * n);
