@@ -35,7 +35,7 @@ INSTANTIATE_TEST_SUITE_P(Decks, VerificationDeck,
                                            "pulse_rocking_body_force.toml", "pulse_rocking_kinematic.toml",
                                            "arch_self_weight.toml", "column_rocking.toml",
                                            "cut_wall.toml", "imported_wall.toml",
-                                           "dry_base_slide.toml"),
+                                           "dry_base_slide.toml", "three_components.toml"),
                          [](const auto& info) {
                            std::string n = info.param;
                            return n.substr(0, n.find('.'));
