@@ -110,24 +110,17 @@ void read_one_arch(const Deck& deck, const toml::table& t, std::size_t number, s
     deck.fail(path, &t, std::string("cannot build the arch: ") + e.what());
   }
 
-  Generated::Part part;
-  part.section = path;
-  part.at = &t;
-  part.deck_line = r.line();
-  for (const ArchBlock& ab : model.blocks) {
+  out.parts.push_back(generated_part(path, &t, r.line(), density, model.blocks, [&](const ArchBlock& ab) {
     BlockSpec b;
     b.name = name;
     b.name.append("_").append(ab.name);
     b.shape = ab.shape;
-    b.density = density;
     const bool support = ab.kind == ArchBlockKind::abutment || ab.kind == ArchBlockKind::base;
     b.motion = support ? support_motion : BlockMotion::free;
     b.course = ab.kind == ArchBlockKind::voussoir ? ab.ring : ab.course;
     b.group = to_string(ab.kind);
-    b.deck_line = part.deck_line;
-    part.blocks.push_back(std::move(b));
-  }
-  out.parts.push_back(std::move(part));
+    return b;
+  }));
 }
 
 // All the [[arch]] tables of a deck together build at most this many blocks

@@ -84,23 +84,16 @@ void read_one_column(const Deck& deck, const toml::table& t, std::size_t number,
     deck.fail(path, &t, std::string("cannot build the column: ") + e.what());
   }
 
-  Generated::Part part;
-  part.section = path;
-  part.at = &t;
-  part.deck_line = r.line();
-  for (const ColumnBlock& cb : model.blocks) {
+  out.parts.push_back(generated_part(path, &t, r.line(), density, model.blocks, [&](const ColumnBlock& cb) {
     BlockSpec b;
     b.name = name;
     b.name.append("_").append(cb.name);
     b.shape = cb.shape;
-    b.density = density;
     b.motion = cb.kind == ColumnBlockKind::base ? base_motion : BlockMotion::free;
     b.course = cb.drum;
     b.group = to_string(cb.kind);
-    b.deck_line = part.deck_line;
-    part.blocks.push_back(std::move(b));
-  }
-  out.parts.push_back(std::move(part));
+    return b;
+  }));
 }
 
 // All the [[column]] tables of a deck together build at most this many

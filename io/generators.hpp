@@ -42,6 +42,26 @@ struct GeneratorSection {
 
 std::span<const GeneratorSection> generator_sections();
 
+// A generator's blocks as one part of the deck: `spec_of(block)` gives each
+// BlockSpec's name, shape, motion, course and group; the density and the
+// deck line are the section's, the same for every block.
+template <class Block, class SpecOf>
+Generated::Part generated_part(std::string section, const toml::node* at, int deck_line, double density,
+                               const std::vector<Block>& blocks, SpecOf&& spec_of) {
+  Generated::Part part;
+  part.section = std::move(section);
+  part.at = at;
+  part.deck_line = deck_line;
+  part.blocks.reserve(blocks.size());
+  for (const Block& g : blocks) {
+    BlockSpec b = spec_of(g);
+    b.density = density;
+    b.deck_line = deck_line;
+    part.blocks.push_back(std::move(b));
+  }
+  return part;
+}
+
 // Every generator section the deck has, in the table's order.
 Generated read_generators(const deck_reader::Deck& deck, SceneSpec& scene);
 

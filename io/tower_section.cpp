@@ -168,21 +168,15 @@ void read_tower_sections(const Deck& deck, Generated& out, SceneSpec&) {
   }
   for (std::size_t i = 0; i < towers.size(); ++i) {
     const TowerSection& w = towers[i];
-    Generated::Part part;
-    part.section = indexed("tower", i + 1);
-    part.at = w.table;
-    part.deck_line = w.line;
-    for (const TowerBlock& tb : w.model.blocks) {
-      BlockSpec b;
-      b.name = tb.name;
-      b.shape = tb.shape;
-      b.density = w.density;
-      b.course = tb.course;
-      b.group = group_of(w, tb);
-      b.deck_line = w.line;
-      part.blocks.push_back(std::move(b));
-    }
-    out.parts.push_back(std::move(part));
+    out.parts.push_back(generated_part(indexed("tower", i + 1), w.table, w.line, w.density, w.model.blocks,
+                                       [&](const TowerBlock& tb) {
+                                         BlockSpec b;
+                                         b.name = tb.name;
+                                         b.shape = tb.shape;
+                                         b.course = tb.course;
+                                         b.group = group_of(w, tb);
+                                         return b;
+                                       }));
   }
 }
 

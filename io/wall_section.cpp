@@ -271,21 +271,15 @@ void read_wall_sections(const Deck& deck, Generated& out, SceneSpec&) {
   for (WallSection& w : walls) build_section(deck, w);
   for (std::size_t i = 0; i < walls.size(); ++i) {
     const WallSection& w = walls[i];
-    Generated::Part part;
-    part.section = indexed("wall", i + 1);
-    part.at = w.table;
-    part.deck_line = w.line;
-    for (const WallBlock& wb : w.model.blocks) {
-      BlockSpec b;
-      b.name = wb.name;
-      b.shape = wb.shape;
-      b.density = w.density;
-      b.course = wb.course;
-      b.group = group_of(w, wb);
-      b.deck_line = w.line;
-      part.blocks.push_back(std::move(b));
-    }
-    out.parts.push_back(std::move(part));
+    out.parts.push_back(generated_part(indexed("wall", i + 1), w.table, w.line, w.density, w.model.blocks,
+                                       [&](const WallBlock& wb) {
+                                         BlockSpec b;
+                                         b.name = wb.name;
+                                         b.shape = wb.shape;
+                                         b.course = wb.course;
+                                         b.group = group_of(w, wb);
+                                         return b;
+                                       }));
   }
 }
 
