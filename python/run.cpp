@@ -245,9 +245,10 @@ void bind_run(py::module_& m) {
              RunControl control;
              if (!acceleration.is_none()) {
                if (!acceleration_time.is_none()) {
-                 control.ground_acceleration =
-                     acceleration_table(acceleration_time.cast<py::array_t<double>>(),
-                                        acceleration.cast<py::array_t<double>>());
+                 AccelerationTable table = acceleration_table(acceleration_time.cast<py::array_t<double>>(),
+                                                              acceleration.cast<py::array_t<double>>());
+                 control.ground_acceleration_final_time = table.time.back();
+                 control.ground_acceleration = std::move(table);
                } else {
                  // A Python function of t, called once per step with the GIL.
                  py::function f = acceleration.cast<py::function>();

@@ -105,11 +105,12 @@ double loads_final_time(const SceneSpec& spec) {
 }
 
 // True when every free block has been slower than settle_velocity for
-// settle_time once the loads are final (simulation.settle_*; never when
-// settle_velocity is 0).
-bool settled(const SceneSpec& spec, const Simulation& sim, double& quiet_since) {
+// settle_time once the loads are final, the caller's ground acceleration
+// too (simulation.settle_*; never when settle_velocity is 0).
+bool settled(const SceneSpec& spec, const RunControl& control, const Simulation& sim, double& quiet_since) {
   if (!(spec.simulation.settle_velocity > 0)) return false;
-  if (sim.time() < loads_final_time(spec)) {
+  const double caller_final = control.ground_acceleration ? control.ground_acceleration_final_time : 0.0;
+  if (sim.time() < std::max(loads_final_time(spec), caller_final)) {
     quiet_since = -1;
     return false;
   }
@@ -300,7 +301,7 @@ long SceneRun::advance(long max_steps, double until) {
         control_.snapshot(sim, sim.time());
         loop.snapshots.advance();
       }
-      if (settled(spec_, sim, loop.quiet_since)) {
+      if (settled(spec_, control_, sim, loop.quiet_since)) {
         rep.settled = true;
         over_ = true;
         break;

@@ -134,6 +134,10 @@ struct RunControl {
   // force (core/ground_motion.hpp ExtraGroundAcceleration); empty: none.
   // Not part of a checkpoint: a restart must be given the same one.
   ExtraGroundAcceleration ground_acceleration;
+  // The time from which `ground_acceleration` stays as it is (a table's
+  // last sample); a run does not count as settled before it. Infinite for a
+  // function of time, which may change at any moment.
+  double ground_acceleration_final_time = std::numeric_limits<double>::infinity();
 };
 
 // One run, step by step. The constructor sets the run up (1. and 2.:
