@@ -79,16 +79,15 @@ def test_vertical_ground_acceleration_table_halves_the_weight():
 
 def test_no_settling_before_the_callers_ground_acceleration_is_final():
     # A pillar at rest under a horizontal table rising to 0.1 g over 0.3 s
-    # (b/h = 0.25: it stands) is still until the table ends: it may settle
-    # only after the last sample plus settle_time, as with the deck's loads.
+    # (b/h = 0.25: it stands; the table is zero after its last sample) is
+    # nearly still long before the table ends: it may settle only after the
+    # last sample plus settle_time, as with the deck's loads.
     scene = pillar(end_time=1.0).with_set({"simulation.settle_velocity": 1e-3, "simulation.settle_time": 0.02})
     t = np.array([0.0, 0.3])
     a = np.array([[0.0, 0.0, 0.0], [0.981, 0.0, 0.0]])
     run = polydem.run(scene, ground_acceleration=a, ground_acceleration_time=t, progress=False)
     assert run._r.settled
     assert 0.32 <= run.time < 0.5
-    m = run.masses[1]
-    assert run.contact_forces[1, 0] == pytest.approx(-m * 0.981, rel=2e-3)  # the whole table acted
     # A function of time may change at any moment: the run goes to its end.
     run = polydem.run(scene.with_set({"simulation.end_time": 0.1}), ground_acceleration=lambda t: (0.0, 0.0, 0.0),
                       progress=False)
