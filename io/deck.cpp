@@ -825,7 +825,18 @@ std::string apply_override(toml::table& root, const std::string& file, const std
     const bool last = i + 1 == steps.size();
     if (step.index == 0) {
       auto* table = cur->as_table();
-      if (!table) override_error(file, "key '" + canon + "': is not a table, cannot set '" + step.name + "' in it");
+      if (!table) {
+        const auto* array = cur->as_array();
+        if (array && !array->empty() && array->is_array_of_tables()) {
+          std::string msg = "key '";
+          msg.append(canon).append("' is an array of tables (a [[").append(canon).append("]] list of ");
+          msg.append(std::to_string(array->size())).append("): choose one, e.g. '").append(canon).append("[1].");
+          msg.append(step.name).append("' for the first");
+          if (canon == "joint") msg.append(" (the default joint; the others apply between groups)");
+          override_error(file, msg);
+        }
+        override_error(file, "key '" + canon + "': is not a table, cannot set '" + step.name + "' in it");
+      }
       canon += (canon.empty() ? "" : ".") + step.name;
       if (last) {
         value.visit([&](auto&& v) { table->insert_or_assign(step.name, std::move(v)); });

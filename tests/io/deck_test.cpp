@@ -371,6 +371,9 @@ TEST(Deck, OverrideErrorsNameTheOverride) {
   expect_override_error(kTwoBlocks, {"block.2.density=heavy"}, "key 'block[2].density'", "must be a number");
   expect_override_error(kTwoBlocks, {"simulation.end_tim=3"}, "key 'simulation.end_tim'", "unknown key");
   expect_override_error(kTwoBlocks, {"block[3].density=1"}, "key 'block[3]'", "no such element");
+  expect_override_error(kTwoBlocks, {"block.density=1"}, "key 'block' is an array of tables", "'block[1].density' for the first");
+  expect_override_error(kTwoBlocks + "[[joint]]\nfriction_angle = 30\n", {"joint.friction_angle=35"}, "key 'joint' is an array of tables",
+                        "joint[1].friction_angle' for the first (the default joint");
   expect_override_error(kTwoBlocks, {"block[0].density=1"}, "'block[0].density'", "1-based");
   expect_override_error(kTwoBlocks, {"simulation.end_time"}, "'simulation.end_time'", "expected key.path=value");
   expect_override_error(kTwoBlocks, {"simulation.end_time.x=1"}, "key 'simulation.end_time'", "is not a table");
