@@ -105,12 +105,6 @@ EdgeAxis best_edge_axis(const PosedBlock& a, const std::vector<Vec3>& wa, const 
 
 double corner_area_of_size(double size) { return 0.25 * size * size; }
 
-// The overlap, as a fraction of the margin, beyond which a sliver patch is
-// taken as penetrating (see the end of build_patch): 2 % of the spire's
-// 3.05 mm margin is 61 µm, twenty times a joint's compression under the
-// whole spire's weight (2.6 µm).
-constexpr double kPenetratingSliverDepth = 0.02;
-
 double face_separation(const PosedBlock& self, int face, const std::vector<Vec3>& other) {
   const Vec3 n = self.R * self.shape->normals[face];
   const double offset = self.shape->offsets[face] + n.dot(self.x);
@@ -314,33 +308,6 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
       out.points[kept++] = out.points[j];
     }
   out.points.resize(kept);
-  // A penetrating sliver: a corner driven into a face near the face's
-  // boundary clips to a thin polygon (or a line) whose fan areas are a
-  // small fraction of a corner's, so it sinks nearly unresisted (a stone
-  // corner at 5 m/s went 8.5 mm into its neighbour on 8e-5 m²) until a
-  // later detection finds the full polygon at that depth and the strain
-  // ½·kn·A·u² appears from nowhere (61 kJ at once in the spire's 1 g pulse,
-  // docs/contact.md). A patch that overlaps by more than a few hundredths
-  // of the margin (far beyond the µm of a joint resting under gravity) and
-  // carries less than a corner's area therefore carries a corner's area,
-  // the points keeping their shares: no way two blocks touch is softer
-  // than a corner of the same blocks (case 3's rule, l the smaller block's
-  // size). Resting lines and slivers (no such overlap) keep their areas.
-  double deepest = 0;
-  for (std::size_t j = 0; j < kept; ++j) deepest = std::max(deepest, -out.points[j].separation);
-  if (kept > 0 && deepest > kPenetratingSliverDepth * margin) {
-    const double la = a.size > 0 ? a.size : std::cbrt(std::abs(mass_properties(*a.shape).volume));
-    const double lb = b.size > 0 ? b.size : std::cbrt(std::abs(mass_properties(*b.shape).volume));
-    const double corner = corner_area_of_size(std::min(la, lb));
-    if (kept_area < corner) {
-      if (kept_area > 0) {
-        for (auto& p : out.points) p.area *= corner / kept_area;
-      } else {
-        for (auto& p : out.points) p.area = corner / static_cast<double>(kept);
-      }
-      kept_area = corner;
-    }
-  }
   out.area = kept_area;
   return kept > 0;
 }

@@ -136,32 +136,6 @@ TEST(FindPatch, CubeHalfOverTheEdgeIsClippedToTheBase) {
   EXPECT_EQ(corners, 2);
 }
 
-// A corner region driven into a face near its boundary clips to a sliver:
-// the cube overhangs the base's edge but for a strip ε wide. Resting on it
-// (1 µm, a joint under gravity) the strip keeps its own area ε × 1; pressed
-// in by more than 2 % of the margin it carries a corner's area, l²/4 with
-// l = 1 m the smaller block's size (docs/contact.md, "a penetrating sliver"),
-// the points keeping their shares.
-TEST(FindPatch, PenetratingSliverCarriesACornersArea) {
-  const double eps = 0.002, margin = 0.02;
-  for (const double u : {1e-6, 1e-3}) {
-    Pair p;
-    p.b.x = Vec3(2.0 - eps, 0, 0.5 - u);  // cube spans x in [1.5 − ε, 2.5 − ε]
-    Patch patch;
-    PatchScratch scratch;
-    ASSERT_TRUE(find_patch(p.a, p.b, margin, -1, -1, patch, scratch));
-    EXPECT_EQ(patch.ref_side, 0);
-    ASSERT_EQ(patch.points.size(), 4u);
-    const double expected = u > 0.02 * margin ? corner_area_of_size(1.0) : eps * 1.0;
-    EXPECT_NEAR(patch.area, expected, kTol) << "overlap " << u;
-    EXPECT_NEAR(area_sum(patch), expected, kTol);
-    for (const PatchPoint& q : patch.points) {
-      EXPECT_NEAR(q.separation, -u, kTol);
-      EXPECT_NEAR(q.area, expected / 4, kTol);  // the strip's fan: four equal shares
-    }
-  }
-}
-
 // A cube tipped by θ about one bottom edge (the pivot, kept on z = 0): the
 // pivot corners touch, the far corners are lifted by L·sin θ = 2b·sin θ.
 TEST(FindPatch, CubeTiltedOnItsEdge) {
