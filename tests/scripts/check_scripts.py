@@ -136,6 +136,12 @@ def main():
              "--body", "cone", "--r_b", "0.4301", "--H", "3.4", "--a_max", "2.5", "--out", png("sweep_diagram.png")])
         check_png(png("sweep_diagram.png"))
 
+        # The spire's λ sensitivity (docs/data, measured by polydem collapse) as a tornado chart.
+        run([PYTHON, os.path.join(scripts, "plot_sensitivity.py"),
+             os.path.join(source, "docs", "data", "spire_lambda_sensitivity.csv"), "--dpi", "40",
+             "--out", png("sensitivity.png")])
+        check_png(png("sensitivity.png"))
+
     if failures:
         print("FAILED:\n  " + "\n  ".join(failures))
         sys.exit(1)
