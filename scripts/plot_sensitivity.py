@@ -17,6 +17,7 @@ import csv
 import matplotlib
 
 matplotlib.use("Agg")
+import matplotlib.patches  # noqa: E402
 import matplotlib.pyplot as plt
 
 
@@ -34,11 +35,15 @@ def main():
     ax.axvspan(a.band[0], a.band[1], color="0.85", label="paper, 3DEC (%.3f-%.3f g)" % tuple(a.band))
     for k, r in enumerate(rows):
         lo, hi = float(r["low_lambda_g"]), float(r["high_lambda_g"])
-        for v, lam, c in ((r["low_value"], lo, "tab:blue"), (r["high_value"], hi, "tab:red")):
-            ax.barh(k, lam - base, left=base, color=c, alpha=0.75, height=0.6)
-            ax.text(lam + (0.0008 if lam >= base else -0.0008), k, v, va="center",
+        # The low variant in the upper half of the row, the high one below it,
+        # so that two variants on the same side of the defaults stay apart.
+        for v, lam, c, dy in ((r["low_value"], lo, "tab:blue", 0.18), (r["high_value"], hi, "tab:red", -0.18)):
+            ax.barh(k + dy, lam - base, left=base, color=c, alpha=0.75, height=0.34)
+            ax.text(lam + (0.0008 if lam >= base else -0.0008), k + dy, v, va="center",
                     ha="left" if lam >= base else "right", fontsize=7)
     ax.axvline(base, color="k", lw=1, label="defaults: %.4f g" % base)
+    for c, name in (("tab:blue", "first variant"), ("tab:red", "second variant")):
+        ax.add_patch(matplotlib.patches.Rectangle((0, 0), 0, 0, color=c, alpha=0.75, label=name))
     ax.set_yticks(range(len(rows)))
     ax.set_yticklabels(["%s (%s)" % (r["parameter"], r["baseline_value"]) for r in rows], fontsize=8)
     ax.set_xlabel("collapse acceleration onto the window face (g)")
