@@ -115,6 +115,36 @@ class Block:
         self.b = max(x for x, _ in lines)  # half-width in the rocking plane, pivot at +-b
 
 
+def line_forces(fx, fz, xs, areas, shear, c, s, zb, Z, vx, vz, w, kn, ks, beta, tan_phi, dt):
+    """The vertex lines' spring-dashpots on the block (the joint law of
+    contact/joint_law.hpp in 2D: no tension, Coulomb cap on the elastic
+    normal force, no shear dashpot while slipping), added to the forces fx,
+    fz already acting; updates `shear`. Returns fx, fz, the torque about the
+    centroid and each closed line's normal force."""
+    torque, normal = 0.0, {}
+    for i, px in enumerate(xs):
+        rx, rz = px * c + zb * s, -px * s + zb * c
+        if Z + rz >= 0.0:
+            shear[i] = 0.0
+            continue
+        u = -(Z + rz)
+        vpx, vpz = vx + w * rz, vz - w * rx
+        fn_spring = kn * areas[i] * u
+        fn = max(0.0, fn_spring - beta * kn * areas[i] * vpz)
+        fs = shear[i] - ks * areas[i] * vpx * dt
+        cap = tan_phi * fn_spring
+        slipping = abs(fs) > cap
+        if slipping:
+            fs = math.copysign(cap, fs)
+        shear[i] = fs
+        fxi = fs - (0.0 if slipping else beta * ks * areas[i] * vpx)
+        fx += fxi
+        fz += fn
+        torque += rz * fxi - rx * fn
+        normal[i] = fn
+    return fx, fz, torque, normal
+
+
 def rock(block, theta0=0.1, kn=98e9, ks=None, beta=2.1e-5, friction_deg=40.0, impacts=3, impulse=False, dt=None):
     """Free rocking from theta0. Returns the half-cycle amplitudes (impacts + 1
     of them) and, with `impulse`, the normal impulse of each line through the
@@ -137,29 +167,11 @@ def rock(block, theta0=0.1, kn=98e9, ks=None, beta=2.1e-5, friction_deg=40.0, im
     amplitudes, peak, last = [], abs(th), th
     while len(amplitudes) < impacts + 1:
         c, s = math.cos(th), math.sin(th)
-        fx, fz, torque = 0.0, -m * G, 0.0
-        closed = []
-        for i, px in enumerate(xs):
-            rx, rz = px * c + zb * s, -px * s + zb * c
-            if Z + rz >= 0.0:
-                shear[i] = 0.0
-                continue
-            closed.append(i)
-            u = -(Z + rz)
-            vpx, vpz = vx + w * rz, vz - w * rx
-            fn_spring = kn * areas[i] * u
-            fn = max(0.0, fn_spring - beta * kn * areas[i] * vpz)
-            fs = shear[i] - ks * areas[i] * vpx * dt
-            cap = tan_phi * fn_spring
-            slipping = abs(fs) > cap
-            if slipping:
-                fs = math.copysign(cap, fs)
-            shear[i] = fs
-            fxi = fs - (0.0 if slipping else beta * ks * areas[i] * vpx)
-            fx += fxi
-            fz += fn
-            torque += rz * fxi - rx * fn
-            if in_impact:
+        fx, fz, torque, normal = line_forces(0.0, -m * G, xs, areas, shear, c, s, zb, Z, vx, vz, w,
+                                             kn, ks, beta, tan_phi, dt)
+        closed = list(normal)
+        if in_impact:
+            for i, fn in normal.items():
                 J[i] += fn * dt
         if not impact_done:
             if not in_impact and th < 0.01 and any(xs[i] < block.b - 1e-9 for i in closed):
@@ -246,26 +258,8 @@ def pulse_peak(block, a_g, period=0.5, t_end=2.0, kn=98e9, beta=2.1e-5, friction
     while t < t_end:
         c, s = math.cos(th), math.sin(th)
         fx = m * a_g * G * math.sin(2 * math.pi * t / period) if t < period else 0.0
-        fz, torque = -m * G, 0.0
-        for i, px in enumerate(xs):
-            rx, rz = px * c + zb * s, -px * s + zb * c
-            if Z + rz >= 0.0:
-                shear[i] = 0.0
-                continue
-            u = -(Z + rz)
-            vpx, vpz = vx + w * rz, vz - w * rx
-            fn_spring = kn * areas[i] * u
-            fn = max(0.0, fn_spring - beta * kn * areas[i] * vpz)
-            fs = shear[i] - ks * areas[i] * vpx * dt
-            cap = tan_phi * fn_spring
-            slipping = abs(fs) > cap
-            if slipping:
-                fs = math.copysign(cap, fs)
-            shear[i] = fs
-            fxi = fs - (0.0 if slipping else beta * ks * areas[i] * vpx)
-            fx += fxi
-            fz += fn
-            torque += rz * fxi - rx * fn
+        fx, fz, torque, _ = line_forces(fx, -m * G, xs, areas, shear, c, s, zb, Z, vx, vz, w,
+                                        kn, ks, beta, tan_phi, dt)
         vx += fx / m * dt
         vz += fz / m * dt
         w += torque / inertia * dt
