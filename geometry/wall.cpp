@@ -87,9 +87,26 @@ int n_courses(const WallSpec& s) {
 
 int leaves_of(const WallSpec& s) { return s.bond == WallBond::stretcher ? s.leaves : 2; }
 
-Pattern course_pattern(const WallSpec& s, int c) {
-  const bool odd = c % 2 == 1;
+bool closes_with_closers(const WallSpec& s) { return s.bond != WallBond::stretcher; }
+
+// The bond's role of course c: 0 or 1 (the pattern of an even or an odd
+// course of a wall without corners).
+int course_role(const WallSpec& s, int c) { return (c + s.course_shift) % 2; }
+
+// The role of the courses that own a corner square (start at the quoin with
+// a quoin header and a queen closer): header courses in English and header
+// bond, the courses starting with a header in Flemish bond.
+int quoin_role(const WallSpec& s) { return s.bond == WallBond::flemish ? 0 : 1; }
+
+// at_quoin: the course is laid from a corner (u = 0 in the frame it is laid
+// in); Flemish bond then moves its pattern by a quarter unit so that a
+// quoin header and closer fit before the first stretcher.
+Pattern course_pattern(const WallSpec& s, int c, bool at_quoin) {
+  const bool odd = course_role(s, c) == 1;
   const double L = s.unit_length, w = s.unit_width;
+  if (s.bond == WallBond::flemish && at_quoin)
+    return {3 * w, (odd ? 1.5 * w : 0.0) + 0.5 * w,
+            {{0, w, true, kind_id(WallBlockKind::header)}, {w, 3 * w, false, kind_id(WallBlockKind::unit)}}};
   switch (s.bond) {
     case WallBond::stretcher: return {L, odd ? 0.5 * L : 0.0, {{0, L, false, kind_id(WallBlockKind::unit)}}};
     case WallBond::header: return {w, odd ? 0.5 * w : 0.0, {{0, w, true, kind_id(WallBlockKind::header)}}};
@@ -105,8 +122,11 @@ Pattern course_pattern(const WallSpec& s, int c) {
 
 // The bond's segments of course c between u = a and u = b (the wall's ends,
 // or where a gable's slopes cross the course's bed), end slivers joined.
-std::vector<Segment> bond_segments(const WallSpec& s, int c, double a, double b) {
-  const Pattern p = course_pattern(s, c);
+// at_quoin: laid from a corner at u = 0 (English, Flemish, header bonds);
+// in the courses that own it the first pieces are the quoin header [0, w]
+// and the queen closer [w, 1.5 w].
+std::vector<Segment> bond_segments(const WallSpec& s, int c, double a, double b, bool at_quoin = false) {
+  const Pattern p = course_pattern(s, c, at_quoin);
   const double L = b, tol = 1e-12 * s.length;
   std::vector<Segment> out;
   const long k0 = static_cast<long>(std::floor((a - p.offset) / p.period)) - 1;
@@ -121,6 +141,16 @@ std::vector<Segment> bond_segments(const WallSpec& s, int c, double a, double b)
   std::sort(out.begin(), out.end(), [](const Segment& x, const Segment& y) { return x.u0 < y.u0; });
   out.front().u0 = a;
   out.back().u1 = L;
+  if (at_quoin && course_role(s, c) == quoin_role(s) && a == 0) {
+    // The pattern (moved for Flemish bond) puts a joint at half a header
+    // (w/2) and the next at 1.5 w: the quoin header takes [0, w], the
+    // closer [w, 1.5 w].
+    const double w = s.unit_width;
+    if (out.size() < 2 || std::abs(out[0].u1 - 0.5 * w) > 1e-9 * w || std::abs(out[1].u1 - 1.5 * w) > 1e-9 * w)
+      throw GeometryError("wall: internal: the quoin's course does not start with half a header");
+    out[0] = {0.0, w, true, kind_id(WallBlockKind::header)};
+    out[1] = {w, out[1].u1, true, kind_id(WallBlockKind::closer)};
+  }
   // Through-stones: every Nth unit of a course, staggered course by course.
   if (s.bond == WallBond::stretcher && s.through_every > 0) {
     const int N = s.through_every;
@@ -159,6 +189,65 @@ std::pair<double, double> course_ends(const WallSpec& s, int c) {
   for (const WallCorner& k : s.corners)
     if (c < k.courses && c % 2 == k.parity) (k.at_end ? b : a) = k.at_end ? s.length - k.depth : k.depth;
   return {a, b};
+}
+
+// The segments of course c between its ends ca and cb (course_ends). A
+// stretcher bond wall, or a wall without corners, is laid from u = 0. An
+// English, Flemish or header bond wall is laid from its corner: from u = 0
+// with a corner at its start, from u = length (mirrored) with a corner at
+// its end only; with corners at both ends the joints before the middle come
+// from the start's laying and those after it from the end's, and a piece
+// under a quarter unit where they meet joins its neighbour.
+std::vector<Segment> course_segments(const WallSpec& s, int c, double ca, double cb) {
+  bool at_start = false, at_end = false;
+  if (closes_with_closers(s))
+    for (const WallCorner& k : s.corners) (k.at_end ? at_end : at_start) = true;
+  if (!at_end) return bond_segments(s, c, ca, cb, at_start);
+  const double L = s.length;
+  // Laid from the end: in the mirrored frame u' = L - u, then mapped back
+  // (each joint once, so neighbours share it exactly).
+  std::vector<Segment> from_end = bond_segments(s, c, L - cb, L - ca, true);
+  std::reverse(from_end.begin(), from_end.end());
+  for (Segment& g : from_end) {
+    const double u0 = L - g.u1, u1 = L - g.u0;
+    g.u0 = u0, g.u1 = u1;
+  }
+  from_end.front().u0 = ca;
+  from_end.back().u1 = cb;
+  if (!at_start) return from_end;
+  const std::vector<Segment> from_start = bond_segments(s, c, ca, cb, true);
+  const double mid = 0.5 * L;
+  std::vector<Segment> out;
+  for (const Segment& g : from_start)
+    if (g.u1 <= mid) out.push_back(g);
+  const double seam = out.empty() ? ca : out.back().u1;
+  std::vector<Segment> tail;
+  for (const Segment& g : from_end)
+    if (g.u0 >= mid) tail.push_back(g);
+  const double seam_end = tail.empty() ? cb : tail.front().u0;
+  if (seam_end > seam) {
+    // Between the two layings: the start's pieces up to the end's first joint after the middle.
+    for (const Segment& g : from_start) {
+      if (g.u1 <= seam || g.u0 >= seam_end) continue;
+      out.push_back({std::max(g.u0, seam), std::min(g.u1, seam_end), g.through, g.kind});
+    }
+  }
+  out.insert(out.end(), tail.begin(), tail.end());
+  const double min_len = kSliver * s.unit_length * (1 - 1e-9);
+  for (std::size_t i = 0; i < out.size() && out.size() > 1;) {
+    if (out[i].u1 - out[i].u0 >= min_len) {
+      ++i;
+      continue;
+    }
+    const std::size_t keep = i > 0 ? i - 1 : i + 1;
+    Segment& k = out[keep];
+    k.u0 = std::min(k.u0, out[i].u0);
+    k.u1 = std::max(k.u1, out[i].u1);
+    if (out[i].through && !k.through) k.through = true, k.kind = out[i].kind;
+    out.erase(out.begin() + static_cast<long>(i));
+    if (i > 0) --i;
+  }
+  return out;
 }
 
 // The gable's courses and its apex stone (see wall.hpp), appended to m.
@@ -229,8 +318,14 @@ const char* to_string(WallBlockKind kind) {
     case WallBlockKind::lintel: return "lintel";
     case WallBlockKind::voussoir: return "voussoir";
     case WallBlockKind::apex: return "apex";
+    case WallBlockKind::closer: return "closer";
   }
   return "?";
+}
+
+int quoin_parity(const WallSpec& s) {
+  if (!closes_with_closers(s)) return -1;
+  return (quoin_role(s) + s.course_shift) % 2;
 }
 
 double wall_thickness(const WallSpec& s) {
@@ -280,16 +375,31 @@ void validate_wall(const WallSpec& s) {
 
   const double min_len = kSliver * s.unit_length;
   double start_clear = 0, end_clear = 0;  // what corners take from the ends
+  require(s.course_shift == 0 || s.course_shift == 1, "course_shift", -1,
+          "must be 0 or 1 (got " + std::to_string(s.course_shift) + ")");
   for (const WallCorner& k : s.corners) {
-    require(s.bond == WallBond::stretcher, "bond", -1,
-            "cannot close a corner: a corner is built for stretcher bond walls (header, English and Flemish bonds "
-            "need closers at a quoin)");
+    if (closes_with_closers(s)) {
+      require(std::abs(2 * s.unit_width - s.unit_length) <= 1e-9 * s.unit_length, "unit_width", -1,
+              "cannot close a corner: a header bond wall turns a corner with quoin headers and queen closers only "
+              "when two headers side by side make a unit length: unit_width must be unit_length/2 = " +
+                  num(0.5 * s.unit_length) + " (got " + num(s.unit_width) + ")");
+      require(std::abs(k.depth - s.unit_length) <= 1e-9 * s.unit_length, "unit_length", -1,
+              "cannot close a corner: the other wall must be one unit length (" + num(s.unit_length) +
+                  " m) thick like this one (got " + num(k.depth) + " m)");
+      require(k.parity == 1 - quoin_parity(s), "corners", -1,
+              "the corner's courses where the wall stops must be the ones it does not own (parity " +
+                  std::to_string(1 - quoin_parity(s)) + ")");
+    }
     require(std::isfinite(k.depth) && k.depth >= min_len * (1 - 1e-9) && k.depth <= 0.5 * s.length, "length", -1,
             "a corner takes " + num(k.depth) + " m (the other wall's thickness) from the wall's " +
                 (k.at_end ? "end" : "start") + ": it must be between a quarter unit and half the length");
     require(s.gable_height == 0, "gable_height", -1, "a wall with a corner has no gable here (not built)");
     (k.at_end ? end_clear : start_clear) = k.depth;
   }
+  if (closes_with_closers(s) && !s.corners.empty())
+    require(s.length >= start_clear + end_clear + 2 * s.unit_length * (1 - 1e-9), "length", -1,
+            "a wall with closers at a corner needs at least two unit lengths (" + num(2 * s.unit_length) +
+                " m) beyond its corner squares (got " + num(s.length - start_clear - end_clear) + " m)");
   std::vector<masonry::Opening> done;
   for (std::size_t i = 0; i < s.openings.size(); ++i) {
     const WallOpening& o = s.openings[i];
@@ -380,7 +490,7 @@ WallModel build_wall(const WallSpec& s) {
   for (int c = 0; c < m.n_courses; ++c) {
     const double z0 = c * ch, z1 = c + 1 == m.n_courses ? s.height : (c + 1) * ch;
     const auto [ca, cb] = course_ends(s, c);
-    std::vector<Segment> segs = bond_segments(s, c, ca, cb);
+    std::vector<Segment> segs = course_segments(s, c, ca, cb);
     // The joints the openings need in this course.
     for (const auto& g : openings)
       masonry::fit_course(segs, g, c, z0, z1, ch, min_len, tol, kind_id(WallBlockKind::jamb));

@@ -60,11 +60,35 @@
 // top of the gable is one apex stone, a triangle from the lowest bed joint at
 // which the gable is less than 1.5 units wide. Openings stay below `height`.
 //
-// Corners: two stretcher bond walls of the same course height meet at a
-// right angle with one wall's units running through the corner square in
-// even courses and the other's in odd ones (WallCorner): the quoins
-// interlock course by course. The other bonds would need closers to turn a
-// corner and are refused.
+// Corners: two walls of the same course height meet at a right angle with
+// one wall's units running through the corner square in even courses and
+// the other's in odd ones (WallCorner): the quoins interlock course by
+// course. Two stretcher bond walls (any leaves) simply alternate. English,
+// Flemish and header bond walls (same unit sizes, unit_length =
+// 2·unit_width, so both are one unit length thick) close the corner as a
+// bricklayer does, with closers:
+//   - in the courses it owns, a wall's course starts at the quoin with a
+//     quoin header (a header at the corner's outer end, running across the
+//     wall: on the return wall's face it shows its long side, like a
+//     stretcher) followed by a queen closer (a header split lengthwise, a
+//     quarter unit in the face, kind `closer`), then the bond: headers in an
+//     English or header bond header course, stretcher, header, ... in
+//     Flemish bond;
+//   - in the other courses it stops at the corner square, its bond anchored
+//     at the corner: English stretchers from the corner, Flemish header,
+//     stretcher, ....
+// The quoin's header and closer leave the vertical joints of consecutive
+// courses a quarter unit apart on both faces at the corner. An English or
+// header bond wall owns its corners in its header courses, a Flemish bond
+// wall in the courses whose pattern starts with a header; `course_shift`
+// (set by the deck reader on the second wall of a corner) turns the
+// second wall's pattern by one course so that the two walls own the corner
+// square in alternate courses. The bond is anchored at the wall's corner
+// (at its end, if only its end has one: the course is then laid from the
+// end); with a corner at each end each half of a course is laid from its
+// own corner and the two meet in the middle, where a piece under a quarter
+// unit joins its neighbour (the bond may break there, as a bricklayer's
+// does between two quoins when the length is not a whole number of units).
 //
 // Sizes and the rules above are checked by validate_wall(): each failure is
 // a WallSpecError naming the WallSpec field (= the [[wall]] deck key) and,
@@ -123,6 +147,11 @@ struct WallSpec {
   double gable_height = 0;
   std::vector<WallOpening> openings;
   std::vector<WallCorner> corners;   // at most one per end
+  // English, Flemish and header bonds: course c is laid with the pattern of
+  // course c + course_shift (0 or 1). The deck reader sets it on the second
+  // wall of a corner so that the two walls own the corner square in
+  // alternate courses (see quoin_parity).
+  int course_shift = 0;
 };
 
 // An invalid WallSpec: `field` is the WallSpec (or WallOpening) member =
@@ -138,7 +167,8 @@ struct WallSpecError : GeometryError {
   std::string detail;
 };
 
-enum class WallBlockKind { unit, header, through_stone, jamb, lintel, voussoir, apex };
+// closer: a queen closer at a quoin of an English, Flemish or header bond corner.
+enum class WallBlockKind { unit, header, through_stone, jamb, lintel, voussoir, apex, closer };
 
 struct WallBlock {
   Polyhedron shape;  // world coordinates
@@ -168,6 +198,13 @@ struct WallModel {
 double wall_thickness(const WallSpec& spec);
 
 void validate_wall(const WallSpec& spec);
+
+// English, Flemish and header bonds: the parity (0 even, 1 odd) of the
+// courses in which the wall's units run through its corner squares (its
+// quoin header and closer); a WallCorner's `parity` (where the wall stops)
+// must be the other one. Walls meeting at a corner need different quoin
+// parities. -1 for a stretcher bond (its corners take either parity).
+int quoin_parity(const WallSpec& spec);
 
 // Validates and builds. Every block has passed validate().
 WallModel build_wall(const WallSpec& spec);

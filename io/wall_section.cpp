@@ -196,6 +196,7 @@ void build_section(const Deck& deck, WallSection& w) {
   } catch (const WallSpecError& e) {
     std::string key = e.field;
     if (key == "unit_length" || key == "unit_height" || key == "unit_width") key = "unit_size";
+    if ((key == "corners" || key == "course_shift") && r.has("corner_with")) key = "corner_with";
     if (e.opening >= 0) w.readers[static_cast<std::size_t>(e.opening) + 1].fail(key, e.detail);
     if (key == "length" && !r.has("length") && r.has("end")) key = "end";
     if (key == "height" && !r.has("height") && r.has("courses")) key = "courses";
@@ -211,9 +212,24 @@ void place_at_corner(WallSection& b, WallSection& a) {
   const TableReader& r = b.readers.front();
   WallSpec& A = a.spec;
   WallSpec& B = b.spec;
-  if (A.bond != WallBond::stretcher || B.bond != WallBond::stretcher)
-    r.fail("corner_with", "bonds that cannot close a corner: a corner is built between stretcher bond walls (" +
-                              in_quotes(A.name) + " and this one); header, English and Flemish bonds need closers");
+  const bool a_running = A.bond == WallBond::stretcher, b_running = B.bond == WallBond::stretcher;
+  if (a_running != b_running)
+    r.fail("corner_with", "bonds that cannot close a corner: a stretcher bond wall turns a corner with another "
+                          "stretcher bond wall, and English, Flemish and header bond walls with one another (" +
+                              in_quotes(A.name) + " and this one)");
+  if (!a_running) {
+    // Quoin headers and queen closers: the units must be the same, two
+    // headers side by side a unit length (both walls a unit length thick).
+    const auto same = [](double x, double y) { return std::abs(x - y) <= 1e-9 * std::max(std::abs(x), std::abs(y)); };
+    if (!same(A.unit_length, B.unit_length) || !same(A.unit_width, B.unit_width))
+      r.fail("unit_size", "bonds that cannot close a corner: the quoin headers and closers interlock only between "
+                          "units of the same length and width (" + format_number(B.unit_length) + " x " +
+                              format_number(B.unit_width) + " m here, " + format_number(A.unit_length) + " x " +
+                              format_number(A.unit_width) + " m in " + in_quotes(A.name) + ")");
+    if (!same(2 * B.unit_width, B.unit_length))
+      r.fail("unit_size", "bonds that cannot close a corner: a quoin header and queen closer fit only when two "
+                          "headers side by side make a unit length (unit width = unit length / 2)");
+  }
   const int na = A.courses > 0 ? A.courses : std::max(1, static_cast<int>(std::lround(A.height / A.unit_height)));
   const int nb = B.courses > 0 ? B.courses : std::max(1, static_cast<int>(std::lround(B.height / B.unit_height)));
   const double cha = A.height / na, chb = B.height / nb;
@@ -231,9 +247,19 @@ void place_at_corner(WallSection& b, WallSection& a) {
   B.origin = A.origin + along * eu + (b.turn_left ? -0.5 : 0.5) * ta * ev;
   B.direction = A.direction + (b.turn_left ? 90.0 : -90.0);
   const int shared = std::min(na, nb);
-  // a's units run through the corner in even courses, b's in odd ones.
-  A.corners.push_back({b.corner_at_end, tb, 1, shared});
-  B.corners.push_back({false, ta, 0, shared});
+  if (a_running) {
+    // a's units run through the corner in even courses, b's in odd ones.
+    A.corners.push_back({b.corner_at_end, tb, 1, shared});
+    B.corners.push_back({false, ta, 0, shared});
+    return;
+  }
+  // Each wall owns the corner square in the courses of its quoin parity
+  // (quoin header and closer there) and stops at it in the others: b's
+  // bond is turned by a course if that parity would be a's.
+  B.course_shift = 0;
+  if (quoin_parity(B) == quoin_parity(A)) B.course_shift = 1;
+  A.corners.push_back({b.corner_at_end, tb, 1 - quoin_parity(A), shared});
+  B.corners.push_back({false, ta, 1 - quoin_parity(B), shared});
 }
 std::string group_of(const WallSection& w, const WallBlock& b) {
   std::string g = w.group_prefix;

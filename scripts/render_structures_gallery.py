@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """The structures gallery of docs/structures.md: docs/img/wall_gallery.png
-(the bonds, leaves, openings, a corner and a gable) and
-docs/img/tower_gallery.png (a square and an octagonal tower and the bell
+(the bonds, leaves, openings, a corner and a gable),
+docs/img/wall_corners.png (English and Flemish bond corners with their
+closers) and docs/img/tower_gallery.png (a square and an octagonal tower and the bell
 tower with its spire), each a grid of panels drawn by render_blocks.py from
 the blocks of `polydem mesh`.
 
@@ -38,6 +39,11 @@ PANELS_WALLS = [
     (WALLS, "corner: quoins interlocking", (0, 3.2, 4.5, 6.8), (-20, 25), "block_id"),
     ("examples/structures/gable_wall.toml", "gable, English bond, lintel", (-0.5, 4.5, -0.5, 0.5), (-60, 15),
      "block_id"),
+]
+CORNERS = "examples/structures/wall_corners.toml"
+PANELS_CORNERS = [
+    (CORNERS, "English bond corner: quoin headers, queen closers", (1.2, 3.1, -0.5, 2.0), (-40, 18), "block_id"),
+    (CORNERS, "Flemish bond corner: quoin headers, queen closers", (4.8, 6.7, -0.5, 2.0), (-40, 18), "block_id"),
 ]
 TOWERS = "examples/structures/tower_gallery.toml"
 PANELS_TOWERS = [
@@ -84,6 +90,7 @@ def main(argv=None):
     os.makedirs(args.work, exist_ok=True)
     grid(args.polydem, args.work, PANELS_WALLS, 4, "docs/img/wall_gallery.png", (18, 7.5))
     grid(args.polydem, args.work, PANELS_TOWERS, 3, "docs/img/tower_gallery.png", (15, 5.5))
+    grid(args.polydem, args.work, PANELS_CORNERS, 2, "docs/img/wall_corners.png", (12, 5))
 
 
 if __name__ == "__main__":

@@ -351,6 +351,238 @@ TEST(Wall, GableCoursesCutByTheSlopesUnderAnApexStone) {
   }
 }
 
+// Two walls at a corner, placed and interlocked as the deck reader does
+// (io/wall_section.cpp, place_at_corner): b starts at a's end (or start),
+// turning left or right, on a's outer face.
+struct CornerPair {
+  WallSpec a, b;
+};
+
+CornerPair corner_pair(WallBond bond_a, WallBond bond_b, bool at_end, bool left, int courses) {
+  CornerPair p;
+  p.a = small_wall();
+  p.a.name = "a";
+  p.a.bond = bond_a;
+  p.a.length = 2.4;
+  p.a.height = 0.2 * courses;
+  p.a.origin = Vec3(0.3, -0.2, 0.0);
+  p.a.direction = 30;
+  p.b = p.a;
+  p.b.name = "b";
+  p.b.bond = bond_b;
+  p.b.length = 2.0;
+  const double T = wall_thickness(p.a);
+  const double th = p.a.direction * kPi / 180.0;
+  const Vec3 eu(std::cos(th), std::sin(th), 0), ev(-std::sin(th), std::cos(th), 0);
+  p.b.origin = p.a.origin + (at_end ? p.a.length - 0.5 * T : 0.5 * T) * eu + (left ? -0.5 : 0.5) * T * ev;
+  p.b.direction = p.a.direction + (left ? 90.0 : -90.0);
+  p.b.course_shift = quoin_parity(p.b) == quoin_parity(p.a) ? 1 : 0;
+  p.a.corners.push_back({at_end, T, 1 - quoin_parity(p.a), courses});
+  p.b.corners.push_back({false, T, 1 - quoin_parity(p.b), courses});
+  return p;
+}
+
+// Both walls of a corner tile the L-shaped solid exactly: every block
+// valid, no two overlapping (separating axes, 1e-9), volumes summing to
+// (a's plan + b's plan less the shared corner square) x height, less the
+// openings, to 1e-9 relative.
+std::vector<WallBlock> expect_exact_walls(const std::vector<WallSpec>& walls, int corners) {
+  std::vector<WallModel> models;
+  for (const auto& s : walls) models.push_back(build_wall(s));
+  const double T = models.front().thickness;
+  double expected = -corners * T * T * walls.front().height, solid = 0;
+  std::vector<WallBlock> all;
+  for (std::size_t i = 0; i < walls.size(); ++i) {
+    EXPECT_DOUBLE_EQ(models[i].thickness, T);
+    expected += box_minus_openings(walls[i], T);
+    solid += models[i].solid_volume;
+    all.insert(all.end(), models[i].blocks.begin(), models[i].blocks.end());
+  }
+  EXPECT_NEAR(solid, expected, 1e-12 * expected);
+  double sum = 0;
+  std::vector<Eigen::AlignedBox3d> boxes;
+  for (const auto& b : all) {
+    EXPECT_NO_THROW(validate(b.shape)) << b.name;
+    sum += volume(b.shape);
+    Eigen::AlignedBox3d box;
+    for (const auto& v : b.shape.vertices) box.extend(v);
+    boxes.push_back(box.extend(box.min() - Vec3::Constant(1e-9)).extend(box.max() + Vec3::Constant(1e-9)));
+  }
+  EXPECT_NEAR(sum, expected, 1e-9 * expected);
+  for (std::size_t i = 0; i < all.size(); ++i)
+    for (std::size_t j = i + 1; j < all.size(); ++j)
+      if (boxes[i].intersects(boxes[j])) {
+        EXPECT_FALSE(interiors_overlap(all[i].shape, all[j].shape, 1e-9)) << all[i].name << " overlaps " << all[j].name;
+      }
+  for (std::size_t i = 0; i < walls.size(); ++i) {
+    for (const auto& o : walls[i].openings) {
+      const Polyhedron hole = opening_prism(walls[i], models[i], o);
+      for (const auto& b : all) EXPECT_FALSE(interiors_overlap(b.shape, hole, 1e-9)) << b.name << " in an opening";
+    }
+  }
+  return all;
+}
+
+std::vector<WallBlock> expect_exact_corner(const CornerPair& p) { return expect_exact_walls({p.a, p.b}, 1); }
+
+// The vertical joints, course by course, on one face of wall s (side -1:
+// v = -T/2, +1: v = +T/2) from the blocks of both walls, as distances from
+// the corner along the face: from the corner's outer end on the outer face,
+// from the inner corner on the inner face (where the visible face starts).
+// Joints at the face's ends are left out.
+std::map<int, std::vector<double>> corner_face_joints(const WallSpec& s, const WallSpec& other,
+                                                      const std::vector<WallBlock>& all, int side, double ch,
+                                                      int corner = 0) {
+  const double T = wall_thickness(s);
+  const double th = s.direction * kPi / 180.0;
+  const Vec3 eu(std::cos(th), std::sin(th), 0), ev(-std::sin(th), std::cos(th), 0);
+  const Vec3 n = side * ev;
+  const double d = n.dot(s.origin) + 0.5 * T;
+  const WallCorner& k = s.corners.at(static_cast<std::size_t>(corner));
+  // Is this face the inner one (the other wall on its side)?
+  const Vec3 other_mid = other.origin + 0.5 * other.length * Vec3(std::cos(other.direction * kPi / 180.0),
+                                                                   std::sin(other.direction * kPi / 180.0), 0);
+  const bool inner = n.dot(other_mid) > d;
+  const double u_corner = k.at_end ? (inner ? s.length - T : s.length) : (inner ? T : 0.0);
+  const double u_free = k.at_end ? 0.0 : s.length;
+  const double lo = std::min(u_corner, u_free), hi = std::max(u_corner, u_free);
+  std::map<int, std::set<double>> sets;
+  for (const auto& b : all)
+    for (std::size_t f = 0; f < b.shape.faces.size(); ++f) {
+      if (b.shape.normals[f].dot(n) < 1 - 1e-12 || std::abs(b.shape.offsets[f] - d) > 1e-9) continue;
+      double u0 = 1e300, u1 = -1e300, z0 = 1e300;
+      for (int vi : b.shape.faces[f]) {
+        const Vec3& x = b.shape.vertices[static_cast<std::size_t>(vi)];
+        const double u = eu.dot(x - s.origin);
+        u0 = std::min(u0, u), u1 = std::max(u1, u), z0 = std::min(z0, x.z() - s.origin.z());
+      }
+      const int c = static_cast<int>(std::lround(z0 / ch));
+      for (double u : {u0, u1})
+        if (u > lo + 1e-9 && u < hi - 1e-9) sets[c].insert(std::round(std::abs(u - u_corner) * 1e9) / 1e9);
+    }
+  std::map<int, std::vector<double>> out;
+  for (auto& [c, set] : sets) out[c] = std::vector<double>(set.begin(), set.end());
+  return out;
+}
+
+// The smallest distance between a joint of one course within `near` of the
+// corner and a joint of the course below.
+double smallest_lap_near_corner(const std::map<int, std::vector<double>>& joints, int courses, double near) {
+  double best = 1e300;
+  for (int c = 1; c < courses; ++c) {
+    if (!joints.count(c) || !joints.count(c - 1)) continue;
+    for (double a : joints.at(c))
+      for (double b : joints.at(c - 1))
+        if (a <= near || b <= near) best = std::min(best, std::abs(a - b));
+  }
+  return best;
+}
+
+TEST(Wall, EnglishFlemishAndHeaderBondCornersTileAndKeepTheQuarterLapAtTheQuoin) {
+  struct Case {
+    WallBond a, b;
+  };
+  for (const Case& k : {Case{WallBond::english, WallBond::english}, Case{WallBond::flemish, WallBond::flemish},
+                        Case{WallBond::english, WallBond::flemish}, Case{WallBond::flemish, WallBond::english},
+                        Case{WallBond::header, WallBond::header}})
+    for (bool at_end : {true, false})
+      for (bool left : {true, false}) {
+        SCOPED_TRACE(std::string(to_string(WallBlockKind::unit)) + " bonds " + std::to_string(static_cast<int>(k.a)) +
+                     "/" + std::to_string(static_cast<int>(k.b)) + (at_end ? " at end" : " at start") +
+                     (left ? " left" : " right"));
+        const CornerPair p = corner_pair(k.a, k.b, at_end, left, 6);
+        const std::vector<WallBlock> all = expect_exact_corner(p);
+        // Every piece at least a quarter unit along its wall; the closers
+        // exactly a quarter unit.
+        int closers = 0;
+        for (const WallSpec* s : {&p.a, &p.b}) {
+          const WallModel m = build_wall(*s);
+          EXPECT_GE(shortest_piece(*s, m), 0.25 * s->unit_length - 1e-12);
+          for (const auto& b : m.blocks) {
+            if (b.kind != WallBlockKind::closer) continue;
+            ++closers;
+            double u0 = 1e300, u1 = -1e300;
+            for (const auto& x : local(*s, m, b.shape)) u0 = std::min(u0, x.x()), u1 = std::max(u1, x.x());
+            EXPECT_NEAR(u1 - u0, 0.1, 1e-12) << b.name;
+          }
+        }
+        // One closer per course at the quoin: the wall owning the corner square lays it.
+        EXPECT_EQ(closers, 6);
+        // The lap on all four faces near the corner: no joint within a
+        // quarter unit (0.1 m) of a joint of the course below.
+        for (const WallSpec* s : {&p.a, &p.b})
+          for (int side : {-1, 1}) {
+            const auto joints = corner_face_joints(*s, s == &p.a ? p.b : p.a, all, side, 0.2);
+            EXPECT_EQ(joints.size(), 6u);
+            EXPECT_NEAR(smallest_lap_near_corner(joints, 6, 1.2), 0.1, 1e-9) << s->name << " side " << side;
+          }
+      }
+}
+
+// What the closers are for: the same English corner with each queen closer
+// left out (the quoin header followed at once by headers: every joint of the
+// owning course beyond the quoin header a quarter unit nearer the corner)
+// has straight joints over the course below at the quoin.
+TEST(Wall, WithoutTheQueenClosersAnEnglishCornerHasStraightJoints) {
+  const CornerPair p = corner_pair(WallBond::english, WallBond::english, true, true, 6);
+  const std::vector<WallBlock> all = expect_exact_corner(p);
+  const auto joints = corner_face_joints(p.a, p.b, all, -1, 0.2);  // a's outer face
+  EXPECT_NEAR(smallest_lap_near_corner(joints, 6, 1.2), 0.1, 1e-9);
+  auto without = joints;
+  for (auto& [c, js] : without) {
+    if (c % 2 != quoin_parity(p.a)) continue;
+    // Distances from the corner: the quoin header's joint at 0.2 stays, every
+    // joint beyond it comes a quarter unit (0.1) nearer (the closer's own
+    // joint at 0.3 falls onto 0.2).
+    std::set<double> shifted;
+    for (double j : js) shifted.insert(j > 0.2 + 1e-9 ? std::round((j - 0.1) * 1e9) / 1e9 : j);
+    js.assign(shifted.begin(), shifted.end());
+  }
+  EXPECT_LT(smallest_lap_near_corner(without, 6, 1.2), 1e-9);
+}
+
+TEST(Wall, EnglishCornerWithAnOpeningAndCornersAtBothEnds) {
+  CornerPair p = corner_pair(WallBond::english, WallBond::english, true, true, 8);
+  p.b.openings = {WallOpening{.position = 0.9, .sill = 0.4, .width = 0.4, .height = 0.8}};
+  expect_exact_corner(p);
+  // A third wall at b's end: b has corners at both ends, laid from each and
+  // meeting in the middle (b's length 2.05 m: not a whole number of units).
+  for (double length : {2.0, 2.05, 2.15}) {
+    CornerPair q = corner_pair(WallBond::flemish, WallBond::flemish, true, true, 6);
+    q.b.length = length;
+    CornerPair r;
+    r.a = q.b;
+    r.b = q.b;
+    r.b.name = "c";
+    r.b.corners.clear();
+    r.b.length = 1.6;
+    const double T = wall_thickness(r.a);
+    const double th = r.a.direction * kPi / 180.0;
+    const Vec3 eu(std::cos(th), std::sin(th), 0), ev(-std::sin(th), std::cos(th), 0);
+    r.b.origin = r.a.origin + (r.a.length - 0.5 * T) * eu - 0.5 * T * ev;
+    r.b.direction = r.a.direction + 90;
+    r.b.course_shift = 0;
+    r.b.course_shift = quoin_parity(r.b) == quoin_parity(r.a) ? 1 : 0;
+    r.a.corners.push_back({true, T, 1 - quoin_parity(r.a), 6});
+    r.b.corners.push_back({false, T, 1 - quoin_parity(r.b), 6});
+    q.b = r.a;
+    SCOPED_TRACE(length);
+    const std::vector<WallBlock> all = expect_exact_walls({q.a, r.a, r.b}, 2);
+    for (const CornerPair* pair : {&q, &r})
+      for (const WallSpec* s : {&pair->a, &pair->b}) {
+        const WallSpec& other = s == &pair->a ? pair->b : pair->a;
+        // b's corners: [0] at its start (with a), [1] at its end (with c).
+        const int corner = s->corners.size() == 1 ? 0 : (pair == &q ? 0 : 1);
+        for (int side : {-1, 1})
+          EXPECT_NEAR(smallest_lap_near_corner(corner_face_joints(*s, other, all, side, 0.2, corner), 6, 0.5), 0.1,
+                      1e-9)
+              << s->name << " side " << side << " corner " << corner;
+      }
+    const WallModel mb = build_wall(r.a);
+    EXPECT_GE(shortest_piece(r.a, mb), 0.25 * r.a.unit_length - 1e-12);
+  }
+}
+
 void expect_spec_error(const WallSpec& s, const std::string& field, int opening, const std::string& fragment) {
   try {
     build_wall(s);
@@ -407,6 +639,17 @@ TEST(Wall, BadSpecsNameTheirField) {
   s.openings[0] = window;
   s.openings[0].bearing = 0.05;
   expect_spec_error(s, "bearing", 0, "quarter unit");
+  // Corners with closers: header bond needs two headers to a unit length;
+  // the other wall as thick; room beyond the corner.
+  CornerPair p = corner_pair(WallBond::header, WallBond::header, true, true, 4);
+  p.a.unit_width = 0.15;
+  expect_spec_error(p.a, "unit_width", -1, "cannot close a corner");
+  p = corner_pair(WallBond::english, WallBond::english, true, true, 4);
+  p.a.corners.front().depth = 0.2;
+  expect_spec_error(p.a, "unit_length", -1, "one unit length");
+  p = corner_pair(WallBond::english, WallBond::english, true, true, 4);
+  p.b.length = 1.1;
+  expect_spec_error(p.b, "length", -1, "two unit lengths");
 }
 
 }  // namespace

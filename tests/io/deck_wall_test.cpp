@@ -177,9 +177,45 @@ TEST(DeckWall, CornersThatCannotCloseAreRefused) {
   expect_error(a + "[[wall]]\nname = \"b\"\ncorner_with = \"a\"\nheight = 1.0\n[[wall]]\ncorner_with = \"a\"\nheight = 1.0\n", 9,
                "wall[3].corner_at", "already has a corner");
   expect_error(a + "[[wall]]\nturn = \"left\"\n", 6, "wall[2].turn", "with corner_with only");
+  // Closers need the same units on both walls, two headers to a unit length.
+  const std::string e = a + "bond = \"english\"\n[[wall]]\ncorner_with = \"a\"\nheight = 1.0\nbond = \"flemish\"\n";
+  expect_error(e + "unit_size = [0.5, 0.2, 0.25]\n", 10, "wall[2].unit_size", "same length and width");
+  expect_error(a + "bond = \"header\"\nunit_size = [0.4, 0.2, 0.15]\n[[wall]]\ncorner_with = \"a\"\nheight = 1.0\n"
+                   "bond = \"header\"\nunit_size = [0.4, 0.2, 0.15]\n",
+               11, "wall[2].unit_size", "two headers side by side");
+  expect_error(a + "bond = \"english\"\n[[wall]]\ncorner_with = \"a\"\nheight = 1.0\nbond = \"english\"\nlength = 1.0\n", 10,
+               "wall[2].length", "two unit lengths");
   // An opening too close to the corner.
   expect_error(a + "[[wall.opening]]\nposition = 0.6\nwidth = 1.0\nheight = 0.4\n[[wall]]\ncorner_with = \"a\"\nheight = 1.0\n",
                7, "wall[1].opening[1].width", "for a corner");
+}
+
+// English and Flemish bond walls at a corner (corner_with): the second
+// wall's bond is turned by a course so that the two own the corner square
+// in alternate courses, each with a quoin header and a queen closer (group
+// "closer" with group_by = "kind"): one closer per course, exactly a quarter
+// unit (0.1 m) by a unit length (0.4 m) by a course; the volume is the
+// L-shaped plan's times the height.
+TEST(DeckWall, EnglishAndFlemishCornersCloseWithQueenClosers) {
+  for (const char* bond : {"english", "flemish"}) {
+    SCOPED_TRACE(bond);
+    const std::string b = std::string("bond = \"") + bond + "\"\ngroup_by = \"kind\"\n";
+    const std::string deck = "[[wall]]\nname = \"a\"\nlength = 2.0\nheight = 1.2\n" + b +
+                             "[[wall]]\nname = \"b\"\ncorner_with = \"a\"\nturn = \"right\"\nlength = 1.6\nheight = 1.2\n" + b;
+    const SceneSpec s = parse_deck(deck, kFile);
+    double volume = 0;
+    int closers = 0;
+    for (const auto& blk : s.blocks) {
+      const double v = mass_properties(blk.shape).volume;
+      volume += v;
+      if (blk.group != "closer") continue;
+      ++closers;
+      EXPECT_NEAR(v, 0.1 * 0.4 * 0.2, 1e-15) << blk.name;
+    }
+    // a: 2.0 x 0.4; b: 1.6 x 0.4 from a's outer face, sharing 0.4 x 0.4: 1.28 m², 1.2 m high.
+    EXPECT_NEAR(volume, 1.28 * 1.2, 1e-12);
+    EXPECT_EQ(closers, 6);
+  }
 }
 
 TEST(DeckWall, GroupByLeafAndWall) {

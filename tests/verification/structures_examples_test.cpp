@@ -37,7 +37,7 @@ TEST_P(StructuresExample, ShortRunStaysPut) {
 
 INSTANTIATE_TEST_SUITE_P(Decks, StructuresExample,
                          ::testing::Values("wall_gallery.toml", "tower_gallery.toml", "bell_tower.toml",
-                                           "gable_wall.toml"),
+                                           "gable_wall.toml", "wall_corners.toml"),
                          [](const auto& info) {
                            std::string n = info.param;
                            return n.substr(0, n.find('.'));
