@@ -79,6 +79,8 @@ def main():
     ap.add_argument("--polydem-interval", type=float, help="timed simulated s for polydem (default 1)")
     ap.add_argument("--yade-interval", type=float, help="timed simulated s for YADE (default 0.01)")
     ap.add_argument("--settle-max", type=float, help="longest settle (simulated s), both codes (default 0.5)")
+    ap.add_argument("--yade-dt", type=float, default=0.0,
+                    help="YADE's time step (s); default 0: 0.8 x YADE's polyhedra P-wave estimate")
     ap.add_argument("--settle-speed", type=float, default=1e-3, help="settled when every brick is slower (m/s)")
     ap.add_argument("--quick", action="store_true",
                     help="a check that everything runs: defaults become intervals 0.05 s (polydem) and "
@@ -110,7 +112,7 @@ def main():
         load = " ".join(f.read().split()[:3])
     print(f"# {os.cpu_count()} cores, {cpu}, load at start {load}")
     if yade is None:
-        why = "--no-yade given" if a.no_yade else "`yade` is not installed (Debian: apt-get install yade)"
+        why = "--no-yade given" if a.no_yade else "yade is not installed: no `yade` on PATH; Debian: apt-get install yade"
         print(f"# YADE: NOT RUN ({why}); only the polydem half runs.")
     else:
         v = subprocess.run([yade, "--version"], capture_output=True, text=True).stdout.strip().splitlines()
@@ -128,7 +130,7 @@ def main():
                                  "--interval", str(a.polydem_interval)])]
             if yade:
                 jobs.append(("yade", [yade, "-n", "-x", "-j", str(t), os.path.join(HERE, "yade_wall.py"),
-                                      "--interval", str(a.yade_interval)]))
+                                      "--interval", str(a.yade_interval), "--dt", str(a.yade_dt)]))
             for code, cmd in jobs:
                 cmd = cmd + ["--courses", str(courses), "--bricks", str(bricks)] + common
                 r, rss = measured(cmd, env)

@@ -53,6 +53,7 @@ p.add_argument("--ks-ratio", type=float, default=0.4)
 p.add_argument("--friction", type=float, default=30.0, help="friction angle (degrees)")
 p.add_argument("--density", type=float, default=2600.0)
 p.add_argument("--safety", type=float, default=0.8, help="fraction of PWaveTimeStep()")
+p.add_argument("--dt", type=float, default=0.0, help="time step (s); 0: --safety x the P-wave estimate")
 p.add_argument("--damping", type=float, default=0.2, help="NewtonIntegrator local damping")
 p.add_argument("--settle-max", type=float, default=0.5, help="settle at most this long (simulated s)")
 p.add_argument("--settle-speed", type=float, default=1e-3, help="settled: every brick slower than this (m/s)")
@@ -93,7 +94,7 @@ O.engines = [
 ]
 critical = min((3.0 * O.bodies[i].shape.GetVolume() / (4.0 * math.pi)) ** (1.0 / 3.0)
                / math.sqrt(young / a.density) for i in bricks)
-O.dt = a.safety * critical
+O.dt = a.dt if a.dt > 0 else a.safety * critical
 
 
 def max_speed():
@@ -131,7 +132,7 @@ wall = time.perf_counter() - t0
 contacts_end, loaded_end = count_contacts()
 print("RESULT " + json.dumps({
     "code": "yade", "blocks": len(bricks), "dt": O.dt, "critical_dt": critical,
-    "dt_rule": "%g x the polyhedra P-wave estimate" % a.safety,
+    "dt_rule": ("given" if a.dt > 0 else "%g x the polyhedra P-wave estimate" % a.safety),
     "damping": "NewtonIntegrator local damping %g" % a.damping,
     "settle_time": settle_time, "settle_wall": settle_wall, "settled_speed": settled_speed,
     "interval": steps * O.dt, "steps": steps, "wall": wall,
