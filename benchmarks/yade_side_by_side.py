@@ -43,6 +43,7 @@ import re
 import shutil
 import subprocess
 import sys
+import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TIME = "/usr/bin/time"
@@ -85,6 +86,8 @@ def main():
     ap.add_argument("--quick", action="store_true",
                     help="a check that everything runs: defaults become intervals 0.05 s (polydem) and "
                          "0.002 s (YADE), settle at most 0.03 s")
+    ap.add_argument("--polydem-fixed-threads", action="store_true",
+                    help="polydem with simulation.adaptive_threads = false (default: the thread governor on)")
     ap.add_argument("--no-yade", action="store_true", help="run only the polydem half")
     ap.add_argument("--csv", help="also write the table as CSV here")
     a = ap.parse_args()
@@ -124,13 +127,16 @@ def main():
     py = "/usr/bin/python3"
     common = ["--settle-max", str(a.settle_max), "--settle-speed", str(a.settle_speed)]
     rows = []
+    states = tempfile.TemporaryDirectory(prefix="yade_side_by_side_")  # YADE's settled walls
     for courses, bricks in sizes:
         for t in threads:
             jobs = [("polydem", [py, os.path.join(HERE, "polydem_wall.py"), "--threads", str(t),
-                                 "--interval", str(a.polydem_interval)])]
+                                 "--interval", str(a.polydem_interval)]
+                     + (["--fixed-threads"] if a.polydem_fixed_threads else []))]
             if yade:
                 jobs.append(("yade", [yade, "-n", "-x", "-j", str(t), os.path.join(HERE, "yade_wall.py"),
-                                      "--interval", str(a.yade_interval), "--dt", str(a.yade_dt)]))
+                                      "--interval", str(a.yade_interval), "--dt", str(a.yade_dt),
+                                      "--state", os.path.join(states.name, f"wall_{courses}x{bricks}.yade.gz")]))
             for code, cmd in jobs:
                 cmd = cmd + ["--courses", str(courses), "--bricks", str(bricks)] + common
                 r, rss = measured(cmd, env)
@@ -140,6 +146,8 @@ def main():
                     "dt_s": r["dt"], "settled_at_s": r["settle_time"], "settled_speed_m_s": r["settled_speed"],
                     "interval_s": r["interval"], "steps": r["steps"], "contacts": contacts,
                     "subcontacts": r.get("subcontacts"), "wall_s": r["wall"],
+                    "settle_reused": r.get("settled_state_reused", False),
+                    "threads_profile": r.get("threads_profile"),
                     "wall_per_sim_s": r["wall"] / r["interval"], "wall_per_step_s": r["wall"] / r["steps"],
                     "ns_per_contact_step": 1e9 * r["wall"] / (r["steps"] * contacts), "peak_rss_mib": rss,
                 })
@@ -168,6 +176,12 @@ def main():
     print()
     for r in rows:
         note = "" if r["settled_speed_m_s"] < a.settle_speed else " -- NOT settled: --settle-max reached"
+        if r["settle_reused"]:
+            note += " (the wall YADE settled for the first thread count, loaded)"
+        tp = r["threads_profile"]
+        if r["code"] == "polydem" and r["threads"] > 1 and tp:
+            note += (f"; thread governor: {tp.get('probes')} probes, {tp.get('switches')} switches, "
+                     f"{tp.get('steps_on_one')} steps on one thread (whole run)")
         print(f"# {r['size']} {r['code']} {r['threads']} thread(s): settle ended at {r['settled_at_s']:.4f} s "
               f"(fastest brick {r['settled_speed_m_s']:.2g} m/s){note}, timed {r['interval_s']:.4g} s")
     b = baseline([py, "-c", "import numpy, polydem"], env)
