@@ -95,6 +95,9 @@ def main():
     a.polydem_interval, a.yade_interval, a.settle_max = (
         d if v is None else v for v, d in zip((a.polydem_interval, a.yade_interval, a.settle_max), defaults))
 
+    if not os.path.isdir(os.path.join(a.build, "python", "polydem")):
+        raise SystemExit(f"no polydem Python module in {a.build}/python: build polydem (scripts/build.sh) "
+                         "or give --build DIR")
     env = dict(os.environ)
     env["PYTHONPATH"] = os.path.join(os.path.abspath(a.build), "python") + (
         os.pathsep + env["PYTHONPATH"] if env.get("PYTHONPATH") else "")
