@@ -62,6 +62,24 @@ Generated::Part generated_part(std::string section, const toml::node* at, int de
   return part;
 }
 
+// The name of section `table` (the i-th, 0-based, of `kind`) must differ
+// from the earlier sections' names (their block names start with it): a
+// DeckError at KIND[i].name naming the earlier one and its line. `earlier`
+// are sections with `spec.name` and `line`.
+template <class Section>
+void require_new_section_name(const deck_reader::Deck& deck, std::string_view kind, const toml::table& table,
+                              std::size_t i, const std::string& name, const std::vector<Section>& earlier) {
+  for (std::size_t j = 0; j < earlier.size(); ++j) {
+    if (earlier[j].spec.name != name) continue;
+    const toml::node* at = table.get("name");
+    std::string what(kind);
+    what.append(" ").append(deck_reader::in_quotes(name)).append(" is also the name of ");
+    what.append(deck_reader::indexed(kind, j + 1)).append(" at line ").append(std::to_string(earlier[j].line));
+    what.append(" (block names start with it)");
+    deck.fail(deck_reader::indexed(kind, i + 1) + ".name", at ? at : &table, what);
+  }
+}
+
 // Every generator section the deck has, in the table's order.
 Generated read_generators(const deck_reader::Deck& deck, SceneSpec& scene);
 

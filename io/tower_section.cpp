@@ -156,14 +156,7 @@ void read_tower_sections(const Deck& deck, Generated& out, SceneSpec&) {
   std::vector<TowerSection> towers;
   for (std::size_t i = 0; i < tables.size(); ++i) {
     TowerSection w = read_tower(deck, *tables[i], i);
-    for (std::size_t j = 0; j < towers.size(); ++j)
-      if (towers[j].spec.name == w.spec.name) {
-        const toml::node* at = tables[i]->get("name");
-        std::string what = "tower ";
-        what.append(in_quotes(w.spec.name)).append(" is also the name of tower[").append(std::to_string(j + 1));
-        what.append("] at line ").append(std::to_string(towers[j].line)).append(" (block names start with it)");
-        deck.fail(indexed("tower", i + 1) + ".name", at ? at : tables[i], what);
-      }
+    require_new_section_name(deck, "tower", *tables[i], i, w.spec.name, towers);
     towers.push_back(std::move(w));
   }
   for (std::size_t i = 0; i < towers.size(); ++i) {

@@ -284,14 +284,7 @@ void read_wall_sections(const Deck& deck, Generated& out, SceneSpec&) {
         w.readers.front().fail("corner_with", "no [[wall]] above this one is named " + in_quotes(w.corner_with));
       place_at_corner(w, walls[j]);
     }
-    for (std::size_t j = 0; j < walls.size(); ++j)
-      if (walls[j].spec.name == w.spec.name) {
-        const toml::node* at = tables[i]->get("name");
-        std::string what = "wall ";
-        what.append(in_quotes(w.spec.name)).append(" is also the name of wall[").append(std::to_string(j + 1));
-        what.append("] at line ").append(std::to_string(walls[j].line)).append(" (block names start with it)");
-        deck.fail(indexed("wall", i + 1) + ".name", at ? at : tables[i], what);
-      }
+    require_new_section_name(deck, "wall", *tables[i], i, w.spec.name, walls);
     walls.push_back(std::move(w));
   }
   for (WallSection& w : walls) build_section(deck, w);
