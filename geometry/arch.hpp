@@ -109,11 +109,9 @@ struct ArchSpec {
 };
 
 // An invalid ArchSpec. `field` is the deck key of [[arch]] that is wrong.
-struct ArchSpecError : GeometryError {
+struct ArchSpecError : GeneratorSpecError {
   ArchSpecError(std::string field_name, std::string what)
-      : GeometryError("arch: " + field_name + ": " + what), field(std::move(field_name)), detail(std::move(what)) {}
-  std::string field;
-  std::string detail;
+      : GeneratorSpecError("arch", std::move(field_name), -1, std::move(what)) {}
 };
 
 enum class ArchBlockKind { voussoir, pier, abutment, base };

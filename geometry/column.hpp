@@ -50,11 +50,9 @@ struct ColumnSpec {
 };
 
 // An invalid ColumnSpec; `field` is the deck key of [[column]].
-struct ColumnSpecError : GeometryError {
+struct ColumnSpecError : GeneratorSpecError {
   ColumnSpecError(std::string field_name, std::string what)
-      : GeometryError("column: " + field_name + ": " + what), field(std::move(field_name)), detail(std::move(what)) {}
-  std::string field;
-  std::string detail;
+      : GeneratorSpecError("column", std::move(field_name), -1, std::move(what)) {}
 };
 
 enum class ColumnBlockKind { base, plinth, drum, capital };

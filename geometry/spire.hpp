@@ -91,11 +91,9 @@ struct SpireSpec {
 
 // An invalid SpireSpec. `field` is the SpireSpec member (= the deck key of
 // [spire]) that is wrong, so the deck reader can name file, line and key.
-struct SpireSpecError : GeometryError {
+struct SpireSpecError : GeneratorSpecError {
   SpireSpecError(std::string field_name, std::string what)
-      : GeometryError("spire: " + field_name + ": " + what), field(std::move(field_name)), detail(std::move(what)) {}
-  std::string field;   // e.g. "window_width"
-  std::string detail;  // the message without the "spire: field: " prefix
+      : GeneratorSpecError("spire", std::move(field_name), -1, std::move(what)) {}
 };
 
 // Checks every field and the combinations (inner surface still hollow at the

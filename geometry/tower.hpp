@@ -59,15 +59,9 @@ struct TowerSpec {
   std::vector<TowerOpening> openings;
 };
 
-struct TowerSpecError : GeometryError {
+struct TowerSpecError : GeneratorSpecError {
   TowerSpecError(std::string field_name, int opening_index, std::string what)
-      : GeometryError("tower: " + field_name + ": " + what),
-        field(std::move(field_name)),
-        opening(opening_index),
-        detail(std::move(what)) {}
-  std::string field;
-  int opening = -1;
-  std::string detail;
+      : GeneratorSpecError("tower", std::move(field_name), opening_index, std::move(what)) {}
 };
 
 enum class TowerBlockKind { stone, jamb, lintel, voussoir };

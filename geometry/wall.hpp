@@ -156,15 +156,9 @@ struct WallSpec {
 
 // An invalid WallSpec: `field` is the WallSpec (or WallOpening) member =
 // the deck key, `opening` the opening's index or -1.
-struct WallSpecError : GeometryError {
+struct WallSpecError : GeneratorSpecError {
   WallSpecError(std::string field_name, int opening_index, std::string what)
-      : GeometryError("wall: " + field_name + ": " + what),
-        field(std::move(field_name)),
-        opening(opening_index),
-        detail(std::move(what)) {}
-  std::string field;
-  int opening = -1;
-  std::string detail;
+      : GeneratorSpecError("wall", std::move(field_name), opening_index, std::move(what)) {}
 };
 
 // closer: a queen closer at a quoin of an English, Flemish or header bond corner.
