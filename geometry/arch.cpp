@@ -9,6 +9,7 @@
 // the same way. The left half of the arch is computed, the right half is its
 // mirror image (x -> −x, exact in floating point), so the arch is symmetric to
 // the last bit.
+#include "geometry/generator_text.hpp"
 #include "geometry/arch.hpp"
 
 #include <algorithm>
@@ -20,13 +21,11 @@ namespace polydem {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using generator_text::num;
+using generator_text::zero_padded;
+using generator_text::digits_for;
 
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
+constexpr double kPi = std::numbers::pi;
 
 void require(bool ok, const char* field, const std::string& what) {
   if (!ok) throw ArchSpecError(field, what);
@@ -34,13 +33,6 @@ void require(bool ok, const char* field, const std::string& what) {
 
 void require_positive(double v, const char* field) {
   require(std::isfinite(v) && v > 0, field, "must be > 0 and finite (got " + num(v) + ")");
-}
-
-std::string zero_padded(int v, int max_value) {
-  const std::size_t width = std::max<std::size_t>(1, std::to_string(max_value).size());
-  std::string s = std::to_string(v);
-  while (s.size() < width) s.insert(s.begin(), '0');
-  return s;
 }
 
 // Joint positions of ring r: whole voussoirs, or shifted by half of one.
@@ -329,9 +321,9 @@ ArchModel build_arch(const ArchSpec& s) {
         b.ring = r;
         b.index = static_cast<int>(i);
         std::string name;
-        if (many_spans) name += "span" + zero_padded(sp, s.spans - 1) + "_";
-        if (many_rings) name += "ring" + zero_padded(r, s.rings - 1) + "_";
-        name += "voussoir" + zero_padded(b.index, std::max(10, n));
+        if (many_spans) name += "span" + zero_padded(sp, digits_for(s.spans - 1)) + "_";
+        if (many_rings) name += "ring" + zero_padded(r, digits_for(s.rings - 1)) + "_";
+        name += "voussoir" + zero_padded(b.index, digits_for(std::max(10, n)));
         b.name = name;
         model.blocks.push_back(std::move(b));
       }
@@ -384,8 +376,8 @@ ArchModel build_arch(const ArchSpec& s) {
       b.kind = pier ? ArchBlockKind::pier : ArchBlockKind::abutment;
       b.index = i;
       b.course = pier ? c : -1;
-      b.name = (pier ? "pier" : "abutment") + zero_padded(i, s.spans);
-      if (pier && courses > 1) b.name += "_course" + zero_padded(c, courses - 1);
+      b.name = (pier ? "pier" : "abutment") + zero_padded(i, digits_for(s.spans));
+      if (pier && courses > 1) b.name += "_course" + zero_padded(c, digits_for(courses - 1));
       model.blocks.push_back(std::move(b));
     }
   }

@@ -2,6 +2,7 @@
 // what each block is, and the polygon standing for the circle, is at the top
 // of geometry/column.hpp. Consecutive blocks share their bed planes exactly
 // (the same z value ends one block and starts the next).
+#include "geometry/generator_text.hpp"
 #include "geometry/column.hpp"
 
 #include <algorithm>
@@ -13,13 +14,11 @@ namespace polydem {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using generator_text::num;
+using generator_text::zero_padded;
+using generator_text::digits_for;
 
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
+constexpr double kPi = std::numbers::pi;
 
 void require(bool ok, const char* field, const std::string& what) {
   if (!ok) throw ColumnSpecError(field, what);
@@ -47,13 +46,6 @@ std::vector<Vec2> square(double width) {
 std::vector<Vec2> shifted(std::vector<Vec2> p, const Vec3& o) {
   for (Vec2& q : p) q += Vec2(o.x(), o.y());
   return p;
-}
-
-std::string zero_padded(int v, int max_value) {
-  const std::size_t width = std::max<std::size_t>(1, std::to_string(max_value).size());
-  std::string s = std::to_string(v);
-  while (s.size() < width) s.insert(s.begin(), '0');
-  return s;
 }
 
 double plinth_width(const ColumnSpec& s) { return s.plinth_width > 0 ? s.plinth_width : 2.5 * s.radius; }
@@ -166,7 +158,8 @@ ColumnModel build_column(const ColumnSpec& s) {
     const double z1 = s.drum_heights.empty() && i + 1 == s.drums ? z_shaft + s.height
                       : s.drum_heights.empty()                   ? z_shaft + (i + 1) * (s.height / s.drums)
                                                                  : z + hi;
-    add(make_prism(section, z, z1), ColumnBlockKind::drum, i, "drum" + zero_padded(i, std::max(10, s.drums - 1)));
+    add(make_prism(section, z, z1), ColumnBlockKind::drum, i,
+        "drum" + zero_padded(i, digits_for(std::max(10, s.drums - 1))));
     z = z1;
   }
   if (s.capital == ColumnCapital::abacus) {

@@ -35,6 +35,7 @@
 // which with O and the head blocks tile the face's courses. The pieces are
 // cut from S by clip(): S's corners on the kept side plus the crossings of
 // its edges, hulled again (convex_hull, CGAL).
+#include "geometry/generator_text.hpp"
 #include "geometry/spire.hpp"
 
 #include <algorithm>
@@ -47,6 +48,9 @@ namespace polydem {
 
 namespace {
 
+using generator_text::num;
+using generator_text::zero_padded;
+
 constexpr double kPi = std::numbers::pi;
 const double kTan8 = std::tan(kPi / 8.0);  // half the face width over the apothem
 
@@ -54,12 +58,6 @@ struct Plane {
   Vec3 n;    // need not be unit
   double d;  // n·x <= d is inside
 };
-
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 // Horizontal unit normal and tangent (towards increasing azimuth) of face k.
 Vec3 face_normal(int k) {
@@ -257,12 +255,6 @@ std::vector<Polyhedron> cut_by_window(const Polyhedron& stone, int k, const Wind
   for (const auto* region : {&w.left, &w.below, &w.right})
     if (auto piece = clip_all(stone, on_face(k, *region))) out.push_back(std::move(*piece));
   return out;
-}
-
-std::string zero_padded(int v, int width) {
-  std::string s = std::to_string(v);
-  while (static_cast<int>(s.size()) < width) s.insert(s.begin(), '0');
-  return s;
 }
 
 void require(bool ok, const char* field, const std::string& what) {

@@ -12,6 +12,7 @@
 // an opening only narrow its s range and its z range, so they stay prisms.
 // Voussoirs are half-space intersections through the wall
 // (halfspace_intersection, CGAL).
+#include "geometry/generator_text.hpp"
 #include "geometry/tower.hpp"
 
 #include <algorithm>
@@ -25,24 +26,15 @@ namespace polydem {
 
 namespace {
 
+using generator_text::num;
+using generator_text::zero_padded;
+
 constexpr double kPi = std::numbers::pi;
 using masonry::kSliver;
 using masonry::Segment;
 
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
 void require(bool ok, const char* field, int opening, const std::string& what) {
   if (!ok) throw TowerSpecError(field, opening, what);
-}
-
-std::string zero_padded(int v, int width) {
-  std::string s = std::to_string(v);
-  while (static_cast<int>(s.size()) < width) s.insert(s.begin(), '0');
-  return s;
 }
 
 using masonry::Line;

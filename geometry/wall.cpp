@@ -31,6 +31,7 @@
 // their bed, each unit's (u, z) rectangle cut by the slopes (2D clipping,
 // the corners on the slopes computed from the same formula by both
 // neighbours) and extruded through the wall.
+#include "geometry/generator_text.hpp"
 #include "geometry/wall.hpp"
 
 #include "geometry/coursed_openings.hpp"
@@ -46,22 +47,13 @@ namespace polydem {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using generator_text::num;
+using generator_text::zero_padded;
 
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
+constexpr double kPi = std::numbers::pi;
 
 void require(bool ok, const char* field, int opening, const std::string& what) {
   if (!ok) throw WallSpecError(field, opening, what);
-}
-
-std::string zero_padded(int v, int width) {
-  std::string s = std::to_string(v);
-  while (static_cast<int>(s.size()) < width) s.insert(s.begin(), '0');
-  return s;
 }
 
 using masonry::Segment;
