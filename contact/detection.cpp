@@ -157,8 +157,10 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
   if (!laws.single())  // the shear energy not carried over, at each joint's own ks
     contacts.dropped_shear_energy =
         old.dropped_shear_energy + (shear_strain_energy(laws, old.sub) - shear_strain_energy(laws, contacts.sub));
-  // The normal strain at this pose, as the previous subcontacts hold it and
-  // as the new ones do: the difference is the re-sampling's, not motion's.
+  // Re-sampling may lower a pair's normal strain at this pose but not raise
+  // it (joint_law.hpp); what it changes is the re-sampling's, not motion's,
+  // and goes to the ledger.
+  hold_normal_strain(laws, b.state, old, contacts);
   contacts.resampled_normal_energy +=
       normal_strain_energy_now(laws, b.state, old.sub) - normal_strain_energy_now(laws, b.state, contacts.sub);
   contacts.detections = old.detections + 1;

@@ -280,6 +280,78 @@ double normal_strain_energy_now(const JointLaws& laws, const BlockState& st, con
       [&](std::size_t s) -> const JointLaw& { return laws.between(sub.ref_block[s], sub.inc_block[s]); }, st, sub);
 }
 
+namespace {
+
+// The normal overlap of subcontact s at the blocks' pose now.
+double overlap_now(const BlockState& st, const Subcontacts& sub, std::size_t s) {
+  const int r = sub.ref_block[s];
+  const int c = sub.inc_block[s];
+  const Vec3 n = st.rotation[r] * sub.ref_normal_local[s];
+  const Vec3 p = st.position[c] + st.rotation[c] * sub.inc_point_local[s];
+  return sub.ref_offset_local[s] + n.dot(st.position[r]) - n.dot(p);
+}
+
+}  // namespace
+
+void hold_normal_strain(const JointLaws& laws, const BlockState& st, const ContactSet& old, ContactSet& contacts) {
+  Subcontacts& sc = contacts.sub;
+  const Subcontacts& os = old.sub;
+  for (const ContactPair& cp : contacts.pairs) {
+    if (cp.count == 0) continue;
+    // A pair found for the first time after the first detection held nothing
+    // before: found already overlapping (a corner that the clip kept outside
+    // the reference face until it was in), it starts at zero force.
+    const ContactPair* op = find_pair(old, cp.a, cp.b);
+    if (!op && old.detections == 0) continue;
+    const double kn = laws.between(cp.a, cp.b).kn;
+    const int s0 = cp.first, s1 = cp.first + cp.count;
+    bool bonded = false;
+    double e_new = 0, u_max = 0;
+    for (int s = s0; s < s1; ++s) {
+      bonded = bonded || sc.bonded[s] != 0;
+      const double u = overlap_now(st, sc, s);
+      if (u > 0) {
+        e_new += 0.5 * kn * sc.area[s] * u * u;
+        u_max = std::max(u_max, u);
+      }
+    }
+    if (bonded || e_new <= 0) continue;
+    double e_old = 0;
+    for (int o = op ? op->first : 0; op && o < op->first + op->count; ++o) {
+      const double u = overlap_now(st, os, o);
+      if (u > 0 || os.bonded[o]) e_old += 0.5 * kn * os.area[o] * u * u;
+    }
+    if (e_new <= e_old) continue;
+    // f(δ) = Σ ½·kn·A·(u − δ)₊² is convex and falls from e_new at 0 to 0 at
+    // u_max: Newton from the left stays left of the root; a bracket and
+    // bisection guard it against round-off.
+    double delta = u_max;
+    if (e_old > 0) {
+      double lo = 0, hi = u_max;
+      delta = 0;
+      for (int it = 0; it < 100; ++it) {
+        double f = 0, df = 0;
+        for (int s = s0; s < s1; ++s) {
+          const double u = overlap_now(st, sc, s) - delta;
+          if (u > 0) {
+            f += 0.5 * kn * sc.area[s] * u * u;
+            df -= kn * sc.area[s] * u;
+          }
+        }
+        if (std::abs(f - e_old) <= 1e-13 * e_new) break;
+        (f > e_old ? lo : hi) = delta;
+        double next = df < 0 ? delta - (f - e_old) / df : hi;
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        delta = next;
+      }
+    }
+    for (int s = s0; s < s1; ++s) {
+      sc.ref_offset_local[s] -= delta;
+      sc.crush[s] = delta;
+    }
+  }
+}
+
 double joint_strain_energy(const JointLaw& law, const Subcontacts& sub) {
   return joint_strain_energy_with([&law](std::size_t) -> const JointLaw& { return law; }, sub);
 }

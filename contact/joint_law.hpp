@@ -121,6 +121,31 @@ void settle_damping_work(const BlockState& state, Subcontacts& sub, double dt);
 double normal_strain_energy_now(const JointLaw& law, const BlockState& state, const Subcontacts& sub);
 double normal_strain_energy_now(const JointLaws& laws, const BlockState& state, const Subcontacts& sub);
 
+// Re-sampling must not make normal strain. A detection re-clips every joint
+// at the pose it finds: the points and tributary areas of a pair's new
+// subcontacts differ from the previous ones', and ½·kn·A·u_n² with them,
+// while nothing has moved. Usually by little (a crossing appears, a corner's
+// fan area changes); but a corner that ploughed into its neighbour while
+// the clip gave it a sliver (an area of 1e-4 m², barely resisting) and is
+// then found deep under a full polygon would have its whole depth priced at
+// once: 61 kJ from one detection in the spire's 1.0 g pulse run, enough to
+// throw stones tens of metres (docs/contact.md). So, for each pair found
+// again, when its new subcontacts would hold more normal strain at this pose
+// than its previous ones, the pair's plane is moved back by the depth δ ≥ 0
+// at which they hold exactly as much: Σ ½·kn·A·(u_n − δ)₊² = E_previous (a
+// corner crushed by δ, the joint's stiffness from then on its full kn·A).
+// The shift lives in the subcontacts' body-fixed plane (ref_offset_local),
+// so the step pays nothing for it; the next detection re-clips from the
+// geometry and finds the shift again if it is still needed. A re-sampling
+// that lowers the strain is left alone (the ledger books what it removed).
+// Pairs with a bonded subcontact are left alone too (tension: the strain
+// is not monotone in δ). A pair found for the first time held no strain:
+// if it is found already overlapping (a corner the clip kept outside the
+// reference face until it was in: 1.1 and 2.5 kJ in the 1.0 g run), it
+// starts at zero force. Only the first detection's pairs (t = 0, the
+// structure as built) start from the geometry.
+void hold_normal_strain(const JointLaws& laws, const BlockState& state, const ContactSet& old, ContactSet& contacts);
+
 // Elastic strain energy stored in the joints, J.
 double joint_strain_energy(const JointLaw& law, const Subcontacts& sub);
 double joint_strain_energy(const JointLaws& laws, const Subcontacts& sub);

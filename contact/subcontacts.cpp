@@ -17,6 +17,7 @@ void Subcontacts::resize(std::size_t n) {
   ref_offset_local.resize(n);
   inc_point_local.resize(n);
   area.resize(n);
+  crush.resize(n);
   shear_force.resize(n);
   bonded.resize(n);
   force.resize(n);
@@ -48,6 +49,7 @@ void ContactSet::save(ByteWriter& w) const {
   w.put(sub.ref_offset_local);
   w.put(sub.inc_point_local);
   w.put(sub.area);
+  w.put(sub.crush);
   w.put(sub.shear_force);
   w.put(sub.bonded);
   w.put(sub.force);
@@ -91,6 +93,7 @@ void ContactSet::load(ByteReader& r, int blocks) {
   r.get_sized(sub.ref_offset_local, n, "subcontacts.ref_offset_local");
   r.get_sized(sub.inc_point_local, n, "subcontacts.inc_point_local");
   r.get_sized(sub.area, n, "subcontacts.area");
+  r.get_sized(sub.crush, n, "subcontacts.crush");
   r.get_sized(sub.shear_force, n, "subcontacts.shear_force");
   r.get_sized(sub.bonded, n, "subcontacts.bonded");
   r.get_sized(sub.force, n, "subcontacts.force");
@@ -180,6 +183,7 @@ void build_subcontacts(const Blocks& b, const std::vector<std::pair<int, int>>& 
       sc.ref_offset_local[s] = off_local;
       sc.inc_point_local[s] = Ri.transpose() * (pt.point - b.state.position[inc]);
       sc.area[s] = pt.area;
+      sc.crush[s] = 0;
       sc.shear_force[s] = Vec3::Zero();
       sc.bonded[s] = bond_new ? 1 : 0;
       sc.slip_energy[s] = 0;

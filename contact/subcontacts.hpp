@@ -54,13 +54,19 @@ struct Subcontacts {
   std::vector<double> ref_offset_local;  // plane n·x = offset, ref body frame
   std::vector<Vec3> inc_point_local;     // incident point, inc body frame
   std::vector<double> area;              // tributary area, m²
+  // How far the detection moved the spring's zero into the joint so that its
+  // re-sampling made no normal strain (hold_normal_strain, joint_law.hpp):
+  // the blocks' geometric overlap is overlap + crush. Zero but after a hard
+  // impact or a contact found already overlapping. Folded into
+  // ref_offset_local, so the step never reads it. m, ≥ 0.
+  std::vector<double> crush;
   // History carried across detections.
   std::vector<Vec3> shear_force;   // elastic shear force on the incident block, world, N
   std::vector<std::uint8_t> bonded;  // still has cohesion / tensile strength
   // Per-step results (one slot each).
   std::vector<Vec3> force;          // total joint force on the incident block, N
   std::vector<Vec3> point;          // world point where it acts
-  std::vector<double> overlap;      // normal overlap u_n (> 0 closed), m
+  std::vector<double> overlap;      // the spring's normal overlap u_n (> 0 closed), m
   std::vector<double> normal_force;  // total normal force incl. damping, N
   std::vector<double> slip_energy;     // cumulative slip dissipation, J
   std::vector<double> damping_energy;  // cumulative damping dissipation, J
@@ -69,6 +75,9 @@ struct Subcontacts {
   std::vector<Vec3> damping_force;
 
   std::size_t size() const { return key.size(); }
+  // The blocks' overlap at s (the spring's plus its crush), m: what
+  // penetration and openings are judged on.
+  double geometric_overlap(std::size_t s) const { return overlap[s] + crush[s]; }
   void clear();
   void resize(std::size_t n);
 };

@@ -484,10 +484,11 @@ void Simulation::check_health() {
   for (std::size_t s = 0; s < sub.size(); ++s) {
     const double smaller = std::min(size[sub.ref_block[s]], size[sub.inc_block[s]]);
     const double limit = std::max(detector_.margin(), penetration_limit_ * smaller);
-    if (sub.overlap[s] <= limit) continue;
+    const double overlap = sub.geometric_overlap(s);
+    if (overlap <= limit) continue;
     std::ostringstream what;
     what << "blocks '" << blocks_.props.name[sub.ref_block[s]] << "' and '" << blocks_.props.name[sub.inc_block[s]]
-         << "' overlap by " << sub.overlap[s] << " m, beyond the penetration limit " << limit << " m ("
+         << "' overlap by " << overlap << " m, beyond the penetration limit " << limit << " m ("
          << 100 * penetration_limit_ << " % of the smaller block's size, at least the contact margin)";
     stop(what.str());
   }
@@ -614,7 +615,7 @@ void Simulation::load_state(ByteReader& r) {
 double Simulation::largest_opening(int i) const {
   double open = -std::numeric_limits<double>::infinity();
   const auto& off = contacts_.gather_offset;
-  for (int k = off[i]; k < off[i + 1]; ++k) open = std::max(open, -contacts_.sub.overlap[contacts_.gather_sub[k]]);
+  for (int k = off[i]; k < off[i + 1]; ++k) open = std::max(open, -contacts_.sub.geometric_overlap(contacts_.gather_sub[k]));
   return open;
 }
 

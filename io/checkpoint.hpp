@@ -30,7 +30,8 @@ namespace polydem {
 // 3: and the dislodged stones.
 // 4: the subcontacts' pending dashpot force, the dropped shear and the
 //    re-sampled normal strain energies.
-inline constexpr std::uint32_t kCheckpointVersion = 4;
+// 5: the subcontacts' crush (the re-sampling's shift of a spring's zero).
+inline constexpr std::uint32_t kCheckpointVersion = 5;
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
 
 // A checkpoint file that cannot be used; the message says why.

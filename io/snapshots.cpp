@@ -44,7 +44,7 @@ void SnapshotWriter::write(const Simulation& sim, double time) {
         poly.push_back(c.sub.point[s]);
         n += c.sub.normal_force[s];
         t += c.sub.shear_force[s].norm();
-        open = std::max(open, -c.sub.overlap[s]);
+        open = std::max(open, -c.sub.geometric_overlap(s));
         e += c.sub.slip_energy[s];
       }
       polys.push_back(std::move(poly));

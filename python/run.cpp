@@ -197,23 +197,26 @@ class Run {
   }
 
   // Every subcontact now (copies): blocks, point, force on the incident
-  // block, normal force, overlap (m, > 0 closed), tributary area.
+  // block, normal force, the blocks' overlap (m, > 0 closed), the spring's
+  // crush (hold_normal_strain), tributary area.
   py::dict contacts() const {
     const Subcontacts& s = sim().contacts().sub;
     const auto n = static_cast<py::ssize_t>(s.size());
     py::array_t<int> ref(n), inc(n);
-    py::array_t<double> normal(n), overlap(n), area(n);
+    py::array_t<double> normal(n), overlap(n), crush(n), area(n);
     auto wr = ref.mutable_unchecked<1>();
     auto wi = inc.mutable_unchecked<1>();
     auto wn = normal.mutable_unchecked<1>();
     auto wo = overlap.mutable_unchecked<1>();
+    auto wc = crush.mutable_unchecked<1>();
     auto war = area.mutable_unchecked<1>();
     for (py::ssize_t k = 0; k < n; ++k) {
       const auto i = static_cast<std::size_t>(k);
       wr(k) = s.ref_block[i];
       wi(k) = s.inc_block[i];
       wn(k) = s.normal_force[i];
-      wo(k) = s.overlap[i];
+      wo(k) = s.geometric_overlap(i);
+      wc(k) = s.crush[i];
       war(k) = s.area[i];
     }
     py::dict d;
@@ -224,6 +227,7 @@ class Run {
     d["shear_force"] = copy_vec3s(s.shear_force);
     d["normal_force"] = normal;
     d["overlap"] = overlap;
+    d["crush"] = crush;
     d["area"] = area;
     return d;
   }

@@ -125,7 +125,7 @@ void AssessmentMonitor::record_crack(const Simulation& sim) {
     double gap = -std::numeric_limits<double>::infinity();
     Vec3 at = Vec3::Zero();
     for (int k = p.first; k < p.first + p.count; ++k) {
-      gap = std::max(gap, -c.sub.overlap[k]);
+      gap = std::max(gap, -c.sub.geometric_overlap(k));
       at += c.sub.point[k];
     }
     if (gap <= 0.5 * spec_.damage_displacement) continue;

@@ -79,7 +79,7 @@ JointMesh JointMesh::from_contacts(const Simulation& sim, const Vec3& up, double
   for (const ContactPair& p : c.pairs) {
     if (p.count == 0) continue;
     bool touching = false;
-    for (int s = p.first; s < p.first + p.count; ++s) touching = touching || c.sub.overlap[s] >= -tolerance;
+    for (int s = p.first; s < p.first + p.count; ++s) touching = touching || c.sub.geometric_overlap(s) >= -tolerance;
     if (!touching) continue;  // a gap within the contact margin is not a joint
     InitialJoint j;
     j.a = p.a;

@@ -45,14 +45,14 @@ RunSetup choose_margin_and_step(const SceneSpec& spec, const Blocks& blocks) {
 void check_initial_overlaps(const SceneSpec& spec, const Simulation& sim) {
   const ContactSet& cs = sim.contacts();
   for (std::size_t s = 0; s < cs.sub.size(); ++s) {
-    if (cs.sub.overlap[s] <= spec.simulation.overlap_tolerance) continue;
+    if (cs.sub.geometric_overlap(s) <= spec.simulation.overlap_tolerance) continue;
     const int r = cs.sub.ref_block[s], c = cs.sub.inc_block[s];
     const auto& pr = sim.blocks().props;
     const int line = std::max(pr.deck_line[r], pr.deck_line[c]);
     const std::string& late = pr.deck_line[r] >= pr.deck_line[c] ? pr.name[r] : pr.name[c];
     const std::string& other = late == pr.name[r] ? pr.name[c] : pr.name[r];
     std::ostringstream m;
-    m << "overlaps block '" << other << "' by " << cs.sub.overlap[s]
+    m << "overlaps block '" << other << "' by " << cs.sub.geometric_overlap(s)
       << " m at the start (tolerance simulation.overlap_tolerance = " << spec.simulation.overlap_tolerance << " m)";
     throw SceneError("block", "('" + late + "')", line, m.str());
   }

@@ -10,6 +10,8 @@
 // by their points on the plane. ks = 1e9 Pa/m, margin 0.01 m.
 #include "contact/subcontacts.hpp"
 
+#include "contact/joint_law.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -62,6 +64,7 @@ ContactSet one_pair(const std::vector<Point>& points, int ref = 0, int a = 0, in
     cs.sub.slip_energy[s] = 0;
     cs.sub.damping_energy[s] = 0;
     cs.sub.damping_force[s] = Vec3::Zero();
+    cs.sub.crush[s] = 0;
   }
   return cs;
 }
@@ -270,6 +273,83 @@ TEST(CarryHistory, AnotherPairDoesNotInheritAndAPairThatIsGoneDropsItsShear) {
   EXPECT_DOUBLE_EQ(current.dropped_shear_energy, energy(Vec3(500, 0, 0), 0.25));
   EXPECT_EQ(find_pair(previous, 0, 1), &previous.pairs[0]);
   EXPECT_EQ(find_pair(previous, 0, 2), nullptr);
+}
+
+// hold_normal_strain: a detection's re-sampling may lower a pair's normal
+// strain at the same pose, never raise it; a rise is taken back by moving
+// the pair's plane by δ, after which the joint has its full stiffness.
+constexpr double kKn = 1e10;
+
+double normal_energy(const Blocks& b, const ContactSet& cs) {
+  return normal_strain_energy_now(JointLaw{kKn, kKs, 0.5, 0, 0, 0}, b.state, cs.sub);
+}
+
+TEST(HoldNormalStrain, ASliverFoundDeepUnderAFullPolygonKeepsItsEnergy) {
+  // A corner 8.5 mm into its neighbour under a sliver of 1e-4 m² (the
+  // spire's 1.0 g run); the next detection finds the whole unit square.
+  Blocks b = two_blocks_at_rest();
+  const double u = 8.5e-3;
+  b.state.position[1] = Vec3(0, 0, -u);
+  const ContactSet previous = one_pair({{0.4, 0.4, 1e-4, 1}});
+  ContactSet current = one_pair(square(11));
+  const double e_old = normal_energy(b, previous);
+  ASSERT_NEAR(e_old, 0.5 * kKn * 1e-4 * u * u, 1e-9 * e_old);
+  ASSERT_NEAR(normal_energy(b, current), 1e4 * e_old, 1e-9 * 1e4 * e_old);  // 36 kJ from nowhere
+  hold_normal_strain(JointLaws(JointLaw{kKn, kKs, 0.5, 0, 0, 0}), b.state, previous, current);
+  EXPECT_NEAR(normal_energy(b, current), e_old, 1e-12 * 1e4 * e_old);
+  // One shift for the pair: (u − δ)²·1 m² = u²·1e-4 m², δ = 0.99·u.
+  for (int s = 0; s < 4; ++s) {
+    EXPECT_NEAR(-current.sub.ref_offset_local[s], 0.99 * u, 1e-12) << s;
+    EXPECT_EQ(current.sub.crush[s], -current.sub.ref_offset_local[s]) << s;  // what penetration is judged on
+  }
+  // From there on the joint has the square's full stiffness kn·1 m².
+  b.state.position[1].z() -= 1e-4;
+  EXPECT_NEAR(normal_energy(b, current), 0.5 * kKn * std::pow(0.01 * u + 1e-4, 2), 1e-9 * e_old);
+}
+
+TEST(HoldNormalStrain, ATiltedPatchPartlyOpenMatchesThePreviousEnergy) {
+  // The incident block tilted about x: u = 2 mm − 4 mm·y, one edge open.
+  Blocks b = two_blocks_at_rest();
+  const double tilt = 4e-3;
+  b.state.orientation[1] = Quat(Eigen::AngleAxisd(tilt, Vec3::UnitX()));
+  b.state.rotation[1] = b.state.orientation[1].toRotationMatrix();
+  b.state.position[1] = Vec3(0, 0, -2e-3);
+  const ContactSet previous = one_pair({{0.0, -0.5, 0.05, 1}, {0.0, 0.0, 0.05, 2}});
+  ContactSet current = one_pair({{-0.5, -0.5, 0.3, 11}, {0.5, -0.5, 0.3, 12}, {0.5, 0.5, 0.2, 13},
+                                 {-0.5, 0.5, 0.2, 14}});
+  const double e_old = normal_energy(b, previous), e_new = normal_energy(b, current);
+  ASSERT_GT(e_new, 2 * e_old);
+  hold_normal_strain(JointLaws(JointLaw{kKn, kKs, 0.5, 0, 0, 0}), b.state, previous, current);
+  EXPECT_NEAR(normal_energy(b, current), e_old, 1e-12 * e_new);
+  EXPECT_LT(current.sub.ref_offset_local[0], 0.0);
+  EXPECT_EQ(current.sub.ref_offset_local[0], current.sub.ref_offset_local[3]);
+}
+
+TEST(HoldNormalStrain, LoweringIsLeftAloneANewPairStartsAtZeroForceBondsAreKept) {
+  Blocks b = two_blocks_at_rest();
+  b.state.position[1] = Vec3(0, 0, -1e-3);
+  const JointLaws laws(JointLaw{kKn, kKs, 0.5, 0, 0, 0});
+  // Less strain than before: the ledger books it, the plane stays.
+  ContactSet full = one_pair(square(1));
+  ContactSet sliver = one_pair({{0.4, 0.4, 1e-4, 11}});
+  hold_normal_strain(laws, b.state, full, sliver);
+  EXPECT_EQ(sliver.sub.ref_offset_local[0], 0.0);
+  // At the first detection (the structure as built) pairs start from the
+  // geometry; after it a pair found already overlapping starts at zero
+  // force (its plane moved to its deepest point).
+  ContactSet other = one_pair({{0.4, 0.4, 1e-4, 11}}, 0, 0, 2);
+  ContactSet again = one_pair(square(1));
+  hold_normal_strain(laws, b.state, other, again);
+  for (int s = 0; s < 4; ++s) EXPECT_EQ(again.sub.ref_offset_local[s], 0.0);
+  other.detections = 1;
+  hold_normal_strain(laws, b.state, other, again);
+  for (int s = 0; s < 4; ++s) EXPECT_NEAR(again.sub.ref_offset_local[s], -1e-3, 1e-15);
+  EXPECT_EQ(normal_energy(b, again), 0.0);
+  // A bonded joint (tension) is not shifted.
+  ContactSet bonded = one_pair(square(1));
+  bonded.sub.bonded[2] = 1;
+  hold_normal_strain(laws, b.state, sliver, bonded);
+  for (int s = 0; s < 4; ++s) EXPECT_EQ(bonded.sub.ref_offset_local[s], 0.0);
 }
 
 }  // namespace

@@ -4,16 +4,18 @@
 // weight outside their footprint. It breaks up and falls over onto a 150 m
 // base; the blocks hit the base and each other at up to ~15 m/s, tumble and
 // come to rest. The run must reach its end time (8 s) without a guard stop,
-// the energy ledger must close within 5 % of the energy in play, no joint
-// may overlap by more than 5 % of the smaller block's size (17 mm), and no
-// block may end below the base's top by more than 1 % of its size. Measured
-// (1 thread, loaded machine): 349 305 steps in 76 s, balance error 2.9 %,
-// deepest overlap 1.69 mm (0.53 %); 4.8 % and 1.96 mm before issue 15's
-// history and ledger changes. At 8 s 46 of the 50 stones are at rest; the
-// four top ones, which reach the base 12 m out at 6-16 m/s at t = 4.8 s,
-// still tumble across it (the top stone 52 m out at 11.9 m/s, bouncing up to
-// 3 m: its kinetic and potential energy 10.4 kJ at landing and 10.4 kJ at the
-// top of the first bounce). That is the joint law, not a numerical fault:
+// the energy ledger must close within 2.5 % of the energy in play, no
+// detection may make normal strain by re-sampling a joint (hold_normal_strain;
+// it made 8.4 J by 2.7 s before), no joint may overlap the blocks by more
+// than 5 % of the smaller block's size (17 mm), and no block may end below
+// the base's top by more than 1 % of its size. Measured (1 thread, two other
+// runs on the 2 cores): 349 179 steps in 12.8 s, balance error 1.23 % (2.9 %
+// before the hold, 4.8 % before issue 15's history and ledger changes),
+// re-sampling added 2e-8 J (round-off), deepest overlap 2.11 mm (0.66 %, the
+// blocks' geometric overlap, crush included). At 8 s 48 of the 50 stones are
+// at rest; two of the top ones, which reach the base 12 m out at 6-16 m/s at
+// t = 4.8 s, still tumble across it (the fastest at 10.1 m/s). That is the
+// joint law, not a numerical fault:
 // Table 1's β on one corner's spring kn·l²/4 of an 83 kg stone gives
 // ξ = β·ω/2 = 0.058, a normal restitution e = exp(−πξ/√(1 − ξ²)) = 0.83, and
 // the shear spring (ks = 0.4 kn, undamped while slipping) gives back what it
@@ -37,8 +39,9 @@ TEST(Tower, FiftyBlocksToppleToRest) {
   const Outcome o = run(tower_deck(8.0), "tower50");
   print("tower of 50 toppling", o);
   ASSERT_FALSE(o.stopped) << o.message;
-  EXPECT_LT(o.balance_error, 0.05);
+  EXPECT_LT(o.balance_error, 0.025);
   EXPECT_LT(o.deepest_fraction, 0.05);
+  EXPECT_LT(o.resampled_added, 1e-8 * o.reference) << "a detection made normal strain";
   const Blocks& b = o.sim->blocks();
   double fastest = 0, lowest = 0, fell = 0;
   for (int i : b.free_blocks) {
