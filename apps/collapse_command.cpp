@@ -83,6 +83,9 @@ int collapse_command(const CollapseOptions& o) {
                              d.bisection ? d.bisection->wall_seconds : 0.0, d.ramp ? d.ramp->acceleration_g : NAN,
                              d.ramp ? d.ramp->wall_seconds : 0.0, crack);
   }
+  for (const CollapseDirection& d : study.directions)
+    if (d.bisection && !d.bisection->error.empty())
+      std::cerr << fmt::format("polydem: direction {:.1f} deg: {}\n", d.direction_deg, d.bisection->error);
   std::cout << "results in " << o.out_dir << "/collapse.json\n";
   return exit_success;
 }

@@ -25,6 +25,33 @@ Vec3 horizontal_direction(double deg) {
   return Vec3(std::cos(a), std::sin(a), 0.0).normalized();  // as the deck reader stores a direction
 }
 
+// The free block with the largest unbalanced force (or moment over its
+// radius, as unbalanced_force_ratio weighs it) under `load`, with its speed,
+// spin and displacement: what a static solve that finds no equilibrium
+// reports.
+std::string largest_unbalance(const Simulation& sim, const Vec3& load) {
+  const Blocks& b = sim.blocks();
+  double worst = -1;
+  int w = -1;
+  bool moment = false;
+  for (int i : b.free_blocks) {
+    const double r = b.props.radius[i] > 0 ? b.props.radius[i] : 1.0;
+    const double f = (b.props.mass[i] * load + b.state.contact_force[i]).norm();
+    const double m = b.state.contact_torque[i].norm() / r;
+    if (std::max(f, m) > worst) {
+      worst = std::max(f, m);
+      w = i;
+      moment = m > f;
+    }
+  }
+  if (w < 0) return "no free block";
+  return fmt::format("block '{}' ({:.3g} kg): unbalanced {} {:.3g} N, speed {:.3g} m/s, spin {:.3g} rad/s, "
+                     "displaced {:.3g} m",
+                     b.props.name[w], b.props.mass[w], moment ? "moment/radius" : "force", worst,
+                     b.state.velocity[w].norm(), b.state.angular_velocity[w].norm(),
+                     (b.state.position[w] - b.initial_position[w]).norm());
+}
+
 // What every trial turns off: histories, the ledger; it stops at collapse.
 void trial_output(SceneSpec& s) {
   s.assessment.stop_on_collapse = true;
@@ -79,10 +106,17 @@ BisectionResult bisect(const CollapseSearchOptions& o, const char* method, const
     ++b.runs;
     b.wall_seconds += t.wall_seconds;
     if (observe) observe(method, t);
+    if (t.no_equilibrium && b.error.empty())
+      b.error = fmt::format("the static solve at {} g found no equilibrium in --static-max-steps = {} steps of an "
+                            "increment and no collapse ({}); not counted either way: raise --static-max-steps, or "
+                            "solve without --density-scaling",
+                            a_g, o.static_max_steps, t.no_equilibrium_detail);
     return t;
   };
   CollapseTrial lo = trial(o.low_g);
+  if (!b.error.empty()) return b;
   CollapseTrial hi = trial(o.high_g);
+  if (!b.error.empty()) return b;
   if (lo.collapsed || !hi.collapsed) {
     b.error = fmt::format("the bracket [{}, {}] g does not contain the collapse acceleration "
                           "(collapsed at low: {}, at high: {})",
@@ -92,6 +126,7 @@ BisectionResult bisect(const CollapseSearchOptions& o, const char* method, const
   b.last_collapse = hi;
   while (hi.acceleration_g - lo.acceleration_g > o.tolerance_g) {
     CollapseTrial mid = trial(0.5 * (lo.acceleration_g + hi.acceleration_g));
+    if (!b.error.empty()) return b;
     if (mid.collapsed) {
       hi = mid;
       b.last_collapse = mid;
@@ -132,7 +167,7 @@ CollapseTrial static_collapse_trial(const SceneSpec& scene, double deg, double a
   // Collapse as a run judges it: the dislodged mass fraction
   // (assessment.collapse_mass_fraction), sampled every 16th step.
   AssessmentMonitor monitor(s.assessment, *sim, g);
-  for (int k = 1; k <= o.static_increments && !t.collapsed; ++k) {
+  for (int k = 1; k <= o.static_increments && !t.collapsed && !t.no_equilibrium; ++k) {
     // A ground acceleration +a d pushes the blocks by −m a d.
     const Vec3 load = g - (a_g * k / o.static_increments) * g.norm() * d;
     sim->begin_static_stage(o.local_damping, load, o.density_scaling);
@@ -147,13 +182,14 @@ CollapseTrial static_collapse_trial(const SceneSpec& scene, double deg, double a
       if (n % 16 != 15) continue;
       if (unbalanced_force_ratio(*sim, load) <= o.static_ratio) break;
       if (n >= o.static_max_steps) {
-        t.collapsed = t.no_equilibrium = true;
+        t.no_equilibrium = true;
+        t.no_equilibrium_detail = largest_unbalance(*sim, load);
         break;
       }
     }
   }
   t.assessment = monitor.finish(*sim);
-  if (t.no_equilibrium) t.assessment.status = "collapsed";
+  if (t.no_equilibrium) t.assessment.status = "no_equilibrium";
   t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return t;
 }

@@ -56,7 +56,12 @@ struct CollapseTrial {
   long steps = 0;
   double wall_seconds = 0;
   Assessment assessment;
-  bool no_equilibrium = false;  // static: an increment found none in static_max_steps
+  // Static: an increment found no equilibrium in static_max_steps. Not a
+  // collapse (the monitor did not see one): the search stops and says so,
+  // naming the block whose unbalanced force or moment is the largest
+  // (`no_equilibrium_detail`).
+  bool no_equilibrium = false;
+  std::string no_equilibrium_detail;
 };
 
 // Called after every trial run (progress output); may be empty.

@@ -159,5 +159,26 @@ TEST(CollapseSearch, StaticTrialStandsBelowAndCollapsesAbove) {
   EXPECT_FALSE(above.no_equilibrium);
 }
 
+// A static solve that runs out of steps is neither a collapse nor a stand:
+// the trial says which block is still unbalanced and the search stops with
+// that, instead of counting it as a collapse (which put a false bracket on
+// the spire at φ = 20°: docs/equilibrium.md).
+TEST(CollapseSearch, AStaticSolveOutOfStepsIsNoEquilibriumNotACollapse) {
+  const SceneSpec s = parse_deck(kTallBlock, "block.toml");
+  CollapseSearchOptions o;
+  o.static_max_steps = 40;  // far too few to settle the block under 0.3 g
+  const CollapseTrial t = static_collapse_trial(s, 0.0, 0.3, o);
+  EXPECT_TRUE(t.no_equilibrium);
+  EXPECT_FALSE(t.collapsed);
+  EXPECT_EQ(t.assessment.status, "no_equilibrium");
+  EXPECT_NE(t.no_equilibrium_detail.find("block 'block'"), std::string::npos) << t.no_equilibrium_detail;
+  o.low_g = 0.3;
+  o.high_g = 0.7;
+  const BisectionResult b = bisect_collapse_static(s, 0.0, o);
+  EXPECT_EQ(b.runs, 1);
+  EXPECT_NE(b.error.find("found no equilibrium in --static-max-steps = 40"), std::string::npos) << b.error;
+  EXPECT_NE(b.error.find("not counted either way"), std::string::npos) << b.error;
+}
+
 }  // namespace
 }  // namespace polydem
