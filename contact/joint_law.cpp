@@ -239,16 +239,22 @@ void settle_damping_work(const BlockState& st, Subcontacts& sub, double dt) {
 
 namespace {
 
+// The normal overlap of subcontact s at the blocks' pose now (its
+// body-fixed plane and point).
+double overlap_now(const BlockState& st, const Subcontacts& sub, std::size_t s) {
+  const int r = sub.ref_block[s];
+  const int c = sub.inc_block[s];
+  const Vec3 n = st.rotation[r] * sub.ref_normal_local[s];
+  const Vec3 p = st.position[c] + st.rotation[c] * sub.inc_point_local[s];
+  return sub.ref_offset_local[s] + n.dot(st.position[r]) - n.dot(p);
+}
+
 template <class LawOf>
 double normal_strain_energy_with(const LawOf& law_of, const BlockState& st, const Subcontacts& sub) {
   double e = 0;
   for (std::size_t s = 0; s < sub.size(); ++s) {
     const JointLaw& law = law_of(s);
-    const int r = sub.ref_block[s];
-    const int c = sub.inc_block[s];
-    const Vec3 n = st.rotation[r] * sub.ref_normal_local[s];
-    const Vec3 p = st.position[c] + st.rotation[c] * sub.inc_point_local[s];
-    const double un = sub.ref_offset_local[s] + n.dot(st.position[r]) - n.dot(p);
+    const double un = overlap_now(st, sub, s);
     if (un > 0 || sub.bonded[s]) e += 0.5 * law.kn * sub.area[s] * un * un;
   }
   return e;
@@ -279,19 +285,6 @@ double normal_strain_energy_now(const JointLaws& laws, const BlockState& st, con
   return normal_strain_energy_with(
       [&](std::size_t s) -> const JointLaw& { return laws.between(sub.ref_block[s], sub.inc_block[s]); }, st, sub);
 }
-
-namespace {
-
-// The normal overlap of subcontact s at the blocks' pose now.
-double overlap_now(const BlockState& st, const Subcontacts& sub, std::size_t s) {
-  const int r = sub.ref_block[s];
-  const int c = sub.inc_block[s];
-  const Vec3 n = st.rotation[r] * sub.ref_normal_local[s];
-  const Vec3 p = st.position[c] + st.rotation[c] * sub.inc_point_local[s];
-  return sub.ref_offset_local[s] + n.dot(st.position[r]) - n.dot(p);
-}
-
-}  // namespace
 
 void hold_normal_strain(const JointLaws& laws, const BlockState& st, const ContactSet& old, ContactSet& contacts) {
   Subcontacts& sc = contacts.sub;
