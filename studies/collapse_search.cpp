@@ -52,6 +52,30 @@ std::string largest_unbalance(const Simulation& sim, const Vec3& load) {
                      (b.state.position[w] - b.initial_position[w]).norm());
 }
 
+// A static solve that found no equilibrium: is a mechanism under way? The
+// fastest free block (speed plus spin times radius) moving faster than
+// `speed` and displaced more than `distance` says so (a wall going over
+// slowly under local damping); a block turning or rattling in place, with
+// nothing moving away, does not (`what` gets that block's description).
+bool mechanism_moving(const Simulation& sim, double speed, double distance, std::string& what) {
+  const Blocks& b = sim.blocks();
+  double fastest = -1;
+  int w = -1;
+  for (int i : b.free_blocks) {
+    const double v = b.state.velocity[i].norm() + b.state.angular_velocity[i].norm() * b.props.radius[i];
+    if (v > fastest) {
+      fastest = v;
+      w = i;
+    }
+  }
+  if (w < 0) return false;
+  const double moved = (b.state.position[w] - b.initial_position[w]).norm();
+  what = fmt::format("the fastest block '{}' moves at {:.3g} m/s (speed plus spin times radius) and has moved "
+                     "{:.3g} m",
+                     b.props.name[w], fastest, moved);
+  return fastest > speed && moved > distance;
+}
+
 // What every trial turns off: histories, the ledger; it stops at collapse.
 void trial_output(SceneSpec& s) {
   s.assessment.stop_on_collapse = true;
@@ -106,7 +130,7 @@ BisectionResult bisect(const CollapseSearchOptions& o, const char* method, const
     ++b.runs;
     b.wall_seconds += t.wall_seconds;
     if (observe) observe(method, t);
-    if (t.no_equilibrium && b.error.empty())
+    if (t.no_equilibrium && !t.collapsed && b.error.empty())
       b.error = fmt::format("the static solve at {} g found no equilibrium in --static-max-steps = {} steps of an "
                             "increment and no collapse ({}); not counted either way: raise --static-max-steps, or "
                             "solve without --density-scaling",
@@ -183,13 +207,17 @@ CollapseTrial static_collapse_trial(const SceneSpec& scene, double deg, double a
       if (unbalanced_force_ratio(*sim, load) <= o.static_ratio) break;
       if (n >= o.static_max_steps) {
         t.no_equilibrium = true;
-        t.no_equilibrium_detail = largest_unbalance(*sim, load);
+        std::string fastest;
+        t.collapsed = mechanism_moving(*sim, s.simulation.settle_velocity > 0 ? s.simulation.settle_velocity : 1e-3,
+                                       s.assessment.damage_displacement, fastest);
+        t.no_equilibrium_detail = largest_unbalance(*sim, load) + "; " + fastest +
+                                  (t.collapsed ? ": a mechanism under way, counted as collapse" : "");
         break;
       }
     }
   }
   t.assessment = monitor.finish(*sim);
-  if (t.no_equilibrium) t.assessment.status = "no_equilibrium";
+  if (t.no_equilibrium) t.assessment.status = t.collapsed ? "collapsed" : "no_equilibrium";
   t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return t;
 }

@@ -56,10 +56,12 @@ struct CollapseTrial {
   long steps = 0;
   double wall_seconds = 0;
   Assessment assessment;
-  // Static: an increment found no equilibrium in static_max_steps. Not a
-  // collapse (the monitor did not see one): the search stops and says so,
-  // naming the block whose unbalanced force or moment is the largest
-  // (`no_equilibrium_detail`).
+  // Static: an increment found no equilibrium in static_max_steps. A
+  // collapse if a mechanism is under way (the fastest block moving faster
+  // than settle_velocity, 1 mm/s when unset, and displaced more than
+  // damage_displacement); otherwise neither collapse nor stand: the search
+  // stops and says so. `no_equilibrium_detail` names the block whose
+  // unbalanced force or moment is the largest and the fastest one.
   bool no_equilibrium = false;
   std::string no_equilibrium_detail;
 };

@@ -180,5 +180,21 @@ TEST(CollapseSearch, AStaticSolveOutOfStepsIsNoEquilibriumNotACollapse) {
   EXPECT_NE(b.error.find("not counted either way"), std::string::npos) << b.error;
 }
 
+// ...but a mechanism still under way when the steps run out (a block tipping
+// over slowly under local damping, already well past the damage
+// displacement) is a collapse, as before.
+TEST(CollapseSearch, AStaticSolveOutOfStepsWithAMechanismUnderWayIsACollapse) {
+  const SceneSpec s = parse_deck(kTallBlock, "block.toml");
+  CollapseSearchOptions o;
+  o.static_increments = 1;
+  o.static_max_steps = 1200;  // the block has moved ~6 cm of the 10 cm collapse displacement
+  const CollapseTrial t = static_collapse_trial(s, 0.0, 0.7, o);
+  EXPECT_TRUE(t.no_equilibrium);
+  EXPECT_TRUE(t.collapsed);
+  EXPECT_EQ(t.assessment.status, "collapsed");
+  EXPECT_NE(t.no_equilibrium_detail.find("a mechanism under way"), std::string::npos) << t.no_equilibrium_detail;
+  EXPECT_LT(t.assessment.max_displacement, s.assessment.collapse_displacement);  // the monitor had not seen it
+}
+
 }  // namespace
 }  // namespace polydem
