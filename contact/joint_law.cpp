@@ -309,10 +309,12 @@ void hold_normal_strain(const JointLaws& laws, const BlockState& st, const Conta
       }
     }
     if (bonded || e_new <= 0) continue;
+    // Only the compression held before counts: a bond's tension the new,
+    // unbonded subcontacts cannot hold must not become compression.
     double e_old = 0;
     for (int o = op ? op->first : 0; op && o < op->first + op->count; ++o) {
       const double u = overlap_now(st, os, o);
-      if (u > 0 || os.bonded[o]) e_old += 0.5 * kn * os.area[o] * u * u;
+      if (u > 0) e_old += 0.5 * kn * os.area[o] * u * u;
     }
     if (e_new <= e_old) continue;
     // f(δ) = Σ ½·kn·A·(u − δ)₊² is convex and falls from e_new at 0 to 0 at
@@ -340,6 +342,7 @@ void hold_normal_strain(const JointLaws& laws, const BlockState& st, const Conta
     }
     for (int s = s0; s < s1; ++s) {
       sc.ref_offset_local[s] -= delta;
+      sc.overlap[s] -= delta;  // the spring's, as the next step's law computes it
       sc.crush[s] = delta;
     }
   }

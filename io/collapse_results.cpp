@@ -43,6 +43,7 @@ void write_collapse_json(const std::string& path, const CollapseStudy& study) {
       Json b = Json::object();
       if (!r.error.empty()) {
         b.set("error", r.error);
+        if (r.high_g > r.low_g) b.set("bracket_g", Json(std::vector<double>{r.low_g, r.high_g}));  // reached so far
       } else {
         b.set("collapse_acceleration_g", r.collapse_g);
         b.set("bracket_g", Json(std::vector<double>{r.low_g, r.high_g}));

@@ -9,18 +9,29 @@
 
 namespace polydem {
 
-double unbalanced_force_ratio(const Simulation& sim, const Vec3& gravity) {
+Unbalance largest_unbalance(const Simulation& sim, const Vec3& gravity) {
   const Blocks& b = sim.blocks();
-  if (b.free_blocks.empty() || !(gravity.norm() > 0)) return 0;
-  double worst = 0, applied = 0;
+  Unbalance u;
+  if (b.free_blocks.empty() || !(gravity.norm() > 0)) return u;
+  double applied = 0;
   for (int i : b.free_blocks) {
     // The static stage's loads: gravity alone (no ground motion).
     const Vec3 f = external_force(b.props, i, gravity, Vec3::Zero()) + b.state.contact_force[i];
     const double r = b.props.radius[i] > 0 ? b.props.radius[i] : 1.0;
-    worst = std::max({worst, f.norm(), b.state.contact_torque[i].norm() / r});
+    const double force = f.norm(), moment = b.state.contact_torque[i].norm() / r;
+    if (std::max(force, moment) > u.value || u.block < 0) {
+      u.block = i;
+      u.value = std::max(force, moment);
+      u.moment = moment > force;
+    }
     applied += b.props.mass[i] * gravity.norm();
   }
-  return worst / (applied / static_cast<double>(b.free_blocks.size()));
+  u.ratio = u.value / (applied / static_cast<double>(b.free_blocks.size()));
+  return u;
+}
+
+double unbalanced_force_ratio(const Simulation& sim, const Vec3& gravity) {
+  return largest_unbalance(sim, gravity).ratio;
 }
 
 EquilibriumReport solve_equilibrium(const EquilibriumSpec& spec, const Vec3& gravity, Simulation& sim) {

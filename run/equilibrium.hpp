@@ -52,6 +52,16 @@ struct EquilibriumReport {
 // when there is no free block or no gravity.
 double unbalanced_force_ratio(const Simulation& sim, const Vec3& gravity);
 
+// The block that sets R: the free block with the largest unbalanced force or
+// moment over its radius (`moment` says which), that value (N) and R.
+struct Unbalance {
+  int block = -1;
+  double value = 0;
+  bool moment = false;
+  double ratio = 0;
+};
+Unbalance largest_unbalance(const Simulation& sim, const Vec3& gravity);
+
 // Runs the stage on `sim` (freshly set up) and starts the dynamic stage.
 // Throws SceneError ("equilibrium.max_steps") when R stays above the
 // tolerance for max_steps steps.

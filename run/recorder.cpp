@@ -87,7 +87,9 @@ JointMesh JointMesh::from_contacts(const Simulation& sim, const Vec3& up, double
     j.ref = p.ref_block;
     j.inc = p.ref_block == p.a ? p.b : p.a;
     j.normal_local = c.sub.ref_normal_local[p.first];
-    j.offset_local = c.sub.ref_offset_local[p.first];
+    // The geometric plane: a pair's crush (the same for all its subcontacts)
+    // moved the spring's zero, not the face.
+    j.offset_local = c.sub.ref_offset_local[p.first] + c.sub.crush[p.first];
     j.bed = std::abs((st.rotation[j.ref] * j.normal_local).dot(up)) > std::sqrt(0.5);
     j.first = static_cast<int>(m.corners.size());
     for (int s = p.first; s < p.first + p.count; ++s) m.corners.push_back(c.sub.inc_point_local[s]);

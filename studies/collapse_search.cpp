@@ -25,29 +25,16 @@ Vec3 horizontal_direction(double deg) {
   return Vec3(std::cos(a), std::sin(a), 0.0).normalized();  // as the deck reader stores a direction
 }
 
-// The free block with the largest unbalanced force (or moment over its
-// radius, as unbalanced_force_ratio weighs it) under `load`, with its speed,
-// spin and displacement: what a static solve that finds no equilibrium
-// reports.
-std::string largest_unbalance(const Simulation& sim, const Vec3& load) {
+// What a static solve that finds no equilibrium reports of the block that
+// sets the unbalanced-force ratio under `load` (run/equilibrium.hpp).
+std::string largest_unbalance_text(const Simulation& sim, const Vec3& load) {
+  const Unbalance u = largest_unbalance(sim, load);
+  if (u.block < 0) return "no free block";
   const Blocks& b = sim.blocks();
-  double worst = -1;
-  int w = -1;
-  bool moment = false;
-  for (int i : b.free_blocks) {
-    const double r = b.props.radius[i] > 0 ? b.props.radius[i] : 1.0;
-    const double f = (b.props.mass[i] * load + b.state.contact_force[i]).norm();
-    const double m = b.state.contact_torque[i].norm() / r;
-    if (std::max(f, m) > worst) {
-      worst = std::max(f, m);
-      w = i;
-      moment = m > f;
-    }
-  }
-  if (w < 0) return "no free block";
+  const int w = u.block;
   return fmt::format("block '{}' ({:.3g} kg): unbalanced {} {:.3g} N, speed {:.3g} m/s, spin {:.3g} rad/s, "
                      "displaced {:.3g} m",
-                     b.props.name[w], b.props.mass[w], moment ? "moment/radius" : "force", worst,
+                     b.props.name[w], b.props.mass[w], u.moment ? "moment/radius" : "force", u.value,
                      b.state.velocity[w].norm(), b.state.angular_velocity[w].norm(),
                      (b.state.position[w] - b.initial_position[w]).norm());
 }
@@ -132,9 +119,9 @@ BisectionResult bisect(const CollapseSearchOptions& o, const char* method, const
     if (observe) observe(method, t);
     if (t.no_equilibrium && !t.collapsed && b.error.empty())
       b.error = fmt::format("the static solve at {} g found no equilibrium in --static-max-steps = {} steps of an "
-                            "increment and no collapse ({}); not counted either way: raise --static-max-steps, or "
-                            "solve without --density-scaling",
-                            a_g, o.static_max_steps, t.no_equilibrium_detail);
+                            "increment and no collapse ({}); not counted either way: raise --static-max-steps{}",
+                            a_g, o.static_max_steps, t.no_equilibrium_detail,
+                            o.density_scaling ? ", or solve without --density-scaling" : "");
     return t;
   };
   CollapseTrial lo = trial(o.low_g);
@@ -150,7 +137,11 @@ BisectionResult bisect(const CollapseSearchOptions& o, const char* method, const
   b.last_collapse = hi;
   while (hi.acceleration_g - lo.acceleration_g > o.tolerance_g) {
     CollapseTrial mid = trial(0.5 * (lo.acceleration_g + hi.acceleration_g));
-    if (!b.error.empty()) return b;
+    if (!b.error.empty()) {  // the bracket so far stays in the result
+      b.low_g = lo.acceleration_g;
+      b.high_g = hi.acceleration_g;
+      return b;
+    }
     if (mid.collapsed) {
       hi = mid;
       b.last_collapse = mid;
@@ -210,7 +201,7 @@ CollapseTrial static_collapse_trial(const SceneSpec& scene, double deg, double a
         std::string fastest;
         t.collapsed = mechanism_moving(*sim, s.simulation.settle_velocity > 0 ? s.simulation.settle_velocity : 1e-3,
                                        s.assessment.damage_displacement, fastest);
-        t.no_equilibrium_detail = largest_unbalance(*sim, load) + "; " + fastest +
+        t.no_equilibrium_detail = largest_unbalance_text(*sim, load) + "; " + fastest +
                                   (t.collapsed ? ": a mechanism under way, counted as collapse" : "");
         break;
       }

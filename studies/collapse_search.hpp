@@ -15,7 +15,9 @@
 //               stands when the last increment is solved; it collapses when
 //               the blocks moved beyond the deck's collapse_displacement make
 //               up its collapse_mass_fraction, or when an increment finds no
-//               equilibrium in `static_max_steps` steps (reported apart).
+//               equilibrium in `static_max_steps` steps while a mechanism is
+//               under way; an increment without equilibrium and with nothing
+//               moving away stops the search (`no_equilibrium`, below).
 //               Collapse under a constant acceleration is a quasi-static
 //               question: no rise time to choose, no hold time to wait out.
 // Each trial is the caller's scene with its ground motion, end time and
@@ -70,7 +72,8 @@ struct CollapseTrial {
 using TrialObserver = std::function<void(const char* method, const CollapseTrial&)>;
 
 struct BisectionResult {
-  std::string error;                  // the bracket does not contain the collapse acceleration
+  std::string error;                  // the bracket does not contain the collapse acceleration, or a static
+                                      // trial found no equilibrium (low_g/high_g: the bracket reached)
   double collapse_g = 0;              // the bracket's midpoint at the end
   double low_g = 0, high_g = 0;       // the final bracket
   CollapseTrial last_collapse;        // the run at high_g (its crack)

@@ -292,6 +292,7 @@ TEST(HoldNormalStrain, ASliverFoundDeepUnderAFullPolygonKeepsItsEnergy) {
   b.state.position[1] = Vec3(0, 0, -u);
   const ContactSet previous = one_pair({{0.4, 0.4, 1e-4, 1}});
   ContactSet current = one_pair(square(11));
+  for (int s = 0; s < 4; ++s) current.sub.overlap[s] = u;  // as build_subcontacts leaves it: the geometry's
   const double e_old = normal_energy(b, previous);
   ASSERT_NEAR(e_old, 0.5 * kKn * 1e-4 * u * u, 1e-9 * e_old);
   ASSERT_NEAR(normal_energy(b, current), 1e4 * e_old, 1e-9 * 1e4 * e_old);  // 36 kJ from nowhere
@@ -301,6 +302,8 @@ TEST(HoldNormalStrain, ASliverFoundDeepUnderAFullPolygonKeepsItsEnergy) {
   for (int s = 0; s < 4; ++s) {
     EXPECT_NEAR(-current.sub.ref_offset_local[s], 0.99 * u, 1e-12) << s;
     EXPECT_EQ(current.sub.crush[s], -current.sub.ref_offset_local[s]) << s;  // what penetration is judged on
+    EXPECT_NEAR(current.sub.overlap[s], 0.01 * u, 1e-12) << s;             // the spring's
+    EXPECT_NEAR(current.sub.geometric_overlap(s), u, 1e-15) << s;          // the blocks'
   }
   // From there on the joint has the square's full stiffness kn·1 m².
   b.state.position[1].z() -= 1e-4;
@@ -350,6 +353,40 @@ TEST(HoldNormalStrain, LoweringIsLeftAloneANewPairStartsAtZeroForceBondsAreKept)
   bonded.sub.bonded[2] = 1;
   hold_normal_strain(laws, b.state, sliver, bonded);
   for (int s = 0; s < 4; ++s) EXPECT_EQ(bonded.sub.ref_offset_local[s], 0.0);
+}
+
+TEST(HoldNormalStrain, AReferenceFaceThatChangesSidesIsHeldAlike) {
+  // The previous sliver on block 0's face, the new square on block 1's (its
+  // normal −z in block 1's frame): the same overlap u either way.
+  Blocks b = two_blocks_at_rest();
+  const double u = 5e-3;
+  b.state.position[1] = Vec3(0, 0, -u);
+  const ContactSet previous = one_pair({{0.4, 0.4, 1e-4, 1}});
+  ContactSet current = one_pair(square(11), 1);
+  const double e_old = normal_energy(b, previous), e_new = normal_energy(b, current);
+  ASSERT_NEAR(e_new, 1e4 * e_old, 1e-9 * e_new);
+  hold_normal_strain(JointLaws(JointLaw{kKn, kKs, 0.5, 0, 0, 0}), b.state, previous, current);
+  EXPECT_NEAR(normal_energy(b, current), e_old, 1e-12 * e_new);
+  for (int s = 0; s < 4; ++s) EXPECT_NEAR(current.sub.crush[s], 0.99 * u, 1e-12) << s;
+}
+
+TEST(HoldNormalStrain, ABondsTensionIsNotHandedOnAsCompression) {
+  // The previous pair: one corner pressed 1 mm, one bonded corner pulled
+  // 3 mm (tension). The new, unbonded square may hold only the compression.
+  Blocks b = two_blocks_at_rest();
+  const double tilt = 4e-3;  // u = 1 mm at y = −0.5 .. −3 mm at y = +0.5
+  b.state.orientation[1] = Quat(Eigen::AngleAxisd(tilt, Vec3::UnitX()));
+  b.state.rotation[1] = b.state.orientation[1].toRotationMatrix();
+  b.state.position[1] = Vec3(0, 0, 1e-3);
+  ContactSet previous = one_pair({{0.0, -0.5, 0.05, 1}, {0.0, 0.5, 0.05, 2}});
+  previous.sub.bonded[1] = 1;
+  ContactSet current = one_pair({{-0.5, -0.5, 0.25, 11}, {0.5, -0.5, 0.25, 12}, {0.5, 0.5, 0.25, 13},
+                                 {-0.5, 0.5, 0.25, 14}});
+  const double u_pressed = 0.5 * std::sin(tilt) - 1e-3;  // the corner at y = −0.5
+  const double compression = 0.5 * kKn * 0.05 * u_pressed * u_pressed;
+  ASSERT_GT(normal_energy(b, previous), 5 * compression);  // the bond's tension counts in the ledger
+  hold_normal_strain(JointLaws(JointLaw{kKn, kKs, 0.5, 0, 0, 0}), b.state, previous, current);
+  EXPECT_NEAR(normal_energy(b, current), compression, 1e-12 * normal_energy(b, previous));
 }
 
 }  // namespace
