@@ -139,7 +139,8 @@ double normal_strain_energy_now(const JointLaws& laws, const BlockState& state, 
 // geometry and finds the shift again if it is still needed. A re-sampling
 // that lowers the strain is left alone (the ledger books what it removed).
 // Pairs with a bonded subcontact are left alone too (tension: the strain
-// is not monotone in δ). A pair found for the first time held no strain:
+// is not monotone in δ), and only the previous compression counts (a broken
+// bond's tension is not handed on as compression). A pair found for the first time held no strain:
 // if it is found already overlapping (a corner the clip kept outside the
 // reference face until it was in: 1.1 and 2.5 kJ in the 1.0 g run), it
 // starts at zero force. Only the first detection's pairs (t = 0, the
