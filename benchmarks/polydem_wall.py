@@ -24,22 +24,13 @@ import time
 
 import numpy as np
 import polydem
+from wall_options import add_wall_options
 
 p = argparse.ArgumentParser()
-p.add_argument("--courses", type=int, required=True)
-p.add_argument("--bricks", type=int, required=True, help="whole bricks per even course")
-p.add_argument("--unit", type=float, nargs=3, default=[0.3, 0.3, 0.15], metavar=("L", "W", "H"),
-               help="brick length along the wall, width through it, height (m)")
-p.add_argument("--kn", type=float, default=1e10, help="normal stiffness per unit joint area (Pa/m)")
-p.add_argument("--ks-ratio", type=float, default=0.4)
-p.add_argument("--friction", type=float, default=30.0, help="friction angle (degrees)")
+add_wall_options(p, interval=1.0)
 p.add_argument("--beta", type=float, default=2.1e-5, help="contact damping beta (s)")
-p.add_argument("--density", type=float, default=2600.0)
 p.add_argument("--threads", type=int, default=1)
 p.add_argument("--fixed-threads", action="store_true", help="simulation.adaptive_threads = false")
-p.add_argument("--settle-max", type=float, default=0.5, help="settle at most this long (simulated s)")
-p.add_argument("--settle-speed", type=float, default=1e-3, help="settled: every brick slower than this (m/s)")
-p.add_argument("--interval", type=float, default=1.0, help="timed simulated interval (s)")
 a = p.parse_args()
 
 L, W, H = a.unit

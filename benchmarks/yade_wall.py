@@ -44,21 +44,15 @@ import time
 
 from yade import polyhedra_utils  # noqa: F401 (YADE's interpreter provides O, Body, ... as builtins)
 
+# YADE runs this file with sys.argv[0] its path (its own __file__ is yade's).
+sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
+from wall_options import add_wall_options  # noqa: E402
+
 p = argparse.ArgumentParser()
-p.add_argument("--courses", type=int, required=True)
-p.add_argument("--bricks", type=int, required=True, help="whole bricks per even course")
-p.add_argument("--unit", type=float, nargs=3, default=[0.3, 0.3, 0.15], metavar=("L", "W", "H"),
-               help="brick length along the wall, width through it, height (m)")
-p.add_argument("--kn", type=float, default=1e10, help="normal stiffness per unit joint area (Pa/m)")
-p.add_argument("--ks-ratio", type=float, default=0.4)
-p.add_argument("--friction", type=float, default=30.0, help="friction angle (degrees)")
-p.add_argument("--density", type=float, default=2600.0)
+add_wall_options(p, interval=0.05)
 p.add_argument("--safety", type=float, default=0.8, help="fraction of PWaveTimeStep()")
 p.add_argument("--dt", type=float, default=0.0, help="time step (s); 0: --safety x the P-wave estimate")
 p.add_argument("--damping", type=float, default=0.2, help="NewtonIntegrator local damping")
-p.add_argument("--settle-max", type=float, default=0.5, help="settle at most this long (simulated s)")
-p.add_argument("--settle-speed", type=float, default=1e-3, help="settled: every brick slower than this (m/s)")
-p.add_argument("--interval", type=float, default=0.05, help="timed simulated interval (s)")
 p.add_argument("--state", default="", help="settled scene file: loaded if it exists (no settling), "
                                            "else written after settling (O.save)")
 a = p.parse_args(sys.argv[1:])
