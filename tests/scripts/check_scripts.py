@@ -142,6 +142,23 @@ def main():
              "--out", png("sensitivity.png")])
         check_png(png("sensitivity.png"))
 
+    # The damping lever's stability table (docs/benchmarks.md): on a few
+    # networks the explicit scheme must stop at its formula (within the
+    # 0.02 grid and the networks' spread) and the block-implicit one must
+    # reach the springs' limit, 2.
+    proc = subprocess.run([PYTHON, os.path.join(scripts, "damping_stability.py"), "--trials", "4"],
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    print(proc.stdout)
+    rows = [line.split() for line in proc.stdout.splitlines()[1:] if line.strip()]
+    if proc.returncode != 0 or len(rows) != 4:
+        failures.append(f"damping_stability.py: exit {proc.returncode}, {len(rows)} rows")
+    for r in rows:
+        formula, explicit, block = float(r[1]), float(r[2]), float(r[3])
+        if not (formula - 0.1 <= explicit <= formula + 0.02):
+            failures.append(f"damping_stability.py: explicit limit {explicit} against the formula {formula}")
+        if block < 1.98:
+            failures.append(f"damping_stability.py: block-implicit limit {block} below the springs' 2")
+
     if failures:
         print("FAILED:\n  " + "\n  ".join(failures))
         sys.exit(1)
