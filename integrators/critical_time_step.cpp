@@ -1,6 +1,7 @@
 #include "integrators/critical_time_step.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -55,13 +56,47 @@ void finish(CriticalStep& out, const JointSpec& joint, double safety_factor) {
   out.chosen = safety_factor * out.critical;
 }
 
+// The step finish() would choose for ω (falls as ω rises).
+double chosen_for(double omega, const JointSpec& joint, double safety_factor) {
+  CriticalStep c;
+  c.omega_max = omega;
+  finish(c, joint, safety_factor);
+  return c.chosen;
+}
+
+// An upper bound of block i's ω_b² (block_omega_squared): the largest
+// Gershgorin row sum of its mass-normalised stiffness, with a margin far
+// above round-off. A few dozen operations against the eigensolver's
+// thousands.
+double omega_squared_bound(const Blocks& b, int i, const Mat6& K) {
+  Eigen::Matrix<double, 6, 1> inv_sqrt_m;
+  const double m = b.props.mass[i];
+  const Vec3& I = b.props.principal_inertia[i];
+  inv_sqrt_m << 1 / std::sqrt(m), 1 / std::sqrt(m), 1 / std::sqrt(m), 1 / std::sqrt(I.x()), 1 / std::sqrt(I.y()),
+      1 / std::sqrt(I.z());
+  double top = 0;
+  for (int r = 0; r < 6; ++r) {
+    double row = 0;
+    for (int c = 0; c < 6; ++c) row += std::abs(K(r, c)) * inv_sqrt_m(c);
+    top = std::max(top, row * inv_sqrt_m(r));
+  }
+  return top * (1 + 1e-9);
+}
+
 }  // namespace
 
 namespace {
 
+// With `below` > 0 only the question "does some block need a step below
+// `below`?" matters (a detection lowering the run's step): a block whose
+// frequency bound already allows `below` cannot be the answer and skips its
+// eigenvalues. When some block needs a lower step the result is exactly the
+// full one (the stiffest block is among those computed); otherwise it may
+// report a block that does not govern, with chosen ≥ below (or 0: none).
 template <class StiffnessOf>
 CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const StiffnessOf& stiffness_of,
-                           const JointSpec& joint, double safety_factor, std::vector<double>* per_block = nullptr) {
+                           const JointSpec& joint, double safety_factor, std::vector<double>* per_block = nullptr,
+                           double below = 0) {
   CriticalStep out;
   if (per_block) per_block->assign(static_cast<std::size_t>(b.count), 0.0);
   const auto& sub = contacts.sub;
@@ -79,6 +114,8 @@ CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const St
       const Mat3 D = sub.area[s] * (kn * n * n.transpose() + ks * (Mat3::Identity() - n * n.transpose()));
       add_point(K, D, r, 1.0);
     }
+    if (below > 0 && chosen_for(std::sqrt(2.0 * omega_squared_bound(b, i, K)), joint, safety_factor) >= below)
+      continue;
     keep_highest(out, b, i, K);
     if (per_block) (*per_block)[i] = std::sqrt(block_omega_squared(b, i, K));
   }
@@ -89,14 +126,14 @@ CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const St
 }  // namespace
 
 CriticalStep critical_time_step_from_contacts(const Blocks& b, const ContactSet& contacts, const JointSpec& joint,
-                                              double safety_factor) {
+                                              double safety_factor, double below) {
   const std::pair<double, double> k{joint.normal_stiffness, joint.shear_stiffness};
-  return from_contacts(b, contacts, [&k](int) { return k; }, joint, safety_factor);
+  return from_contacts(b, contacts, [&k](int) { return k; }, joint, safety_factor, nullptr, below);
 }
 
 CriticalStep critical_time_step_from_contacts(const Blocks& b, const ContactSet& contacts, const JointLaws& laws,
-                                              const JointSpec& stiffest, double safety_factor) {
-  if (laws.single()) return critical_time_step_from_contacts(b, contacts, stiffest, safety_factor);
+                                              const JointSpec& stiffest, double safety_factor, double below) {
+  if (laws.single()) return critical_time_step_from_contacts(b, contacts, stiffest, safety_factor, below);
   const auto& sub = contacts.sub;
   return from_contacts(
       b, contacts,
@@ -104,7 +141,7 @@ CriticalStep critical_time_step_from_contacts(const Blocks& b, const ContactSet&
         const JointLaw& law = laws.between(sub.ref_block[s], sub.inc_block[s]);
         return std::pair<double, double>{law.kn, law.ks};
       },
-      stiffest, safety_factor);
+      stiffest, safety_factor, nullptr, below);
 }
 
 namespace {
