@@ -10,6 +10,7 @@ namespace polydem {
 namespace {
 
 using Mat6 = Eigen::Matrix<double, 6, 6>;
+using Vec6 = Eigen::Matrix<double, 6, 1>;
 
 Mat3 cross_matrix(const Vec3& r) {
   Mat3 m;
@@ -26,13 +27,20 @@ void add_point(Mat6& K, const Mat3& D, const Vec3& r, double w) {
   K.block<3, 3>(3, 3) += w * X.transpose() * D * X;
 }
 
-// Largest ω² of one block's 6×6 stiffness K against its mass and inertia.
-double block_omega_squared(const Blocks& b, int i, const Mat6& K) {
-  Eigen::Matrix<double, 6, 1> inv_sqrt_m;
+// 1/√m three times, then 1/√I of each principal axis: the scaling that
+// turns a block's stiffness into its mass-normalised one.
+Vec6 inv_sqrt_mass(const Blocks& b, int i) {
+  Vec6 inv_sqrt_m;
   const double m = b.props.mass[i];
   const Vec3& I = b.props.principal_inertia[i];
   inv_sqrt_m << 1 / std::sqrt(m), 1 / std::sqrt(m), 1 / std::sqrt(m), 1 / std::sqrt(I.x()), 1 / std::sqrt(I.y()),
       1 / std::sqrt(I.z());
+  return inv_sqrt_m;
+}
+
+// Largest ω² of one block's 6×6 stiffness K against its mass and inertia.
+double block_omega_squared(const Blocks& b, int i, const Mat6& K) {
+  const Vec6 inv_sqrt_m = inv_sqrt_mass(b, i);
   const Mat6 Kn = inv_sqrt_m.asDiagonal() * K * inv_sqrt_m.asDiagonal();
   Eigen::SelfAdjointEigenSolver<Mat6> eig(Kn, Eigen::EigenvaluesOnly);
   return std::max(0.0, eig.eigenvalues().maxCoeff());
@@ -69,11 +77,7 @@ double chosen_for(double omega, const JointSpec& joint, double safety_factor) {
 // above round-off. A few dozen operations against the eigensolver's
 // thousands.
 double omega_squared_bound(const Blocks& b, int i, const Mat6& K) {
-  Eigen::Matrix<double, 6, 1> inv_sqrt_m;
-  const double m = b.props.mass[i];
-  const Vec3& I = b.props.principal_inertia[i];
-  inv_sqrt_m << 1 / std::sqrt(m), 1 / std::sqrt(m), 1 / std::sqrt(m), 1 / std::sqrt(I.x()), 1 / std::sqrt(I.y()),
-      1 / std::sqrt(I.z());
+  const Vec6 inv_sqrt_m = inv_sqrt_mass(b, i);
   double top = 0;
   for (int r = 0; r < 6; ++r) {
     double row = 0;
