@@ -12,12 +12,12 @@ namespace {
 
 // A block as libccd sees it: world vertices inflated by a sphere of radius
 // `inflate`, so that MPR reports overlap for blocks closer than the margin.
-// The vertices are also kept as x, y and z arrays: MPR asks each block for
-// its support point some tens of times, and the dot products of a direction
+// The n vertices are kept as x, y and z arrays: MPR asks each block for its
+// support point some tens of times, and the dot products of a direction
 // with every vertex then run as one loop over contiguous doubles (the same
 // (x·dx + y·dy) + z·dz as Vec3::dot, so the same bits and the same vertex).
 struct CcdBody {
-  const std::vector<Vec3>* vertices;
+  std::size_t n;
   const double* x;
   const double* y;
   const double* z;
@@ -46,7 +46,7 @@ void split_xyz(const std::vector<Vec3>& v, std::vector<double>& out) {
 void ccd_support(const void* obj, const ccd_vec3_t* dir, ccd_vec3_t* out) {
   const auto* body = static_cast<const CcdBody*>(obj);
   const Vec3 d(ccdVec3X(dir), ccdVec3Y(dir), ccdVec3Z(dir));
-  const std::size_t n = body->vertices->size();
+  const std::size_t n = body->n;
   double* dots = scratch.dots.data();
   const double* x = body->x;
   const double* y = body->y;
@@ -62,7 +62,7 @@ void ccd_support(const void* obj, const ccd_vec3_t* dir, ccd_vec3_t* out) {
       arg = i;
     }
   }
-  Vec3 p = arg < n ? (*body->vertices)[arg] : Vec3(Vec3::Zero());
+  Vec3 p = arg < n ? Vec3(x[arg], y[arg], z[arg]) : Vec3(Vec3::Zero());
   const double len = d.norm();
   if (len > 0) p += (body->inflate / len) * d;
   ccdVec3Set(out, p.x(), p.y(), p.z());
@@ -83,8 +83,8 @@ bool narrow_phase(const std::vector<Vec3>& world_a, const Vec3& centre_a, const 
   const std::size_t na = world_a.size(), nb = world_b.size();
   const double* xa = scratch.xyz_a.data();
   const double* xb = scratch.xyz_b.data();
-  CcdBody ca{&world_a, xa, xa + na, xa + 2 * na, centre_a, 0.5 * margin};
-  CcdBody cb{&world_b, xb, xb + nb, xb + 2 * nb, centre_b, 0.5 * margin};
+  CcdBody ca{na, xa, xa + na, xa + 2 * na, centre_a, 0.5 * margin};
+  CcdBody cb{nb, xb, xb + nb, xb + 2 * nb, centre_b, 0.5 * margin};
   ccd_t ccd;
   CCD_INIT(&ccd);
   ccd.support1 = ccd_support;

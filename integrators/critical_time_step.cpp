@@ -97,6 +97,7 @@ namespace {
 // eigenvalues. When some block needs a lower step the result is exactly the
 // full one (the stiffest block is among those computed); otherwise it may
 // report a block that does not govern, with chosen ≥ below (or 0: none).
+// Asked for every block's frequency (`per_block`), it skips none.
 template <class StiffnessOf>
 CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const StiffnessOf& stiffness_of,
                            const JointSpec& joint, double safety_factor, std::vector<double>* per_block = nullptr,
@@ -118,7 +119,7 @@ CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const St
       const Mat3 D = sub.area[s] * (kn * n * n.transpose() + ks * (Mat3::Identity() - n * n.transpose()));
       add_point(K, D, r, 1.0);
     }
-    if (below > 0 && chosen_for(std::sqrt(2.0 * omega_squared_bound(b, i, K)), joint, safety_factor) >= below)
+    if (below > 0 && !per_block && chosen_for(std::sqrt(2.0 * omega_squared_bound(b, i, K)), joint, safety_factor) >= below)
       continue;
     keep_highest(out, b, i, K);
     if (per_block) (*per_block)[i] = std::sqrt(block_omega_squared(b, i, K));
