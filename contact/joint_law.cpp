@@ -1,8 +1,12 @@
 #include "contact/joint_law.hpp"
 
+#include "contact/joint_law_lanes.hpp"
+
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
+#include <string_view>
 
 namespace polydem {
 
@@ -58,13 +62,13 @@ inline Mat3 joint_spin(const Vec3& w_ref, const Vec3& w_inc, const Vec3& n, doub
 // books it as slip dissipation. `pending`: the last step's dashpot power
 // still to book (its second half), which an opening joint owes all the same.
 inline void open_joint(const JointLaw& law, Subcontacts& sub, std::size_t s, double pending, double dt) {
-  const Vec3& fs = sub.shear_force[s];
+  const Vec3 fs = sub.shear_force[s];
   if (law.ks > 0 && sub.area[s] > 0) sub.slip_energy[s] += 0.5 * fs.squaredNorm() / (law.ks * sub.area[s]);
   sub.damping_energy[s] += 0.5 * dt * pending;
-  sub.damping_force[s] = Vec3::Zero();
+  sub.damping_force.set_zero(s);
   sub.force[s] = Vec3::Zero();
   sub.normal_force[s] = 0;
-  sub.shear_force[s] = Vec3::Zero();
+  sub.shear_force.set_zero(s);
 }
 
 // The law for one subcontact whose geometry and relative velocity at its
@@ -128,7 +132,7 @@ inline void open_joint(const JointLaw& law, Subcontacts& sub, std::size_t s, dou
     fs *= fs_mag > 0 ? cap / fs_mag : 0.0;
     if (still_bonded) sub.bonded[s] = 0;
   }
-  sub.shear_force[s] = fs;
+  sub.shear_force.set(s, fs);
 
   // Stiffness-proportional damping while closed; u̇_n = −v_n.
   double fn_total = fn_el;
@@ -143,7 +147,7 @@ inline void open_joint(const JointLaw& law, Subcontacts& sub, std::size_t s, dou
   // the velocity the force came from, half at the next step (pending).
   const Vec3 f_damp = fn_damp * n + fs_damp;
   sub.damping_energy[s] += 0.5 * dt * (pending - f_damp.dot(vrel));
-  sub.damping_force[s] = f_damp;
+  sub.damping_force.set(s, f_damp);
   sub.normal_force[s] = fn_total;
   sub.force[s] = fn_total * n + fs + fs_damp;
 }
@@ -170,12 +174,45 @@ void compute_joint_forces(const JointLaw& law, const BlockState& st, Subcontacts
 
 namespace {
 
+lanes::SubcontactArrays lane_arrays(Subcontacts& sub) {
+  static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 arrays are read as x y z per element");
+  lanes::SubcontactArrays a;
+  a.ipx = sub.inc_point_local.x.data();
+  a.ipy = sub.inc_point_local.y.data();
+  a.ipz = sub.inc_point_local.z.data();
+  a.offset = sub.ref_offset_local.data();
+  a.area = sub.area.data();
+  a.bonded = sub.bonded.data();
+  a.sfx = sub.shear_force.x.data();
+  a.sfy = sub.shear_force.y.data();
+  a.sfz = sub.shear_force.z.data();
+  a.dfx = sub.damping_force.x.data();
+  a.dfy = sub.damping_force.y.data();
+  a.dfz = sub.damping_force.z.data();
+  a.slip_energy = sub.slip_energy.data();
+  a.damping_energy = sub.damping_energy.data();
+  a.overlap = sub.overlap.data();
+  a.normal_force = sub.normal_force.data();
+  a.point = sub.point.data()->data();
+  a.force = sub.force.data()->data();
+  return a;
+}
+
+void copy3(const Vec3& v, double* out) {
+  out[0] = v.x();
+  out[1] = v.y();
+  out[2] = v.z();
+}
+
 // The pair loop; `law_of(r, c)` gives the pair's law (a constant for one law,
 // which the compiler folds: the one-law loop is the loop it always was).
-template <class LawOf>
+// kLanes: the subcontacts in AVX2 lanes (joint_law_lanes.hpp), the same bits.
+template <bool kLanes, class LawOf>
 [[gnu::always_inline]] inline void pair_forces(const LawOf& law_of, const BlockState& st,
                                                const std::vector<ContactPair>& pairs, Subcontacts& sub, double dt,
                                                std::size_t pair_begin, std::size_t pair_end) {
+  [[maybe_unused]] lanes::SubcontactArrays arrays;
+  if constexpr (kLanes) arrays = lane_arrays(sub);
   for (std::size_t q = pair_begin; q < pair_end; ++q) {
     const ContactPair& cp = pairs[q];
     if (cp.count == 0) continue;
@@ -194,6 +231,21 @@ template <class LawOf>
     const Vec3& wr = st.angular_velocity[r];
     const Vec3 xcr = xc - xr;
     const Mat3 spin = joint_spin(wr, wc, n, dt);
+    if constexpr (kLanes) {
+      lanes::PairFrame f;
+      copy3(n, f.n);
+      f.plane = plane;
+      copy3(xc, f.xc);
+      std::copy(Rc.data(), Rc.data() + 9, f.Rc);
+      copy3(dv, f.dv);
+      copy3(wc, f.wc);
+      copy3(wr, f.wr);
+      copy3(xcr, f.xcr);
+      std::copy(spin.data(), spin.data() + 9, f.spin);
+      const lanes::LawConstants k{law.kn, law.ks, law.tan_phi, law.cohesion, law.tensile_strength, law.beta, dt};
+      lanes::pair_law(f, k, arrays, s0, static_cast<std::size_t>(cp.count));
+      continue;
+    }
     for (std::size_t s = s0; s < s0 + static_cast<std::size_t>(cp.count); ++s) {
       const Vec3 arm_c = Rc * sub.inc_point_local[s];  // p − x_c
       const Vec3 p = xc + arm_c;
@@ -206,26 +258,53 @@ template <class LawOf>
   }
 }
 
+// Which code path the pair loop takes: the AVX2 lanes where the CPU has
+// them, unless POLYDEM_JOINT_LAW=portable (to compare the two; the bits are
+// the same). Asked once.
+bool use_lanes() {
+  static const bool lanes_on = [] {
+    const char* e = std::getenv("POLYDEM_JOINT_LAW");
+    return lanes::available() && !(e && std::string_view(e) == "portable");
+  }();
+  return lanes_on;
+}
+
+template <class LawOf>
+void pair_forces_on_path(const LawOf& law_of, const BlockState& st, const std::vector<ContactPair>& pairs,
+                         Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
+                         JointLawPath path) {
+  const bool lanes_path = path == JointLawPath::automatic ? use_lanes() : path == JointLawPath::lanes;
+  if (lanes_path)
+    pair_forces<true>(law_of, st, pairs, sub, dt, pair_begin, pair_end);
+  else
+    pair_forces<false>(law_of, st, pairs, sub, dt, pair_begin, pair_end);
+}
+
 }  // namespace
 
+bool joint_law_lanes_available() { return lanes::available(); }
+
 void compute_pair_forces(const JointLaw& law, const BlockState& st, const std::vector<ContactPair>& pairs,
-                         Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end) {
-  pair_forces([&law](int, int) -> const JointLaw& { return law; }, st, pairs, sub, dt, pair_begin, pair_end);
+                         Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
+                         JointLawPath path) {
+  pair_forces_on_path([&law](int, int) -> const JointLaw& { return law; }, st, pairs, sub, dt, pair_begin,
+                      pair_end, path);
 }
 
 void compute_pair_forces(const JointLaws& laws, const BlockState& st, const std::vector<ContactPair>& pairs,
-                         Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end) {
+                         Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
+                         JointLawPath path) {
   if (laws.single()) {
-    compute_pair_forces(laws.laws[0], st, pairs, sub, dt, pair_begin, pair_end);
+    compute_pair_forces(laws.laws[0], st, pairs, sub, dt, pair_begin, pair_end, path);
     return;
   }
-  pair_forces([&laws](int a, int b) -> const JointLaw& { return laws.between(a, b); }, st, pairs, sub, dt,
-              pair_begin, pair_end);
+  pair_forces_on_path([&laws](int a, int b) -> const JointLaw& { return laws.between(a, b); }, st, pairs, sub, dt,
+                      pair_begin, pair_end, path);
 }
 
 void settle_damping_work(const BlockState& st, Subcontacts& sub, double dt) {
   for (std::size_t s = 0; s < sub.size(); ++s) {
-    const Vec3& f = sub.damping_force[s];
+    const Vec3 f = sub.damping_force[s];
     if (f.isZero(0.0)) continue;
     const int r = sub.ref_block[s];
     const int c = sub.inc_block[s];
@@ -233,7 +312,7 @@ void settle_damping_work(const BlockState& st, Subcontacts& sub, double dt) {
     const Vec3 vrel = (st.velocity[c] + st.angular_velocity[c].cross(p - st.position[c])) -
                       (st.velocity[r] + st.angular_velocity[r].cross(p - st.position[r]));
     sub.damping_energy[s] += 0.5 * dt * (-f.dot(vrel));
-    sub.damping_force[s] = Vec3::Zero();
+    sub.damping_force.set_zero(s);
   }
 }
 

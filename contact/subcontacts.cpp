@@ -181,14 +181,14 @@ void build_subcontacts(const Blocks& b, const std::vector<std::pair<int, int>>& 
       sc.key[s] = subcontact_key(patch.ref_side, patch.ref_face, patch.inc_face, pt.feature);
       sc.ref_normal_local[s] = n_local;
       sc.ref_offset_local[s] = off_local;
-      sc.inc_point_local[s] = Ri.transpose() * (pt.point - b.state.position[inc]);
+      sc.inc_point_local.set(s, Ri.transpose() * (pt.point - b.state.position[inc]));
       sc.area[s] = pt.area;
       sc.crush[s] = 0;
-      sc.shear_force[s] = Vec3::Zero();
+      sc.shear_force.set_zero(s);
       sc.bonded[s] = bond_new ? 1 : 0;
       sc.slip_energy[s] = 0;
       sc.damping_energy[s] = 0;
-      sc.damping_force[s] = Vec3::Zero();
+      sc.damping_force.set_zero(s);
       sc.force[s] = Vec3::Zero();
       sc.point[s] = pt.point;
       sc.overlap[s] = -pt.separation;
@@ -355,7 +355,7 @@ void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& cont
       if (!interpolate_stress(pp, scratch, sc.point[s], n, tiny_area, stress)) continue;
       Vec3 f = (side * sc.area[s]) * stress;
       f -= f.dot(n) * n;
-      sc.shear_force[s] = f;
+      sc.shear_force.set(s, f);
       if (sc.area[s] > 0) e_new += f.squaredNorm() / sc.area[s];
       // Bond and dissipation: the nearest previous subcontact's.
       double best = std::numeric_limits<double>::infinity();
@@ -378,7 +378,7 @@ void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& cont
     }
     if (e_new > e_old) {  // the resampling must not make strain energy
       const double scale = std::sqrt(e_old / e_new);
-      for (int s = cp.first; s < cp.first + cp.count; ++s) sc.shear_force[s] *= scale;
+      for (int s = cp.first; s < cp.first + cp.count; ++s) sc.shear_force.set(s, sc.shear_force[s] * scale);
     }
   }
 

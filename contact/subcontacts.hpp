@@ -21,13 +21,18 @@
 //
 // Storage is a struct of arrays indexed by subcontact; one force slot per
 // subcontact is written in parallel and gathered per block in a fixed order
-// (see gather.hpp), so results do not depend on the number of threads.
+// (see gather.hpp), so results do not depend on the number of threads. The
+// vectors the joint law reads and writes four subcontacts at a time (the
+// incident point, the shear and dashpot forces) are themselves split into
+// x, y, z arrays (Vec3Array); those the gather reads one subcontact at a
+// time (force, point) stay Vec3.
 #pragma once
 
 #include "contact/contact_patch.hpp"
 #include "core/blocks.hpp"
 #include "core/byte_stream.hpp"
 #include "geometry/polyhedron.hpp"
+#include "geometry/vec3_array.hpp"
 
 #include <cstdint>
 #include <utility>
@@ -52,7 +57,7 @@ struct Subcontacts {
   // Body-fixed geometry.
   std::vector<Vec3> ref_normal_local;   // reference face normal, ref body frame
   std::vector<double> ref_offset_local;  // plane n·x = offset, ref body frame
-  std::vector<Vec3> inc_point_local;     // incident point, inc body frame
+  Vec3Array inc_point_local;             // incident point, inc body frame
   std::vector<double> area;              // tributary area, m²
   // How far the detection moved the spring's zero into the joint so that its
   // re-sampling made no normal strain (hold_normal_strain, joint_law.hpp):
@@ -61,7 +66,7 @@ struct Subcontacts {
   // ref_offset_local, so the step never reads it. m, ≥ 0.
   std::vector<double> crush;
   // History carried across detections.
-  std::vector<Vec3> shear_force;   // elastic shear force on the incident block, world, N
+  Vec3Array shear_force;           // elastic shear force on the incident block, world, N
   std::vector<std::uint8_t> bonded;  // still has cohesion / tensile strength
   // Per-step results (one slot each).
   std::vector<Vec3> force;          // total joint force on the incident block, N
@@ -72,7 +77,7 @@ struct Subcontacts {
   std::vector<double> damping_energy;  // cumulative damping dissipation, J
   // The dashpot force of the last step (world, on the incident block, N):
   // half of its work is booked with the next step's velocity (joint_law.hpp).
-  std::vector<Vec3> damping_force;
+  Vec3Array damping_force;
 
   std::size_t size() const { return key.size(); }
   // The blocks' overlap at s (the spring's plus its crush), m: what

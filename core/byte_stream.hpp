@@ -13,6 +13,7 @@
 #pragma once
 
 #include "geometry/polyhedron.hpp"
+#include "geometry/vec3_array.hpp"
 
 #include <bit>
 #include <cstdint>
@@ -47,6 +48,15 @@ class ByteWriter {
   void put(const Vec3& v) { put_doubles(v.data(), 3); }
   void put(const Mat3& m) { put_doubles(m.data(), 9); }
   void put(const Quat& q) { put_doubles(q.coeffs().data(), 4); }
+  // The same bytes as a std::vector<Vec3> of the same values.
+  void put(const Vec3Array& v) {
+    put(static_cast<std::uint64_t>(v.size()));
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      put(v.x[i]);
+      put(v.y[i]);
+      put(v.z[i]);
+    }
+  }
 
   template <class T>
   void put(const std::vector<T>& v) {
@@ -120,9 +130,19 @@ class ByteReader {
     }
   }
 
+  void get(Vec3Array& v) {
+    const std::size_t n = count(24);
+    v.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      get(v.x[i]);
+      get(v.y[i]);
+      get(v.z[i]);
+    }
+  }
+
   // A vector whose length must be `expected` (e.g. one entry per block).
   template <class T>
-  void get_sized(std::vector<T>& v, std::size_t expected, const char* what) {
+  void get_sized(T& v, std::size_t expected, const char* what) {
     get(v);
     if (v.size() != expected)
       throw StateFormatError(std::string(what) + ": " + std::to_string(v.size()) + " entries, expected " +

@@ -121,7 +121,7 @@ void Simulation::start_half_step_back() {
   }
   // The forces at t = 0 started the half step back, not a step of the run:
   // no dashpot work of theirs is owed to the ledger.
-  std::fill(contacts_.sub.damping_force.begin(), contacts_.sub.damping_force.end(), Vec3::Zero());
+  contacts_.sub.damping_force.fill_zero();
 }
 
 // Before a detection replaces the subcontacts, each books the second half of
@@ -204,7 +204,7 @@ void Simulation::compute_joint_forces_parallel() {
   const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
   const std::size_t chunk = (n + nt - 1) / nt;
   const std::size_t begin = std::min(n, t * chunk), end = std::min(n, begin + chunk);
-  compute_pair_forces(laws_, blocks_.state, contacts_.pairs, contacts_.sub, dt_, begin, end);
+  compute_pair_forces(laws_, blocks_.state, contacts_.pairs, contacts_.sub, dt_, begin, end, joint_law_path_);
 }
 
 void Simulation::gather_block(int i) {
@@ -378,7 +378,7 @@ void Simulation::end_static_stage() {
   contacts_.resampled_normal_energy = 0;
   std::fill(contacts_.sub.slip_energy.begin(), contacts_.sub.slip_energy.end(), 0.0);
   std::fill(contacts_.sub.damping_energy.begin(), contacts_.sub.damping_energy.end(), 0.0);
-  std::fill(contacts_.sub.damping_force.begin(), contacts_.sub.damping_force.end(), Vec3::Zero());
+  contacts_.sub.damping_force.fill_zero();
   energy_reference_ = mechanical0_ = 0;
   energy_started_ = false;
   last_good_ = st;

@@ -97,6 +97,9 @@ class Simulation {
   // tens of microseconds and the threads' barriers cost more than they save,
   // badly so on a loaded machine.
   void set_parallel_threshold(std::size_t subcontacts) { parallel_threshold_ = subcontacts; }
+  // The joint law's code path (JointLawPath, joint_law.hpp): automatic by
+  // default; tests run both and compare the bits.
+  void set_joint_law_path(JointLawPath path) { joint_law_path_ = path; }
   // The thread governor's probing schedule (tests probe every few steps).
   void set_thread_probing(long first_probe, long shortest_interval, long longest_interval, int probe_steps,
                           double probe_seconds) {
@@ -227,6 +230,7 @@ class Simulation {
   bool bond_initial_;
   bool adaptive_dt_;
   std::size_t parallel_threshold_ = 2048;
+  JointLawPath joint_law_path_ = JointLawPath::automatic;
   ThreadGovernor governor_;
   double dt_;
   double dt_prev_;  // the step before: leapfrog with a changing step

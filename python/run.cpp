@@ -89,6 +89,17 @@ py::array_t<double> copy_vec3s(const std::vector<Vec3>& v) {
   return a;
 }
 
+py::array_t<double> copy_vec3s(const Vec3Array& v) {
+  py::array_t<double> a({static_cast<py::ssize_t>(v.size()), py::ssize_t{3}});
+  auto w = a.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    w(static_cast<py::ssize_t>(i), 0) = v.x[i];
+    w(static_cast<py::ssize_t>(i), 1) = v.y[i];
+    w(static_cast<py::ssize_t>(i), 2) = v.z[i];
+  }
+  return a;
+}
+
 py::array_t<double> copy_quats(const std::vector<Quat>& q) {
   py::array_t<double> a({static_cast<py::ssize_t>(q.size()), py::ssize_t{4}});
   auto w = a.mutable_unchecked<2>();

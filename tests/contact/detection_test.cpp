@@ -92,7 +92,7 @@ TEST(ContactDetector, SubcontactsKeepTheirHistoryAcrossDetections) {
   std::map<std::uint64_t, Vec3> shear;
   std::map<std::uint64_t, double> slip, damp;
   for (std::size_t s = 0; s < cs.sub.size(); ++s) {
-    cs.sub.shear_force[s] = Vec3(100.0 * (s + 1), -7.0 * s, 0);
+    cs.sub.shear_force.set(s, Vec3(100.0 * (s + 1), -7.0 * s, 0));
     cs.sub.slip_energy[s] = 0.5 + s;
     cs.sub.damping_energy[s] = 0.25 * s;
     cs.sub.bonded[s] = s % 2;

@@ -46,9 +46,9 @@ struct OneSubcontact {
     sub.key[0] = 7;
     sub.ref_normal_local[0] = Vec3::UnitZ();
     sub.ref_offset_local[0] = 0.0;
-    sub.inc_point_local[0] = Vec3(0.25, -0.25, -0.5 - depth);
+    sub.inc_point_local.set(0, Vec3(0.25, -0.25, -0.5 - depth));
     sub.area[0] = kA;
-    sub.shear_force[0] = Vec3::Zero();
+    sub.shear_force.set(0, Vec3::Zero());
     sub.bonded[0] = 0;
     sub.force[0] = Vec3::Zero();
     sub.point[0] = Vec3::Zero();
@@ -56,7 +56,7 @@ struct OneSubcontact {
     sub.normal_force[0] = 0;
     sub.slip_energy[0] = 0;
     sub.damping_energy[0] = 0;
-    sub.damping_force[0] = Vec3::Zero();
+    sub.damping_force.set(0, Vec3::Zero());
   }
   void run(const JointLaw& law) { compute_joint_forces(law, st, sub, kDt, 0, 1); }
   // The same through the hot path (one pair of one subcontact).
@@ -116,7 +116,7 @@ TEST(JointLaw, ShearForceIncrementsBy_ksA_vs_dt) {
 TEST(JointLaw, StoredShearIsRotatedIntoThePlane) {
   const JointLaw law = law_for_test();
   OneSubcontact c(kDelta);
-  c.sub.shear_force[0] = Vec3(30, -40, 50);  // has a normal component
+  c.sub.shear_force.set(0, Vec3(30, -40, 50));  // has a normal component
   c.run(law);
   EXPECT_EQ(c.sub.shear_force[0], Vec3(30, -40, 0));
 }
@@ -130,7 +130,7 @@ TEST(JointLaw, StoredShearTurnsWithAPairSpinningAboutTheNormal) {
   const double w = 100.0;  // rad/s: 1e-3 rad a step
   c.st.angular_velocity = {Vec3(0, 0, w), Vec3(0, 0, w)};
   const Vec3 f0(300, 0, 0);
-  c.sub.shear_force[0] = f0;
+  c.sub.shear_force.set(0, f0);
   c.run_pair(law);
   const Vec3 one_step = Eigen::AngleAxisd(w * kDt, Vec3::UnitZ()) * f0;
   EXPECT_NEAR((c.sub.shear_force[0] - one_step).norm(), 0.0, 1e-12 * f0.norm());
@@ -139,7 +139,7 @@ TEST(JointLaw, StoredShearTurnsWithAPairSpinningAboutTheNormal) {
   const int n = 1571;
   const double step = (std::acos(-1.0) / 2) / n;
   c.st.angular_velocity = {Vec3(0, 0, step / kDt), Vec3(0, 0, step / kDt)};
-  c.sub.shear_force[0] = f0;
+  c.sub.shear_force.set(0, f0);
   for (int k = 1; k <= n; ++k) {
     c.pose(Eigen::AngleAxisd(k * step, Vec3::UnitZ()).toRotationMatrix());
     c.run_pair(law);
@@ -152,7 +152,7 @@ TEST(JointLaw, StoredShearTurnsWithAPairSpinningAboutTheNormal) {
   OneSubcontact d(kDelta);
   const double w_inc = 1.0;
   d.st.angular_velocity[1] = Vec3(0, 0, w_inc);
-  d.sub.shear_force[0] = f0;
+  d.sub.shear_force.set(0, f0);
   d.run_pair(law);
   const Vec3 arm = d.sub.point[0] - d.st.position[1];
   const Vec3 increment = -(law.ks * kA * kDt) * Vec3(0, 0, w_inc).cross(arm);
@@ -173,7 +173,7 @@ TEST(JointLaw, StoredShearTurnsWithTheNormalAndKeepsItsLength) {
   c.st.angular_velocity = {Vec3(w, 0, 0), Vec3(w, 0, 0)};
   c.st.velocity[1] = Vec3(w, 0, 0).cross(c.st.position[1]);  // rigid with the reference block
   const Vec3 f0(0, 300, 0);  // in the plane of t − dt
-  c.sub.shear_force[0] = f0;
+  c.sub.shear_force.set(0, f0);
   c.run_pair(law);
   EXPECT_NEAR((c.sub.shear_force[0] - R * f0).norm(), 0.0, 1e-12 * f0.norm());
   EXPECT_NEAR(c.sub.shear_force[0].norm(), 300.0, 1e-12 * 300.0);
@@ -188,7 +188,7 @@ TEST(JointLaw, ShearLetGoByAFallingCapIsSlip) {
   OneSubcontact c(kDelta);
   const double cap = law.kn * kA * kDelta * law.tan_phi;
   const Vec3 f0(0, 2.0 * cap, 0);  // stored under a higher normal force
-  c.sub.shear_force[0] = f0;
+  c.sub.shear_force.set(0, f0);
   c.run(law);  // at rest: no increment, only the cap
   EXPECT_NEAR(c.sub.shear_force[0].norm(), cap, 1e-12 * cap);
   const double before = 0.5 * f0.squaredNorm() / (law.ks * kA);
@@ -246,7 +246,7 @@ TEST(JointLaw, StiffnessProportionalDamping) {
   // centred velocity): here the joint closes at half the speed and slides
   // back, so over that half the shear dashpot gave work back.
   c.st.velocity[1] = Vec3(-vs, 0, -0.5 * closing);
-  c.sub.damping_force[0] = Vec3(-fs_damp, 0, fn_damp);  // exactly, for the hand sum
+  c.sub.damping_force.set(0, Vec3(-fs_damp, 0, fn_damp));  // exactly, for the hand sum
   const double before = c.sub.damping_energy[0];
   c.run(law);
   const double second_half = 0.5 * kDt * (fn_damp * 0.5 * closing - fs_damp * vs);
@@ -260,14 +260,14 @@ TEST(JointLaw, PendingDashpotWorkIsSettledWithTheVelocityOfNow) {
   JointLaw law = law_for_test();
   law.beta = 1e-4;
   OneSubcontact c(kDelta);
-  c.sub.damping_force[0] = Vec3(0, 0, 1000);  // N, pushing the incident block up
+  c.sub.damping_force.set(0, Vec3(0, 0, 1000));  // N, pushing the incident block up
   c.st.velocity[1] = Vec3(0, 0, -0.5);         // still closing
   settle_damping_work(c.st, c.sub, kDt);
   EXPECT_DOUBLE_EQ(c.sub.damping_energy[0], 0.5 * kDt * 1000 * 0.5);
   EXPECT_EQ(c.sub.damping_force[0], Vec3::Zero());
   // An opening joint books it too, then carries nothing.
   OneSubcontact d(-kDelta);
-  d.sub.damping_force[0] = Vec3(0, 0, 1000);
+  d.sub.damping_force.set(0, Vec3(0, 0, 1000));
   d.st.velocity[1] = Vec3(0, 0, 0.5);  // opening: the dashpot force did negative work on this half
   d.run(law);
   EXPECT_DOUBLE_EQ(d.sub.damping_energy[0], -0.5 * kDt * 1000 * 0.5);
@@ -301,7 +301,7 @@ TEST(JointLaw, OpeningBooksStoredShearEnergyAsSlip) {
   const JointLaw law = law_for_test();
   OneSubcontact c(-kDelta);
   const Vec3 fs(300, -400, 0);  // 500 N
-  c.sub.shear_force[0] = fs;
+  c.sub.shear_force.set(0, fs);
   c.sub.slip_energy[0] = 1.0;
   c.run(law);
   EXPECT_EQ(c.sub.shear_force[0], Vec3::Zero());

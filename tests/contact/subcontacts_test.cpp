@@ -56,14 +56,14 @@ ContactSet one_pair(const std::vector<Point>& points, int ref = 0, int a = 0, in
     cs.sub.key[s] = points[s].key;
     cs.sub.ref_normal_local[s] = ref == a ? Vec3::UnitZ() : Vec3(-Vec3::UnitZ());
     cs.sub.ref_offset_local[s] = 0;
-    cs.sub.inc_point_local[s] = x;
+    cs.sub.inc_point_local.set(s, x);
     cs.sub.point[s] = x;
     cs.sub.area[s] = points[s].area;
-    cs.sub.shear_force[s] = Vec3::Zero();
+    cs.sub.shear_force.set(s, Vec3::Zero());
     cs.sub.bonded[s] = 0;
     cs.sub.slip_energy[s] = 0;
     cs.sub.damping_energy[s] = 0;
-    cs.sub.damping_force[s] = Vec3::Zero();
+    cs.sub.damping_force.set(s, Vec3::Zero());
     cs.sub.crush[s] = 0;
   }
   return cs;
@@ -83,7 +83,7 @@ TEST(CarryHistory, FollowsThePositionNotTheKey) {
   const Blocks b = two_blocks_at_rest();
   ContactSet previous = one_pair(square(11));
   for (int s = 0; s < 4; ++s) {
-    previous.sub.shear_force[s] = Vec3(100.0 * (s + 1), -30.0 * s, 0);
+    previous.sub.shear_force.set(s, Vec3(100.0 * (s + 1), -30.0 * s, 0));
     previous.sub.slip_energy[s] = 0.5 + s;
     previous.sub.damping_energy[s] = 0.25 * s;
     previous.sub.bonded[s] = s % 2;
@@ -137,7 +137,7 @@ TEST(CarryHistory, ATwistIsCarriedOntoANewClipExactly) {
   auto twist_force = [&](double x, double y, double area) { return Vec3(-tau * y * area, tau * x * area, 0); };
   ContactSet previous = one_pair(square(1));
   for (int s = 0; s < 4; ++s)
-    previous.sub.shear_force[s] = twist_force(previous.sub.point[s].x(), previous.sub.point[s].y(), 0.25);
+    previous.sub.shear_force.set(s, twist_force(previous.sub.point[s].x(), previous.sub.point[s].y(), 0.25));
   const double c = 0.006;  // where the turned edges cross
   std::vector<Point> octagon = {{-0.5 + c, -0.5, 0.124, 1}, {0.5, -0.5 + c, 0.126, 2}, {0.5, 0.5 - c, 0.124, 3},
                                 {-0.5 + c, 0.5, 0.126, 4},  {-0.5, 0.0, 0.125, 5},     {0.0, -0.5, 0.125, 6},
@@ -164,7 +164,7 @@ TEST(CarryHistory, APointOffThePreviousPatchStartsWithoutHistory) {
   const Blocks b = two_blocks_at_rest();
   ContactSet previous = one_pair(square(1));
   for (int s = 0; s < 4; ++s) {
-    previous.sub.shear_force[s] = Vec3(0, 250, 0);
+    previous.sub.shear_force.set(s, Vec3(0, 250, 0));
     previous.sub.bonded[s] = 1;
   }
   // 0.0707 m (a tenth of the radius) is the tolerance: 0.06 m off carries,
@@ -186,7 +186,7 @@ TEST(CarryHistory, ACornerSplitIntoTwoCrossingsSharesItsDisplacement) {
   const Blocks b = two_blocks_at_rest();
   ContactSet previous = one_pair({{0.5, 0.5, 0.25, 1}});
   const Vec3 f(300, -400, 0);
-  previous.sub.shear_force[0] = f;
+  previous.sub.shear_force.set(0, f);
   previous.sub.slip_energy[0] = 2.0;
   previous.sub.bonded[0] = 1;
   ContactSet current = one_pair({{0.495, 0.5, 0.125, 7}, {0.5, 0.495, 0.125, 8}});
@@ -208,7 +208,7 @@ TEST(CarryHistory, InheritorsWithMoreAreaShareTheEnergyInsteadOfCopyingIt) {
   const Blocks b = two_blocks_at_rest();
   ContactSet previous = one_pair({{0.5, 0.5, 0.25, 1}});
   const Vec3 f(0, 1000, 0);
-  previous.sub.shear_force[0] = f;
+  previous.sub.shear_force.set(0, f);
   ContactSet current = one_pair({{0.495, 0.5, 0.25, 7}, {0.5, 0.495, 0.25, 8}});
   CarryScratch scratch;
   carry_history(b, previous, current, kKs, kMargin, scratch);
@@ -225,7 +225,7 @@ TEST(CarryHistory, ShearOfAreaThatIsGoneIsBookedAsDropped) {
   const Blocks b = two_blocks_at_rest();
   ContactSet previous = one_pair(square(11));
   const Vec3 f(0, 2000, 0);
-  for (int s = 0; s < 4; ++s) previous.sub.shear_force[s] = f;
+  for (int s = 0; s < 4; ++s) previous.sub.shear_force.set(s, f);
   previous.sub.slip_energy[1] = 3.0;
   previous.sub.damping_energy[1] = 1.5;
   // Corners 0, 2, 3 remain with a fifth of their area lost; corner 1 is gone.
@@ -245,7 +245,7 @@ TEST(CarryHistory, ShearOfAreaThatIsGoneIsBookedAsDropped) {
 TEST(CarryHistory, AReferenceFaceThatChangesSidesTurnsTheForceOntoTheOtherBlock) {
   const Blocks b = two_blocks_at_rest();
   ContactSet previous = one_pair({{0.5, 0.5, 0.25, 1}}, 0);
-  previous.sub.shear_force[0] = Vec3(10, 20, 0);
+  previous.sub.shear_force.set(0, Vec3(10, 20, 0));
   ContactSet current = one_pair({{0.5, 0.5, 0.25, 1}}, 1);
   CarryScratch scratch;
   carry_history(b, previous, current, kKs, kMargin, scratch);
@@ -263,7 +263,7 @@ TEST(CarryHistory, AnotherPairDoesNotInheritAndAPairThatIsGoneDropsItsShear) {
   }();
   ContactSet previous = one_pair({{0.5, 0.5, 0.25, 11}});
   previous.sub.slip_energy[0] = 3.0;
-  previous.sub.shear_force[0] = Vec3(500, 0, 0);
+  previous.sub.shear_force.set(0, Vec3(500, 0, 0));
   ContactSet current = one_pair({{0.5, 0.5, 0.25, 11}}, 0, 0, 2);
   CarryScratch scratch;
   carry_history(b, previous, current, kKs, kMargin, scratch);

@@ -1,0 +1,75 @@
+// The joint law four subcontacts at a time: the AVX2 code path.
+//
+// A pair's subcontacts share the common plane and both blocks' motions; the
+// portable code (joint_law.cpp) works those out once per pair, as it always
+// has, into a PairFrame, and this kernel runs the pair's subcontacts in
+// lanes of four (a face on a face makes four: one load per component).
+//
+// The same bits as the portable path. Each lane performs exactly the
+// portable path's IEEE operations in the same order — multiplications and
+// additions rounded one at a time (no fused multiply-add: the project builds
+// with -ffp-contract=off), the same association as Eigen's on SSE2 (a dot
+// product is (x·x' + y·y') + z·z'; a 3×3 matrix times a vector is
+// ((a + b) + c) in rows 0 and 1, a + (b + c) in row 2), divisions and
+// square roots correctly rounded in both — and each branch of the law is a
+// lane mask choosing between values both computed the portable way. So a
+// run gives the same bits whichever path the machine takes, on one thread
+// or two (tests/contact/joint_law_lanes_test.cpp compares them on every
+// branch of the law, tests/verification/determinism_test.cpp on a run).
+//
+// The kernel's file is compiled with -mavx2 and includes no Eigen or other
+// inline library code, so no function instantiated there with AVX2
+// instructions can be picked by the linker for the rest of the program.
+// Whether the CPU has AVX2 is asked once, at run time
+// (joint_law_lanes_available); without it, or on another architecture, the
+// portable loop runs.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace polydem::lanes {
+
+// What a pair's subcontacts share, in the world frame; matrices column-major
+// (Eigen's storage, m(i, j) = m[i + 3j]).
+struct PairFrame {
+  double n[3];       // the common plane's unit normal, from the reference block
+  double plane;      // n·x_ref
+  double xc[3];      // the incident block's centre
+  double Rc[9];      // the incident block's rotation
+  double dv[3];      // v_inc − v_ref
+  double wc[3];      // the incident block's angular velocity
+  double wr[3];      // the reference block's
+  double xcr[3];     // x_inc − x_ref
+  double spin[9];    // the joint's rotation over the last step (joint_law.hpp)
+};
+
+struct LawConstants {
+  double kn, ks, tan_phi, cohesion, tensile_strength, beta, dt;
+};
+
+// The subcontact arrays the law reads and writes (Subcontacts' storage).
+struct SubcontactArrays {
+  const double *ipx, *ipy, *ipz;  // inc_point_local
+  const double* offset;           // ref_offset_local
+  const double* area;
+  std::uint8_t* bonded;
+  double *sfx, *sfy, *sfz;  // shear_force
+  double *dfx, *dfy, *dfz;  // damping_force
+  double* slip_energy;
+  double* damping_energy;
+  double* overlap;
+  double* normal_force;
+  double* point;  // Vec3 array: x y z per subcontact
+  double* force;  // Vec3 array
+};
+
+// True when this build has the AVX2 path and the CPU runs it.
+bool available();
+
+// The law for subcontacts s0 .. s0 + count − 1 of one pair. Only call when
+// available().
+void pair_law(const PairFrame& f, const LawConstants& law, const SubcontactArrays& a, std::size_t s0,
+              std::size_t count);
+
+}  // namespace polydem::lanes
