@@ -153,16 +153,16 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
       if (!(law.cohesion > 0 || law.tensile_strength > 0)) contacts.sub.bonded[s] = 0;
     }
   }
-  carry_history(b, old, contacts, laws.laws[0].ks, margin_, im.carry);
+  carry_history(b, old, contacts, laws.laws[0].ks, margin_, im.carry, threads);
   if (!laws.single())  // the shear energy not carried over, at each joint's own ks
     contacts.dropped_shear_energy =
         old.dropped_shear_energy + (shear_strain_energy(laws, old.sub) - shear_strain_energy(laws, contacts.sub));
   // Re-sampling may lower a pair's normal strain at this pose but not raise
   // it (joint_law.hpp); what it changes is the re-sampling's, not motion's,
   // and goes to the ledger.
-  hold_normal_strain(laws, b.state, old, contacts);
-  contacts.resampled_normal_energy +=
-      normal_strain_energy_now(laws, b.state, old.sub) - normal_strain_energy_now(laws, b.state, contacts.sub);
+  hold_normal_strain(laws, b.state, old, contacts, threads);
+  contacts.resampled_normal_energy += normal_strain_energy_now(laws, b.state, old.sub, threads) -
+                                      normal_strain_energy_now(laws, b.state, contacts.sub, threads);
   contacts.detections = old.detections + 1;
   const Clock::time_point t4 = Clock::now();
 

@@ -16,9 +16,13 @@
 // detection (the broad phase grows every box by half the margin, the narrow
 // phase looks a margin out) is thus still at least half the margin apart at
 // the next one: contacts between fast blocks are found before they touch,
-// and existing subcontacts follow their blocks exactly in between. Steps 2 and 3 run in parallel, one slot per candidate;
-// everything is assembled in candidate order (sorted by block pair), so the
-// result does not depend on the number of threads.
+// and existing subcontacts follow their blocks exactly in between. Steps 2
+// and 3 run in parallel, one slot per candidate; step 4's history carry and
+// held normal strain run pair by pair in parallel (a pair writes only its
+// own subcontacts), and its energy sums take their terms in subcontact
+// order. Everything is assembled in candidate order (sorted by block pair),
+// so the result does not depend on the number of threads
+// (tests/integrators/parallel_detection_test.cpp).
 #pragma once
 
 #include "contact/joint_law.hpp"
@@ -49,6 +53,7 @@ class ContactDetector {
   // Threads for detect()'s parallel loops (0: OpenMP's default); the step
   // passes its governor's choice (integrators/thread_governor.hpp).
   void set_threads(int threads) { threads_ = threads; }
+  int threads() const { return threads_; }  // 0: not set (OpenMP's default)
   // True when some pair may have closed by more than half the margin since
   // detect(), counting the coming step of length dt at the current speeds.
   bool needs_detection(const Blocks& blocks, double dt = 0) const;

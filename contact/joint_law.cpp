@@ -328,8 +328,29 @@ double overlap_now(const BlockState& st, const Subcontacts& sub, std::size_t s) 
   return sub.ref_offset_local[s] + n.dot(st.position[r]) - n.dot(p);
 }
 
+// Σ ½·kn·A·u_n² over the subcontacts, in subcontact order. With
+// `threads` > 1 the overlaps are computed in parallel first (into the
+// calling thread's scratch), the sum still in order: the same bits.
 template <class LawOf>
-double normal_strain_energy_with(const LawOf& law_of, const BlockState& st, const Subcontacts& sub) {
+double normal_strain_energy_with(const LawOf& law_of, const BlockState& st, const Subcontacts& sub, int threads) {
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(sub.size());
+  if (threads > 1 && n >= 2048) {
+    // The calling thread's scratch, reused (no allocation once warmed up);
+    // named by reference, since inside the region thread_local would name
+    // each thread's own.
+    thread_local std::vector<double> scratch;
+    std::vector<double>& un = scratch;
+    un.resize(static_cast<std::size_t>(n));
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (std::ptrdiff_t s = 0; s < n; ++s)
+      un[static_cast<std::size_t>(s)] = overlap_now(st, sub, static_cast<std::size_t>(s));
+    double e = 0;
+    for (std::size_t s = 0; s < sub.size(); ++s) {
+      const JointLaw& law = law_of(s);
+      if (un[s] > 0 || sub.bonded[s]) e += 0.5 * law.kn * sub.area[s] * un[s] * un[s];
+    }
+    return e;
+  }
   double e = 0;
   for (std::size_t s = 0; s < sub.size(); ++s) {
     const JointLaw& law = law_of(s);
@@ -355,20 +376,26 @@ double joint_strain_energy_with(const LawOf& law_of, const Subcontacts& sub) {
 
 }  // namespace
 
-double normal_strain_energy_now(const JointLaw& law, const BlockState& st, const Subcontacts& sub) {
-  return normal_strain_energy_with([&law](std::size_t) -> const JointLaw& { return law; }, st, sub);
+double normal_strain_energy_now(const JointLaw& law, const BlockState& st, const Subcontacts& sub, int threads) {
+  return normal_strain_energy_with([&law](std::size_t) -> const JointLaw& { return law; }, st, sub, threads);
 }
 
-double normal_strain_energy_now(const JointLaws& laws, const BlockState& st, const Subcontacts& sub) {
-  if (laws.single()) return normal_strain_energy_now(laws.laws[0], st, sub);
+double normal_strain_energy_now(const JointLaws& laws, const BlockState& st, const Subcontacts& sub, int threads) {
+  if (laws.single()) return normal_strain_energy_now(laws.laws[0], st, sub, threads);
   return normal_strain_energy_with(
-      [&](std::size_t s) -> const JointLaw& { return laws.between(sub.ref_block[s], sub.inc_block[s]); }, st, sub);
+      [&](std::size_t s) -> const JointLaw& { return laws.between(sub.ref_block[s], sub.inc_block[s]); }, st, sub,
+      threads);
 }
 
-void hold_normal_strain(const JointLaws& laws, const BlockState& st, const ContactSet& old, ContactSet& contacts) {
+void hold_normal_strain(const JointLaws& laws, const BlockState& st, const ContactSet& old, ContactSet& contacts,
+                        int threads) {
   Subcontacts& sc = contacts.sub;
   const Subcontacts& os = old.sub;
-  for (const ContactPair& cp : contacts.pairs) {
+  // Pair by pair, in parallel: a pair writes only its own subcontacts.
+  const std::ptrdiff_t n_pairs = static_cast<std::ptrdiff_t>(contacts.pairs.size());
+#pragma omp parallel for schedule(dynamic, 32) if (threads > 1 && n_pairs >= 256) num_threads(threads)
+  for (std::ptrdiff_t q = 0; q < n_pairs; ++q) {
+    const ContactPair& cp = contacts.pairs[static_cast<std::size_t>(q)];
     if (cp.count == 0) continue;
     // A pair found for the first time after the first detection held nothing
     // before: found already overlapping (a corner that the clip kept outside

@@ -130,8 +130,10 @@ void settle_damping_work(const BlockState& state, Subcontacts& sub, double dt);
 // Normal strain energy Σ ½·kn·A·u_n² of the subcontacts closed or bonded,
 // with u_n evaluated at the blocks' current pose (their body-fixed plane and
 // point), J. Detection compares it before and after it re-samples the joints.
-double normal_strain_energy_now(const JointLaw& law, const BlockState& state, const Subcontacts& sub);
-double normal_strain_energy_now(const JointLaws& laws, const BlockState& state, const Subcontacts& sub);
+double normal_strain_energy_now(const JointLaw& law, const BlockState& state, const Subcontacts& sub,
+                                int threads = 1);
+double normal_strain_energy_now(const JointLaws& laws, const BlockState& state, const Subcontacts& sub,
+                                int threads = 1);
 
 // Re-sampling must not make normal strain. A detection re-clips every joint
 // at the pose it finds: the points and tributary areas of a pair's new
@@ -157,7 +159,8 @@ double normal_strain_energy_now(const JointLaws& laws, const BlockState& state, 
 // reference face until it was in: 1.1 and 2.5 kJ in the 1.0 g run), it
 // starts at zero force. Only the first detection's pairs (t = 0, the
 // structure as built) start from the geometry.
-void hold_normal_strain(const JointLaws& laws, const BlockState& state, const ContactSet& old, ContactSet& contacts);
+void hold_normal_strain(const JointLaws& laws, const BlockState& state, const ContactSet& old, ContactSet& contacts,
+                        int threads = 1);
 
 // Elastic strain energy stored in the joints, J.
 double joint_strain_energy(const JointLaw& law, const Subcontacts& sub);

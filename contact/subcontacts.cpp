@@ -311,13 +311,15 @@ bool interpolate_stress(const PreviousPatch& pp, const CarryScratch& sc, const V
 }  // namespace
 
 void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& contacts, double ks, double margin,
-                   CarryScratch& scratch) {
+                   CarryScratch& scratch, int threads) {
   Subcontacts& sc = contacts.sub;
   const Subcontacts& os = old.sub;
   const BlockState& st = blocks.state;
   const std::size_t n_old = os.size(), n_new = sc.size();
   scratch.old_point.resize(n_old);
   scratch.old_stress.resize(n_old);
+  const bool parallel = threads > 1 && contacts.pairs.size() >= 256;
+#pragma omp parallel for schedule(static) if (parallel) num_threads(threads)
   for (std::size_t o = 0; o < n_old; ++o) {
     const int c = os.inc_block[o];
     scratch.old_point[o] = st.position[c] + st.rotation[c] * os.inc_point_local[o];
@@ -326,7 +328,13 @@ void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& cont
   scratch.source.assign(n_new, -1);
   scratch.dissipation_taken.assign(n_old, 0);
 
-  for (const ContactPair& cp : contacts.pairs) {
+  // Pair by pair, in parallel: a pair writes only its own subcontacts and
+  // reads only its previous pair's (the one pair (a, b) before), whose
+  // dissipation flags no other pair touches.
+  const std::ptrdiff_t n_pairs = static_cast<std::ptrdiff_t>(contacts.pairs.size());
+#pragma omp parallel for schedule(dynamic, 32) if (parallel) num_threads(threads)
+  for (std::ptrdiff_t q = 0; q < n_pairs; ++q) {
+    const ContactPair& cp = contacts.pairs[static_cast<std::size_t>(q)];
     const ContactPair* op = find_pair(old, cp.a, cp.b);
     if (!op || op->count == 0 || cp.count == 0) continue;
     PreviousPatch pp;

@@ -173,8 +173,9 @@ struct CarryScratch {
 // patch that shrank, a coarser sampling, pairs that are gone) is added to
 // `dropped_shear_energy`; the totals are taken over from `previous`. So the
 // ledger's balance is unchanged by a detection.
+// `threads` > 1: the pairs in parallel (the same bits).
 void carry_history(const Blocks& blocks, const ContactSet& previous, ContactSet& current, double shear_stiffness,
-                   double margin, CarryScratch& scratch);
+                   double margin, CarryScratch& scratch, int threads = 1);
 
 // Elastic shear energy Σ |F_s|²/(2·ks·A) of the subcontacts, J.
 double shear_strain_energy(const Subcontacts& sub, double shear_stiffness);

@@ -101,15 +101,16 @@ namespace {
 template <class StiffnessOf>
 CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const StiffnessOf& stiffness_of,
                            const JointSpec& joint, double safety_factor, std::vector<double>* per_block = nullptr,
-                           double below = 0) {
+                           double below = 0, int threads = 1) {
   CriticalStep out;
   if (per_block) per_block->assign(static_cast<std::size_t>(b.count), 0.0);
   const auto& sub = contacts.sub;
-  for (int i : b.free_blocks) {
-    Mat6 K = Mat6::Zero();
+  // Block i's 6×6 stiffness on its joints, in its body frame (the inertia
+  // is diagonal there); false if it has no joint.
+  auto stiffness = [&](int i, Mat6& K) {
+    K = Mat6::Zero();
     const int first = contacts.gather_offset[i], last = contacts.gather_offset[i + 1];
-    if (first == last) continue;
-    // Body frame: the inertia is diagonal there.
+    if (first == last) return false;
     const Mat3& R = b.state.rotation[i];
     for (int k = first; k < last; ++k) {
       const int s = contacts.gather_sub[k];
@@ -119,8 +120,43 @@ CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const St
       const Mat3 D = sub.area[s] * (kn * n * n.transpose() + ks * (Mat3::Identity() - n * n.transpose()));
       add_point(K, D, r, 1.0);
     }
-    if (below > 0 && !per_block && chosen_for(std::sqrt(2.0 * omega_squared_bound(b, i, K)), joint, safety_factor) >= below)
-      continue;
+    return true;
+  };
+  auto skipped = [&](int i, const Mat6& K) {
+    return below > 0 && !per_block &&
+           chosen_for(std::sqrt(2.0 * omega_squared_bound(b, i, K)), joint, safety_factor) >= below;
+  };
+  const std::ptrdiff_t n_free = static_cast<std::ptrdiff_t>(b.free_blocks.size());
+  if (threads > 1 && !per_block && n_free >= 64) {
+    // The blocks in parallel, each frequency into its slot (−1: no joint
+    // or skipped); then the highest in block order, as below: the same bits.
+    // The calling thread's scratch, reused (no allocation once warmed up);
+    // named by reference, since inside the region thread_local would name
+    // each thread's own.
+    thread_local std::vector<double> scratch;
+    std::vector<double>& w = scratch;
+    w.resize(static_cast<std::size_t>(n_free));
+#pragma omp parallel for schedule(dynamic, 8) num_threads(threads)
+    for (std::ptrdiff_t j = 0; j < n_free; ++j) {
+      const int i = b.free_blocks[static_cast<std::size_t>(j)];
+      Mat6 K;
+      w[static_cast<std::size_t>(j)] =
+          stiffness(i, K) && !skipped(i, K) ? std::sqrt(2.0 * block_omega_squared(b, i, K)) : -1.0;
+    }
+    for (std::ptrdiff_t j = 0; j < n_free; ++j) {
+      const double wj = w[static_cast<std::size_t>(j)];
+      if (wj < 0) continue;
+      if (wj > out.omega_max) {
+        out.omega_max = wj;
+        out.governing_block = b.free_blocks[static_cast<std::size_t>(j)];
+      }
+    }
+    finish(out, joint, safety_factor);
+    return out;
+  }
+  for (int i : b.free_blocks) {
+    Mat6 K;
+    if (!stiffness(i, K) || skipped(i, K)) continue;
     keep_highest(out, b, i, K);
     if (per_block) (*per_block)[i] = std::sqrt(block_omega_squared(b, i, K));
   }
@@ -131,14 +167,15 @@ CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const St
 }  // namespace
 
 CriticalStep critical_time_step_from_contacts(const Blocks& b, const ContactSet& contacts, const JointSpec& joint,
-                                              double safety_factor, double below) {
+                                              double safety_factor, double below, int threads) {
   const std::pair<double, double> k{joint.normal_stiffness, joint.shear_stiffness};
-  return from_contacts(b, contacts, [&k](int) { return k; }, joint, safety_factor, nullptr, below);
+  return from_contacts(b, contacts, [&k](int) { return k; }, joint, safety_factor, nullptr, below, threads);
 }
 
 CriticalStep critical_time_step_from_contacts(const Blocks& b, const ContactSet& contacts, const JointLaws& laws,
-                                              const JointSpec& stiffest, double safety_factor, double below) {
-  if (laws.single()) return critical_time_step_from_contacts(b, contacts, stiffest, safety_factor, below);
+                                              const JointSpec& stiffest, double safety_factor, double below,
+                                              int threads) {
+  if (laws.single()) return critical_time_step_from_contacts(b, contacts, stiffest, safety_factor, below, threads);
   const auto& sub = contacts.sub;
   return from_contacts(
       b, contacts,
@@ -146,7 +183,7 @@ CriticalStep critical_time_step_from_contacts(const Blocks& b, const ContactSet&
         const JointLaw& law = laws.between(sub.ref_block[s], sub.inc_block[s]);
         return std::pair<double, double>{law.kn, law.ks};
       },
-      stiffest, safety_factor, nullptr, below);
+      stiffest, safety_factor, nullptr, below, threads);
 }
 
 namespace {

@@ -52,15 +52,17 @@ std::vector<double> block_frequencies(const Blocks& blocks, const JointSpec& joi
 // run's): blocks whose frequency bound (Gershgorin) allows `below` skip the
 // eigenvalues. When the answer is yes (chosen < below) the result is the same
 // as without it; when no, chosen ≥ below (or 0) and the governing block may
-// not be the stiffest. 0: every block, the exact estimate.
+// not be the stiffest. 0: every block, the exact estimate. `threads` > 1:
+// the blocks in parallel, the same result bit for bit.
 CriticalStep critical_time_step_from_contacts(const Blocks& blocks, const ContactSet& contacts, const JointSpec& joint,
-                                              double safety_factor, double below = 0);
+                                              double safety_factor, double below = 0, int threads = 1);
 
 // The same with each joint's own law (kn, ks of its pair of groups) and the
 // damping β of `stiffest` (stiffest_joint: the largest β that can act). With
 // one law, exactly the call above with that law's spec.
 CriticalStep critical_time_step_from_contacts(const Blocks& blocks, const ContactSet& contacts, const JointLaws& laws,
-                                              const JointSpec& stiffest, double safety_factor, double below = 0);
+                                              const JointSpec& stiffest, double safety_factor, double below = 0,
+                                              int threads = 1);
 
 // Each free block's ω_b on the joints it has now (the subcontacts of the
 // last detection, each law's kn and ks; 0 for blocks without joints). A

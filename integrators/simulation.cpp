@@ -137,7 +137,8 @@ DetectionTimes Simulation::detect_contacts() {
       detector_.detect(blocks_, contacts_, bond_initial_ && contacts_.detections == 0, laws_);
   if (!adaptive_dt_) return times;
   const CriticalStep c =
-      critical_time_step_from_contacts(blocks_, contacts_, laws_, step_joint_, sim_.safety_factor, dt_);
+      critical_time_step_from_contacts(blocks_, contacts_, laws_, step_joint_, sim_.safety_factor, dt_,
+                                       detector_.threads());
   if (c.chosen > 0 && c.chosen < dt_) {
     dt_ = c.chosen;
     ++dt_reductions_;
