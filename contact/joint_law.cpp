@@ -4,9 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <numbers>
-#include <string_view>
 
 namespace polydem {
 
@@ -258,42 +256,31 @@ template <bool kLanes, class LawOf>
   }
 }
 
-// Which code path the pair loop takes: the AVX2 lanes where the CPU has
-// them, unless POLYDEM_JOINT_LAW=portable (to compare the two; the bits are
-// the same). Asked once.
-bool use_lanes() {
-  static const bool lanes_on = [] {
-    const char* e = std::getenv("POLYDEM_JOINT_LAW");
-    return lanes::available() && !(e && std::string_view(e) == "portable");
-  }();
-  return lanes_on;
-}
-
 template <class LawOf>
 void pair_forces_on_path(const LawOf& law_of, const BlockState& st, const std::vector<ContactPair>& pairs,
                          Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
-                         JointLawPath path) {
-  const bool lanes_path = path == JointLawPath::automatic ? use_lanes() : path == JointLawPath::lanes;
-  if (lanes_path)
+                         CodePath path) {
+#ifdef POLYDEM_LANES_AVX2
+  if (use_lanes(path)) {
     pair_forces<true>(law_of, st, pairs, sub, dt, pair_begin, pair_end);
-  else
-    pair_forces<false>(law_of, st, pairs, sub, dt, pair_begin, pair_end);
+    return;
+  }
+#endif
+  pair_forces<false>(law_of, st, pairs, sub, dt, pair_begin, pair_end);
 }
 
 }  // namespace
 
-bool joint_law_lanes_available() { return lanes::available(); }
-
 void compute_pair_forces(const JointLaw& law, const BlockState& st, const std::vector<ContactPair>& pairs,
                          Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
-                         JointLawPath path) {
+                         CodePath path) {
   pair_forces_on_path([&law](int, int) -> const JointLaw& { return law; }, st, pairs, sub, dt, pair_begin,
                       pair_end, path);
 }
 
 void compute_pair_forces(const JointLaws& laws, const BlockState& st, const std::vector<ContactPair>& pairs,
                          Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
-                         JointLawPath path) {
+                         CodePath path) {
   if (laws.single()) {
     compute_pair_forces(laws.laws[0], st, pairs, sub, dt, pair_begin, pair_end, path);
     return;

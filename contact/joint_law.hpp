@@ -43,6 +43,7 @@
 #pragma once
 
 #include "contact/subcontacts.hpp"
+#include "core/code_path.hpp"
 #include "core/blocks.hpp"
 #include "core/scene_spec.hpp"
 
@@ -99,27 +100,19 @@ JointSpec stiffest_joint(const JointLaws& laws);
 void compute_joint_forces(const JointLaw& law, const BlockState& state, Subcontacts& sub, double dt,
                           std::size_t begin, std::size_t end);
 
-// Which code path computes a pair's subcontacts. `automatic`: the AVX2
-// lanes (joint_law_lanes.hpp) where the CPU has AVX2, unless the environment
-// sets POLYDEM_JOINT_LAW=portable; `portable`: one subcontact at a time, the
-// loop every machine runs. Both give the same bits.
-enum class JointLawPath { automatic, portable, lanes };
-
-// True when this build has the AVX2 path and this CPU can run it.
-bool joint_law_lanes_available();
-
 // The same for the subcontacts of pairs [pair_begin, pair_end): the hot path.
 // The pair's common plane and the two blocks' motion are loaded once.
-// JointLawPath::lanes only where joint_law_lanes_available().
+// `path` (core/code_path.hpp): the AVX2 lanes (joint_law_lanes.hpp) or one
+// subcontact at a time; the same bits.
 void compute_pair_forces(const JointLaw& law, const BlockState& state, const std::vector<ContactPair>& pairs,
                          Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
-                         JointLawPath path = JointLawPath::automatic);
+                         CodePath path = CodePath::automatic);
 
 // The same with each pair's own law (JointLaws::between); with one law,
 // exactly the one-law loop.
 void compute_pair_forces(const JointLaws& laws, const BlockState& state, const std::vector<ContactPair>& pairs,
                          Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
-                         JointLawPath path = JointLawPath::automatic);
+                         CodePath path = CodePath::automatic);
 
 // Books the second half of the last step's dashpot work of every
 // subcontact with the relative velocity at its point now (the state's

@@ -20,9 +20,8 @@
 // The kernel's file is compiled with -mavx2 and includes no Eigen or other
 // inline library code, so no function instantiated there with AVX2
 // instructions can be picked by the linker for the rest of the program.
-// Whether the CPU has AVX2 is asked once, at run time
-// (joint_law_lanes_available); without it, or on another architecture, the
-// portable loop runs.
+// Whether the CPU has AVX2 is asked once, at run time (core/code_path.hpp);
+// without it, or on another architecture, the portable loop runs.
 #pragma once
 
 #include <cstddef>
@@ -64,11 +63,8 @@ struct SubcontactArrays {
   double* force;  // Vec3 array
 };
 
-// True when this build has the AVX2 path and the CPU runs it.
-bool available();
-
 // The law for subcontacts s0 .. s0 + count − 1 of one pair. Only call when
-// available().
+// lanes_available() (core/code_path.hpp).
 void pair_law(const PairFrame& f, const LawConstants& law, const SubcontactArrays& a, std::size_t s0,
               std::size_t count);
 

@@ -1,5 +1,7 @@
 #include "integrators/simulation.hpp"
 
+#include "integrators/block_update_lanes.hpp"
+
 #include "contact/gather.hpp"
 #include "core/loads.hpp"
 
@@ -205,7 +207,7 @@ void Simulation::compute_joint_forces_parallel() {
   const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
   const std::size_t chunk = (n + nt - 1) / nt;
   const std::size_t begin = std::min(n, t * chunk), end = std::min(n, begin + chunk);
-  compute_pair_forces(laws_, blocks_.state, contacts_.pairs, contacts_.sub, dt_, begin, end, joint_law_path_);
+  compute_pair_forces(laws_, blocks_.state, contacts_.pairs, contacts_.sub, dt_, begin, end, code_path_);
 }
 
 void Simulation::gather_block(int i) {
@@ -315,11 +317,72 @@ void Simulation::gather_and_advance(const StepLoads& loads) {
     }
     return;
   }
+#ifdef POLYDEM_LANES_AVX2
+  // The free blocks four at a time in AVX2 lanes (block_update_lanes.hpp,
+  // the same bits), each block once its own force is gathered; blocks with
+  // point loads, and every block while gravity rises (a load term more),
+  // the portable way.
+  if (!loads.rising && use_lanes(code_path_)) {
+    const block_lanes::BlockArrays arrays = block_lane_arrays();
+    block_lanes::StepConstants k;
+    for (int c = 0; c < 3; ++c) {
+      k.gravity[c] = loads.gravity[c];
+      k.ground_acceleration[c] = loads.a_ground[c];
+    }
+    k.dt = dt_;
+    k.dv_dt = 0.5 * (dt_prev_ + dt_);
+    const bool any_loaded = !loaded_.empty() && !static_stage_;
+    int four[4];
+    int waiting = 0;
+#pragma omp for schedule(static) nowait
+    for (int i = 0; i < n; ++i) {
+      gather_block(i);
+      if (motion[i] != BlockMotion::free) continue;
+      if (any_loaded && loaded_[i]) {
+        advance_block<false>(i, loads);
+        continue;
+      }
+      four[waiting++] = i;
+      if (waiting < 4) continue;
+      waiting = 0;
+      if (!block_lanes::advance_four(arrays, k, four))  // a turn beyond the series
+        for (int b : four) advance_block<false>(b, loads);
+    }
+    for (int w = 0; w < waiting; ++w) advance_block<false>(four[w], loads);
+    return;  // the region's end is the barrier
+  }
+#endif
 #pragma omp for schedule(static)
   for (int i = 0; i < n; ++i) {
     gather_block(i);
     if (motion[i] == BlockMotion::free) advance_block<false>(i, loads);
   }
+}
+
+block_lanes::BlockArrays Simulation::block_lane_arrays() {
+  static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(Quat) == 4 * sizeof(double) &&
+                    sizeof(Mat3) == 9 * sizeof(double),
+                "the block arrays are read as plain doubles");
+  auto& st = blocks_.state;
+  const auto& pr = blocks_.props;
+  block_lanes::BlockArrays a;
+  a.position = st.position.data()->data();
+  a.velocity = st.velocity.data()->data();
+  a.angular_momentum = st.angular_momentum.data()->data();
+  a.angular_velocity = st.angular_velocity.data()->data();
+  a.orientation = st.orientation.data()->coeffs().data();
+  a.rotation = st.rotation.data()->data();
+  a.contact_force = st.contact_force.data()->data();
+  a.contact_torque = st.contact_torque.data()->data();
+  a.mass = pr.mass.data();
+  a.inv_mass = pr.inv_mass.data();
+  a.inv_inertia = pr.inv_principal_inertia.data()->data();
+  a.velocity_mid = velocity_mid_.data()->data();
+  a.omega_mid = omega_mid_.data()->data();
+  a.position_prev = position_prev_.data()->data();
+  a.orientation_prev = orientation_prev_.data()->coeffs().data();
+  a.load_work = load_work_.data();
+  return a;
 }
 
 void Simulation::begin_static_stage(double local_damping) { begin_static_stage(local_damping, sim_.gravity); }

@@ -25,6 +25,7 @@
 #include "core/blocks.hpp"
 #include "core/ground_motion.hpp"
 #include "core/loads.hpp"
+#include "integrators/block_update_lanes.hpp"
 #include "integrators/critical_time_step.hpp"
 #include "integrators/thread_governor.hpp"
 
@@ -97,9 +98,10 @@ class Simulation {
   // tens of microseconds and the threads' barriers cost more than they save,
   // badly so on a loaded machine.
   void set_parallel_threshold(std::size_t subcontacts) { parallel_threshold_ = subcontacts; }
-  // The joint law's code path (JointLawPath, joint_law.hpp): automatic by
-  // default; tests run both and compare the bits.
-  void set_joint_law_path(JointLawPath path) { joint_law_path_ = path; }
+  // The code path of the joint law and of the blocks' update
+  // (core/code_path.hpp): automatic by default; tests run both and compare
+  // the bits.
+  void set_code_path(CodePath path) { code_path_ = path; }
   // The thread governor's probing schedule (tests probe every few steps).
   void set_thread_probing(long first_probe, long shortest_interval, long longest_interval, int probe_steps,
                           double probe_seconds) {
@@ -212,6 +214,7 @@ class Simulation {
   };
   StepLoads step_loads() const;
   void gather_and_advance(const StepLoads& loads);
+  block_lanes::BlockArrays block_lane_arrays();
   template <bool kLocalDamping>
   void advance_block(int i, const StepLoads& loads);
   void move_kinematic_blocks();
@@ -230,7 +233,7 @@ class Simulation {
   bool bond_initial_;
   bool adaptive_dt_;
   std::size_t parallel_threshold_ = 2048;
-  JointLawPath joint_law_path_ = JointLawPath::automatic;
+  CodePath code_path_ = CodePath::automatic;
   ThreadGovernor governor_;
   double dt_;
   double dt_prev_;  // the step before: leapfrog with a changing step

@@ -214,7 +214,7 @@ SceneRun::SceneRun(const SceneSpec& spec, const RunControl& control) : spec_(spe
   sim_ = build_simulation(spec_, setup, control_.ground_acceleration);
   Simulation& sim = *sim_;
   sim.set_parallel_threshold(control_.parallel_threshold);
-  sim.set_joint_law_path(control_.joint_law_path);
+  sim.set_code_path(control_.code_path);
   rep.blocks = sim.blocks().count;
   rep.free_blocks = static_cast<int>(sim.blocks().free_blocks.size());
   rep.margin = setup.margin;

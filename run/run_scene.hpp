@@ -110,7 +110,7 @@ struct RunReport {
 struct RunControl {
   int threads = 0;  // 0: OpenMP default
   std::size_t parallel_threshold = 2048;  // see Simulation::set_parallel_threshold
-  JointLawPath joint_law_path = JointLawPath::automatic;  // see Simulation::set_joint_law_path
+  CodePath code_path = CodePath::automatic;  // see Simulation::set_code_path
   // Called every `progress_every` steps (for progress output); may be empty.
   std::function<void(const Simulation&)> progress;
   long progress_every = 1000;

@@ -127,7 +127,7 @@ void count_branches(const Subcontacts& before, const Subcontacts& after, Branche
 }
 
 TEST(JointLawLanes, SameBitsAsThePortableLoopOnEveryBranch) {
-  if (!joint_law_lanes_available()) GTEST_SKIP() << "no AVX2 on this machine or build: only the portable path runs";
+  if (!lanes_available()) GTEST_SKIP() << "no AVX2 on this machine or build: only the portable path runs";
   std::mt19937_64 rng(12);
   // Laws: Table 1's dry joint, a bonded one with tension and cohesion, one
   // with no shear stiffness, one without damping.
@@ -144,8 +144,8 @@ TEST(JointLawLanes, SameBitsAsThePortableLoopOnEveryBranch) {
       const Subcontacts before = s.sub;
       Subcontacts lanes = s.sub, portable = s.sub;
       for (const double dt : {1e-5, 0.0}) {
-        compute_pair_forces(law, s.st, s.pairs, lanes, dt, 0, s.pairs.size(), JointLawPath::lanes);
-        compute_pair_forces(law, s.st, s.pairs, portable, dt, 0, s.pairs.size(), JointLawPath::portable);
+        compute_pair_forces(law, s.st, s.pairs, lanes, dt, 0, s.pairs.size(), CodePath::lanes);
+        compute_pair_forces(law, s.st, s.pairs, portable, dt, 0, s.pairs.size(), CodePath::portable);
         expect_same_bits(lanes, portable, trial);
       }
       count_branches(before, portable, seen);
@@ -164,17 +164,17 @@ TEST(JointLawLanes, SameBitsAsThePortableLoopOnEveryBranch) {
 // A pair's range split across two calls (two threads' halves) gives the
 // same bits as one call.
 TEST(JointLawLanes, PairRangesSplitAnywhereGiveTheSameBits) {
-  if (!joint_law_lanes_available()) GTEST_SKIP() << "no AVX2 on this machine or build";
+  if (!lanes_available()) GTEST_SKIP() << "no AVX2 on this machine or build";
   std::mt19937_64 rng(5);
   JointLaw law;
   law.kn = 1e10, law.ks = 4e9, law.tan_phi = 0.7, law.beta = 2e-5;
   Scene s = random_scene(rng, 30);
   Subcontacts whole = s.sub;
-  compute_pair_forces(law, s.st, s.pairs, whole, 1e-5, 0, s.pairs.size(), JointLawPath::lanes);
+  compute_pair_forces(law, s.st, s.pairs, whole, 1e-5, 0, s.pairs.size(), CodePath::lanes);
   for (std::size_t cut = 0; cut <= s.pairs.size(); cut += 7) {
     Subcontacts split = s.sub;
-    compute_pair_forces(law, s.st, s.pairs, split, 1e-5, cut, s.pairs.size(), JointLawPath::lanes);
-    compute_pair_forces(law, s.st, s.pairs, split, 1e-5, 0, cut, JointLawPath::lanes);
+    compute_pair_forces(law, s.st, s.pairs, split, 1e-5, cut, s.pairs.size(), CodePath::lanes);
+    compute_pair_forces(law, s.st, s.pairs, split, 1e-5, 0, cut, CodePath::lanes);
     expect_same_bits(whole, split, static_cast<int>(cut));
   }
 }
