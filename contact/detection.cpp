@@ -60,7 +60,7 @@ ContactDetector::~ContactDetector() = default;
 // R_i = |d_i − c| + turn_i + (the step about to be taken, |v|·dt + |ω|·r·dt).
 // The two largest R decide. Two serial passes over the blocks; bitwise the
 // same on any thread count (max and min only).
-bool ContactDetector::needs_detection(const Blocks& b, double dt) const {
+bool ContactDetector::needs_detection(const Blocks& b, double dt, bool bound_first) const {
   const auto& im = *impl_;
   const int n = b.count;
   const auto& motion = b.props.motion;
@@ -79,6 +79,8 @@ bool ContactDetector::needs_detection(const Blocks& b, double dt) const {
   }
   if (n == 0) return false;
   const Vec3 c = 0.5 * (lo + hi);
+  const double threshold = 0.5 * margin_;
+  if (bound_first && travels_clearly_below(b, c, any_fixed, dt, threshold)) return false;
   double r1 = any_fixed ? c.norm() : 0.0, r2 = 0;  // a fixed block's travel from c
   for (int i = 0; i < n; ++i) {
     if (motion[i] == BlockMotion::fixed) continue;
@@ -95,7 +97,44 @@ bool ContactDetector::needs_detection(const Blocks& b, double dt) const {
       r2 = r;
     }
   }
-  return r1 + r2 > 0.5 * margin_;
+  return r1 + r2 > threshold;
+}
+
+// Most steps no pair is near half the margin, and a bound settles it without
+// the travels' square roots and quaternion products. Each travel is bounded
+// by the same sum with 1-norms (|x| ≤ |x|₁) and the turn's |vec(q·q₀*)| =
+// sin(θ/2) by min(|q − q₀|₁, |q + q₀|₁) (for unit quaternions with
+// c = q·q₀: 1 − c² ≤ 2(1 ∓ c) = |q ∓ q₀|²). If the two largest bounds add up
+// to less than the threshold by a relative 1e-6 — far beyond the round-off of
+// either sum — the exact test (needs_detection) answers no as well, so the
+// answer, and every result, is the same; otherwise the exact test runs.
+bool ContactDetector::travels_clearly_below(const Blocks& b, const Vec3& c, bool any_fixed, double dt,
+                                            double threshold) const {
+  const auto& im = *impl_;
+  const auto& motion = b.props.motion;
+  auto l1 = [](const Vec3& v) { return std::abs(v.x()) + std::abs(v.y()) + std::abs(v.z()); };
+  double u1 = any_fixed ? l1(c) : 0.0, u2 = 0;
+  for (int i = 0; i < b.count; ++i) {
+    if (motion[i] == BlockMotion::fixed) continue;
+    const Quat& q = b.state.orientation[i];
+    const Quat& q0 = im.detected_orientation[i];
+    const double minus = std::abs(q.x() - q0.x()) + std::abs(q.y() - q0.y()) + std::abs(q.z() - q0.z()) +
+                         std::abs(q.w() - q0.w());
+    const double plus = std::abs(q.x() + q0.x()) + std::abs(q.y() + q0.y()) + std::abs(q.z() + q0.z()) +
+                        std::abs(q.w() + q0.w());
+    const double radius = b.props.radius[i];
+    const double u = l1(b.state.position[i] - im.detected_position[i] - c) +
+                     2.0 * std::min(minus, plus) * radius +
+                     dt * (l1(b.state.velocity[i]) + l1(b.state.angular_velocity[i]) * radius);
+    if (!(u <= std::numeric_limits<double>::max())) return false;  // NaN or infinite: the exact test decides
+    if (u > u1) {
+      u2 = u1;
+      u1 = u;
+    } else if (u > u2) {
+      u2 = u;
+    }
+  }
+  return u1 + u2 < threshold * (1.0 - 1e-6);
 }
 
 DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bool bond_new, const JointLaws& laws) {

@@ -56,7 +56,9 @@ class ContactDetector {
   int threads() const { return threads_; }  // 0: not set (OpenMP's default)
   // True when some pair may have closed by more than half the margin since
   // detect(), counting the coming step of length dt at the current speeds.
-  bool needs_detection(const Blocks& blocks, double dt = 0) const;
+  // `bound_first`: a cheap bound settles the clear cases (the same answer;
+  // false only for tests comparing the two).
+  bool needs_detection(const Blocks& blocks, double dt = 0, bool bound_first = true) const;
   // Rebuilds `contacts` for the current state, carrying history over by
   // position (carry_history). The joint law's stiffnesses price what the
   // re-sampling changes at the same pose: the shear it cannot carry
@@ -76,6 +78,9 @@ class ContactDetector {
   void load(ByteReader& r);
 
  private:
+  bool travels_clearly_below(const Blocks& blocks, const Vec3& drift, bool any_fixed, double dt,
+                             double threshold) const;
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
   double margin_;

@@ -1,3 +1,5 @@
+// Detection on the spire's 402 blocks.
+//
 // A detection on two threads gives the same bits as on one: the narrow phase
 // and patches (one slot per candidate), the history carried pair by pair,
 // the held normal strain pair by pair, the re-sampled strain energy (terms
@@ -12,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <string>
 
@@ -78,6 +81,55 @@ TEST(ParallelDetection, TwoThreadsGiveTheSameBitsOnTheSpire) {
     EXPECT_EQ(a.omega_max, b.omega_max) << f;
     EXPECT_EQ(a.governing_block, b.governing_block) << f;
   }
+}
+
+// The cheap bound in front of needs_detection's exact test (1-norms, no
+// square roots or quaternion products) never changes its answer: the spire's
+// blocks moved, turned and set moving by random amounts spanning the
+// threshold, with and without the bound.
+TEST(DetectionCheck, TheBoundNeverChangesTheAnswer) {
+  const SceneSpec spec = read_deck(std::string(POLYDEM_SOURCE_DIR) + "/examples/spire/earthquake.toml");
+  const Blocks start = build_blocks(spec.blocks);
+  const double margin = 0.005;
+  ContactDetector det(start, margin);
+  ContactSet contacts;
+  det.detect(start, contacts, false, JointLaws(make_joint_law(spec.joint)));
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int yes = 0, no = 0, tight_yes = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    Blocks b = start;
+    // Amplitudes from far below to beyond half the margin, on all blocks
+    // or on a few (the two largest travels decide).
+    const double scale = margin * std::pow(10.0, -3.0 + 3.5 * (trial % 40) / 40.0);
+    const bool few = trial % 3 == 0;
+    // Some trials move a few blocks along x only, without turn or speed:
+    // there the bound is the exact travel (a 1-norm along an axis is the
+    // length), so a bound that claimed more than it proves would show.
+    const bool tight = trial % 5 == 1;
+    for (int i : b.free_blocks) {
+      if ((few || tight) && i % 97 != 0) continue;
+      if (tight) {
+        b.state.position[i].x() += scale * u(rng);
+        continue;
+      }
+      b.state.position[i] += scale * Vec3(u(rng), u(rng), u(rng));
+      const Vec3 turn = (scale / b.props.radius[i]) * Vec3(u(rng), u(rng), u(rng));
+      b.state.orientation[i] =
+          (Quat(Eigen::AngleAxisd(turn.norm(), turn.normalized())) * b.state.orientation[i]).normalized();
+      if (trial % 2) b.state.orientation[i].coeffs() *= -1.0;  // the same turn, the other sign
+      b.state.velocity[i] = (scale / 1e-4) * Vec3(u(rng), u(rng), u(rng));
+      b.state.angular_velocity[i] = (scale / 1e-4 / b.props.radius[i]) * Vec3(u(rng), u(rng), u(rng));
+    }
+    const double dt = trial % 4 == 0 || tight ? 0.0 : 1e-5;
+    const bool exact = det.needs_detection(b, dt, false);
+    EXPECT_EQ(det.needs_detection(b, dt, true), exact) << trial;
+    (exact ? yes : no) += 1;
+    if (exact && tight) ++tight_yes;
+  }
+  EXPECT_GT(yes, 50);
+  EXPECT_GT(no, 50);
+  EXPECT_GT(tight_yes, 5);
 }
 
 }  // namespace
