@@ -22,7 +22,7 @@
 // own subcontacts), and its energy sums take their terms in subcontact
 // order. Everything is assembled in candidate order (sorted by block pair),
 // so the result does not depend on the number of threads
-// (tests/integrators/parallel_detection_test.cpp).
+// (tests/integrators/spire_detection_test.cpp).
 #pragma once
 
 #include "contact/joint_law.hpp"

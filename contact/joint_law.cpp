@@ -191,8 +191,10 @@ lanes::SubcontactArrays lane_arrays(Subcontacts& sub) {
   a.damping_energy = sub.damping_energy.data();
   a.overlap = sub.overlap.data();
   a.normal_force = sub.normal_force.data();
-  a.point = sub.point.data()->data();
-  a.force = sub.force.data()->data();
+  // Vec3 is three doubles: the arrays as doubles (no element is touched, so
+  // an empty array is fine).
+  a.point = reinterpret_cast<double*>(sub.point.data());
+  a.force = reinterpret_cast<double*>(sub.force.data());
   return a;
 }
 

@@ -64,7 +64,8 @@ struct SubcontactArrays {
 };
 
 // The law for subcontacts s0 .. s0 + count − 1 of one pair. Only call when
-// lanes_available() (core/code_path.hpp).
+// lanes_available() (core/code_path.hpp). Bonded flags are read as
+// nonzero and written as 0 or 1 (the only values the rest of the code writes).
 void pair_law(const PairFrame& f, const LawConstants& law, const SubcontactArrays& a, std::size_t s0,
               std::size_t count);
 

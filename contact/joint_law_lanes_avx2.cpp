@@ -1,44 +1,27 @@
 // The joint law in AVX2 lanes (see joint_law_lanes.hpp). This file is
 // compiled with -mavx2 on x86-64 only; it must include nothing that
 // instantiates inline code shared with other files (no Eigen, no std::
-// algorithms): only the intrinsics and functions local to this file.
+// algorithms): only core/avx2_lanes.hpp and functions local to this file.
 //
-// Each line below names the portable line of joint_law.cpp it mirrors; the
+// Each stage below names the portable code of joint_law.cpp it mirrors; the
 // order of every addition and multiplication is the portable one (see the
 // header for Eigen's association), so the bits are the same.
 #include "contact/joint_law_lanes.hpp"
 
-#include <immintrin.h>
+#include "core/avx2_lanes.hpp"
 
 #include <cstring>
 
 namespace polydem::lanes {
 namespace {
 
-using V = __m256d;
+using namespace avx2;
 
-inline V bc(double x) { return _mm256_set1_pd(x); }
-inline V add(V a, V b) { return _mm256_add_pd(a, b); }
-inline V sub(V a, V b) { return _mm256_sub_pd(a, b); }
-inline V mul(V a, V b) { return _mm256_mul_pd(a, b); }
-inline V div(V a, V b) { return _mm256_div_pd(a, b); }
-inline V neg(V a) { return _mm256_xor_pd(a, _mm256_set1_pd(-0.0)); }  // −a, exactly
-inline V le(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_LE_OQ); }   // false with a NaN, as <=
-inline V lt(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_LT_OQ); }
-inline V gt(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_GT_OQ); }
-inline V both(V a, V b) { return _mm256_and_pd(a, b); }
-inline V either(V a, V b) { return _mm256_or_pd(a, b); }
-inline V but_not(V a, V b) { return _mm256_andnot_pd(b, a); }  // a and not b
-inline V pick(V m, V a, V b) { return _mm256_blendv_pd(b, a, m); }  // m ? a : b
-inline V all_lanes(bool c) { return _mm256_castsi256_pd(_mm256_set1_epi64x(c ? -1 : 0)); }
 // std::max(a, 0.0) is (a < 0) ? 0 : a; MAXPD(0, a) is (0 > a) ? 0 : a: the
 // same for every a, −0 and NaN included. std::min(a, b) is (b < a) ? b : a,
 // which is MINPD(b, a).
 inline V max_zero(V a) { return _mm256_max_pd(_mm256_setzero_pd(), a); }
 inline V min_std(V a, V b) { return _mm256_min_pd(b, a); }
-
-// (a·b): Eigen's (x·x' + y·y') + z·z'.
-inline V dot(V ax, V ay, V az, V bx, V by, V bz) { return add(add(mul(ax, bx), mul(ay, by)), mul(az, bz)); }
 
 // m·(x, y, z), m column-major: rows 0 and 1 ((a + b) + c), row 2 a + (b + c).
 inline void mat_vec(const double* m, V x, V y, V z, V& ox, V& oy, V& oz) {
@@ -133,7 +116,7 @@ void pair_law(const PairFrame& f, const LawConstants& law, const SubcontactArray
     mat_vec(f.Rc, load(a.ipx + s, g), load(a.ipy + s, g), load(a.ipz + s, g), ax, ay, az);
     const V px = add(bc(f.xc[0]), ax), py = add(bc(f.xc[1]), ay), pz = add(bc(f.xc[2]), az);
     // un = ref_offset_local + plane − n·p.
-    const V un = sub(add(load(a.offset + s, g), bc(f.plane)), dot(nx, ny, nz, px, py, pz));
+    const V un = sub(add(load(a.offset + s, g), bc(f.plane)), dot3(nx, ny, nz, px, py, pz));
     // vrel = dv + ω_c × arm_c − ω_r × (arm_c + x_cr), left to right.
     const V qx = add(ax, bc(f.xcr[0])), qy = add(ay, bc(f.xcr[1])), qz = add(az, bc(f.xcr[2]));
     const V wcx = bc(f.wc[0]), wcy = bc(f.wc[1]), wcz = bc(f.wc[2]);
@@ -145,12 +128,12 @@ void pair_law(const PairFrame& f, const LawConstants& law, const SubcontactArray
     store(a.overlap + s, un, g);
 
     // subcontact_law.
-    const V vn = dot(vx, vy, vz, nx, ny, nz);
+    const V vn = dot3(vx, vy, vz, nx, ny, nz);
     const V vsx = sub(vx, mul(vn, nx)), vsy = sub(vy, mul(vn, ny)), vsz = sub(vz, mul(vn, nz));
     const V A = load(a.area + s, g);
     const V bonded = load_bonded(a.bonded + s, g);
     const V dfx = load(a.dfx + s, g), dfy = load(a.dfy + s, g), dfz = load(a.dfz + s, g);
-    const V pending = neg(dot(dfx, dfy, dfz, vx, vy, vz));
+    const V pending = neg(dot3(dfx, dfy, dfz, vx, vy, vz));
     const V fn_el = mul(mul(kn, A), un);
     const V un_closed_not = le(un, zero);  // un <= 0
     const V broken = both(bonded, lt(fn_el, mul(bc(-law.tensile_strength), A)));
@@ -171,23 +154,23 @@ void pair_law(const PairFrame& f, const LawConstants& law, const SubcontactArray
     const int open_lanes = _mm256_movemask_pd(open) & lane_bits;
     V slip_open = slip0;
     if (open_lanes)
-      slip_open = pick(energy_counts, add(slip0, div(mul(bc(0.5), dot(sfx, sfy, sfz, sfx, sfy, sfz)), ksA)), slip0);
+      slip_open = pick(energy_counts, add(slip0, div(mul(bc(0.5), dot3(sfx, sfy, sfz, sfx, sfy, sfz)), ksA)), slip0);
     const V damp_open = add(damp0, mul(half_dt, pending));
 
     // Shear: fs = Q·F_s, fs −= (fs·n)·n, fs −= ((ks·A)·dt)·vs.
     V fx, fy, fz;
     mat_vec(f.spin, sfx, sfy, sfz, fx, fy, fz);
-    const V fdn = dot(fx, fy, fz, nx, ny, nz);
+    const V fdn = dot3(fx, fy, fz, nx, ny, nz);
     fx = sub(fx, mul(fdn, nx));
     fy = sub(fy, mul(fdn, ny));
     fz = sub(fz, mul(fdn, nz));
-    const V fs_old2 = dot(fx, fy, fz, fx, fy, fz);
+    const V fs_old2 = dot3(fx, fy, fz, fx, fy, fz);
     const V kdt = mul(ksA, dt);
     fx = sub(fx, mul(kdt, vsx));
     fy = sub(fy, mul(kdt, vsy));
     fz = sub(fz, mul(kdt, vsz));
     const V cap = add(pick(still_bonded, mul(bc(law.cohesion), A), zero), mul(max_zero(fn_el), bc(law.tan_phi)));
-    const V f2 = dot(fx, fy, fz, fx, fy, fz);
+    const V f2 = dot3(fx, fy, fz, fx, fy, fz);
     const V slipping = gt(f2, mul(cap, cap));
     V slip_closed = slip0;
     if (_mm256_movemask_pd(slipping) & lane_bits) {
@@ -216,7 +199,7 @@ void pair_law(const PairFrame& f, const LawConstants& law, const SubcontactArray
     const V fdampx = add(mul(fn_damp, nx), fdsx);
     const V fdampy = add(mul(fn_damp, ny), fdsy);
     const V fdampz = add(mul(fn_damp, nz), fdsz);
-    const V damp_closed = add(damp0, mul(half_dt, sub(pending, dot(fdampx, fdampy, fdampz, vx, vy, vz))));
+    const V damp_closed = add(damp0, mul(half_dt, sub(pending, dot3(fdampx, fdampy, fdampz, vx, vy, vz))));
     const V forcex = add(add(mul(fn_total, nx), fx), fdsx);
     const V forcey = add(add(mul(fn_total, ny), fy), fdsy);
     const V forcez = add(add(mul(fn_total, nz), fz), fdsz);

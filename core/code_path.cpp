@@ -6,10 +6,14 @@
 namespace polydem {
 
 bool lanes_available() {
-#ifdef POLYDEM_LANES_AVX2
+#if defined(POLYDEM_LANES_AVX2) && !defined(__AVX__) && !defined(__FMA__)
   static const bool avx2 = __builtin_cpu_supports("avx2");
   return avx2;
 #else
+  // No lanes in this build, or a build whose own code is compiled for AVX or
+  // FMA (-march=native, say): there Eigen's packets and fused products
+  // change the portable code's association, which the lanes repeat for
+  // baseline x86-64, so the two would not give the same bits.
   return false;
 #endif
 }

@@ -14,11 +14,12 @@ namespace polydem {
 
 enum class CodePath { automatic, portable, lanes };
 
-// True when this build has the AVX2 lanes and this CPU can run them.
+// True when this build has the AVX2 lanes (x86-64, its own code compiled for
+// baseline x86-64) and this CPU can run them.
 bool lanes_available();
 
-// Whether `path` runs the lanes: automatic as above; `lanes` only where
-// lanes_available() (callers must not ask for them elsewhere).
+// Whether `path` runs the lanes: automatic as above; `lanes` where
+// lanes_available(), the portable loops elsewhere.
 bool use_lanes(CodePath path);
 
 }  // namespace polydem

@@ -1,24 +1,18 @@
 // The block update in AVX2 lanes (see block_update_lanes.hpp). Compiled with
 // -mavx2 on x86-64 only; it includes nothing that instantiates inline code
-// shared with other files (no Eigen, no std:: algorithms).
+// shared with other files (no Eigen, no std:: algorithms): only
+// core/avx2_lanes.hpp and functions local to this file.
 //
-// Each expression names the portable line of Simulation::advance_block it
+// Each stage names the portable code of Simulation::advance_block it
 // mirrors, with the portable association.
 #include "integrators/block_update_lanes.hpp"
 
-#include <immintrin.h>
+#include "core/avx2_lanes.hpp"
 
 namespace polydem::block_lanes {
 namespace {
 
-using V = __m256d;
-
-inline V bc(double x) { return _mm256_set1_pd(x); }
-inline V add(V a, V b) { return _mm256_add_pd(a, b); }
-inline V sub(V a, V b) { return _mm256_sub_pd(a, b); }
-inline V mul(V a, V b) { return _mm256_mul_pd(a, b); }
-inline V div(V a, V b) { return _mm256_div_pd(a, b); }
-inline V neg(V a) { return _mm256_xor_pd(a, _mm256_set1_pd(-0.0)); }
+using namespace avx2;
 
 // Component c of four blocks' records of `width` doubles.
 inline V gather(const double* p, int width, int c, const int idx[4]) {
@@ -119,7 +113,7 @@ inline Mat rotation_matrix(const Quat& q) {
   return r;
 }
 
-inline V dot(const Vec& a, const Vec& b) { return add(add(mul(a.x, b.x), mul(a.y, b.y)), mul(a.z, b.z)); }
+inline V dot(const Vec& a, const Vec& b) { return dot3(a.x, a.y, a.z, b.x, b.y, b.z); }
 
 }  // namespace
 

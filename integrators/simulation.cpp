@@ -1,7 +1,5 @@
 #include "integrators/simulation.hpp"
 
-#include "integrators/block_update_lanes.hpp"
-
 #include "contact/gather.hpp"
 #include "core/loads.hpp"
 
@@ -363,24 +361,25 @@ block_lanes::BlockArrays Simulation::block_lane_arrays() {
   static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(Quat) == 4 * sizeof(double) &&
                     sizeof(Mat3) == 9 * sizeof(double),
                 "the block arrays are read as plain doubles");
+  // The records as doubles (no element is touched: an empty array is fine).
   auto& st = blocks_.state;
   const auto& pr = blocks_.props;
   block_lanes::BlockArrays a;
-  a.position = st.position.data()->data();
-  a.velocity = st.velocity.data()->data();
-  a.angular_momentum = st.angular_momentum.data()->data();
-  a.angular_velocity = st.angular_velocity.data()->data();
-  a.orientation = st.orientation.data()->coeffs().data();
-  a.rotation = st.rotation.data()->data();
-  a.contact_force = st.contact_force.data()->data();
-  a.contact_torque = st.contact_torque.data()->data();
+  a.position = reinterpret_cast<double*>(st.position.data());
+  a.velocity = reinterpret_cast<double*>(st.velocity.data());
+  a.angular_momentum = reinterpret_cast<double*>(st.angular_momentum.data());
+  a.angular_velocity = reinterpret_cast<double*>(st.angular_velocity.data());
+  a.orientation = reinterpret_cast<double*>(st.orientation.data());
+  a.rotation = reinterpret_cast<double*>(st.rotation.data());
+  a.contact_force = reinterpret_cast<double*>(st.contact_force.data());
+  a.contact_torque = reinterpret_cast<double*>(st.contact_torque.data());
   a.mass = pr.mass.data();
   a.inv_mass = pr.inv_mass.data();
-  a.inv_inertia = pr.inv_principal_inertia.data()->data();
-  a.velocity_mid = velocity_mid_.data()->data();
-  a.omega_mid = omega_mid_.data()->data();
-  a.position_prev = position_prev_.data()->data();
-  a.orientation_prev = orientation_prev_.data()->coeffs().data();
+  a.inv_inertia = reinterpret_cast<const double*>(pr.inv_principal_inertia.data());
+  a.velocity_mid = reinterpret_cast<double*>(velocity_mid_.data());
+  a.omega_mid = reinterpret_cast<double*>(omega_mid_.data());
+  a.position_prev = reinterpret_cast<double*>(position_prev_.data());
+  a.orientation_prev = reinterpret_cast<double*>(orientation_prev_.data());
   a.load_work = load_work_.data();
   return a;
 }

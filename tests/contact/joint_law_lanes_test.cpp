@@ -1,10 +1,11 @@
 // The joint law's two code paths, the AVX2 lanes and the portable loop
 // (joint_law_lanes.hpp), give the same bits: every array the law writes is
 // compared bit for bit, on random pairs that reach every branch of the law
-// (open, closed, bonded in tension, the bond broken in tension and by slip,
-// slipping, sticking, zero area, no shear stiffness, no damping), with pairs
-// of 1 to 9 subcontacts (full and partial groups of four lanes). A whole
-// run on either path: tests/verification/determinism_test.cpp.
+// (open, closed, bonded in tension, the bond lost — in tension, on opening
+// or by slip — slipping, sticking, zero area, no shear stiffness, no
+// damping), with pairs of 1 to 9 subcontacts (full and partial groups of
+// four lanes). Whole runs on either path:
+// tests/verification/determinism_test.cpp.
 #include "contact/joint_law.hpp"
 
 #include <gtest/gtest.h>
