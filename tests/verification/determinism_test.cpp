@@ -8,6 +8,7 @@
 
 #include <cstring>
 #include <sstream>
+#include <string>
 
 namespace polydem {
 namespace {
@@ -35,6 +36,19 @@ bool same_bits(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0;
 }
 
+// The runs' final state and ledger, bit for bit; their steps and detections.
+void expect_same_bits(const RunReport& a, const RunReport& b, const std::string& what = "") {
+  EXPECT_EQ(a.steps, b.steps) << what;
+  EXPECT_EQ(a.detections, b.detections) << what;
+  EXPECT_TRUE(same_bits(a.final_position, b.final_position)) << what;
+  EXPECT_TRUE(same_bits(a.final_velocity, b.final_velocity)) << what;
+  EXPECT_EQ(std::memcmp(a.final_orientation.data(), b.final_orientation.data(),
+                        a.final_orientation.size() * sizeof(Quat)),
+            0)
+      << what;
+  EXPECT_EQ(std::memcmp(&a.energy, &b.energy, sizeof(EnergyLedger)), 0) << what;
+}
+
 TEST(Determinism, OneAndTwoThreadsGiveTheSameBits) {
   SceneSpec spec = parse_deck(big_wall_deck(), "big_wall.toml");
   spec.simulation.adaptive_threads = false;  // two threads all the way (the governor has its own test)
@@ -47,12 +61,7 @@ TEST(Determinism, OneAndTwoThreadsGiveTheSameBits) {
   two.parallel_threshold = 0;
   const RunReport a = run_scene(spec, one);
   const RunReport b = run_scene(spec, two);
-  EXPECT_TRUE(same_bits(a.final_position, b.final_position));
-  EXPECT_TRUE(same_bits(a.final_velocity, b.final_velocity));
-  EXPECT_EQ(std::memcmp(a.final_orientation.data(), b.final_orientation.data(),
-                        a.final_orientation.size() * sizeof(Quat)),
-            0);
-  EXPECT_EQ(std::memcmp(&a.energy, &b.energy, sizeof(EnergyLedger)), 0);
+  expect_same_bits(a, b);
   // And the motion is not trivial.
   double moved = 0;
   for (std::size_t i = 0; i < a.final_position.size(); ++i)
@@ -74,12 +83,7 @@ TEST(Determinism, TheJointLawsTwoCodePathsGiveTheSameBits) {
   portable.code_path = CodePath::portable;
   const RunReport a = run_scene(spec, lanes);
   const RunReport b = run_scene(spec, portable);
-  EXPECT_TRUE(same_bits(a.final_position, b.final_position));
-  EXPECT_TRUE(same_bits(a.final_velocity, b.final_velocity));
-  EXPECT_EQ(std::memcmp(a.final_orientation.data(), b.final_orientation.data(),
-                        a.final_orientation.size() * sizeof(Quat)),
-            0);
-  EXPECT_EQ(std::memcmp(&a.energy, &b.energy, sizeof(EnergyLedger)), 0);
+  expect_same_bits(a, b);
   EXPECT_GT(a.energy.slip, 0.0);  // joints slipped: the law's every branch had its say
 }
 
@@ -124,13 +128,7 @@ TEST(Determinism, TheBlockUpdatesTwoCodePathsGiveTheSameBits) {
     lanes.threads = portable.threads = threads;
     a = run_scene(spec, lanes);
     const RunReport b = run_scene(spec, portable);
-    EXPECT_TRUE(same_bits(a.final_position, b.final_position)) << threads;
-    EXPECT_TRUE(same_bits(a.final_velocity, b.final_velocity)) << threads;
-    EXPECT_EQ(std::memcmp(a.final_orientation.data(), b.final_orientation.data(),
-                          a.final_orientation.size() * sizeof(Quat)),
-              0)
-        << threads;
-    EXPECT_EQ(std::memcmp(&a.energy, &b.energy, sizeof(EnergyLedger)), 0) << threads;
+    expect_same_bits(a, b, std::to_string(threads) + " threads");
   }
   EXPECT_GT(a.energy.load_work, 0.0);  // the load and the ground did work
   // The stones moved, the thrown ones are still turning.
@@ -143,9 +141,7 @@ TEST(Determinism, TheBlockUpdatesTwoCodePathsGiveTheSameBits) {
   spire.simulation.adaptive_threads = false;
   const RunReport c = run_scene(spire, lanes);
   const RunReport e = run_scene(spire, portable);
-  EXPECT_TRUE(same_bits(c.final_position, e.final_position));
-  EXPECT_TRUE(same_bits(c.final_velocity, e.final_velocity));
-  EXPECT_EQ(std::memcmp(&c.energy, &e.energy, sizeof(EnergyLedger)), 0);
+  expect_same_bits(c, e, "the spire");
 }
 
 }  // namespace
