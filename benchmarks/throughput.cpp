@@ -22,6 +22,13 @@
 // load average before each configuration are printed with the table.
 //
 //   polydem_throughput [--csv PATH] [--repeat N] [--quick] [--no-csv] [--engine LABEL]
+//
+// --threshold-sweep instead measures where two threads start to pay: the
+// synthetic wall at 10 courses of 3 to 40 stones (about 350 to 4700
+// subcontacts), 0.05 s each (the steps' own time: not the scene's building), on one thread and on two threads always in
+// parallel (threshold 0, the thread governor off), median of --repeat runs
+// (default 5) alternating; the engine's threshold (RunControl::
+// parallel_threshold) should sit where the ratio crosses 1.
 #include "run/run_scene.hpp"
 #include "benchmarks/bench_util.hpp"
 #include "io/atomic_file.hpp"
@@ -97,7 +104,52 @@ bool same_bits(const RunReport& a, const RunReport& b) {
          eq(a.final_orientation, b.final_orientation);
 }
 
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+int threshold_sweep(int argc, char** argv) {
+  const int repeat = std::max(1, std::stoi(option(argc, argv, "--repeat", "5")));
+  Table table({"stones per course", "subcontacts/step", "1 thread (us/step)", "2 threads (us/step)",
+               "2 / 1 threads speed-up", "load at start"});
+  for (const int stones : {3, 4, 6, 8, 10, 12, 16, 20, 28, 40}) {
+    SceneSpec spec = parse_deck(synthetic_wall_deck(10, stones, 0.05), "synthetic_wall.toml");
+    solver_only(spec);
+    spec.simulation.adaptive_threads = false;
+    const std::string loadavg = this_machine().load_average;
+    std::vector<double> one, two;
+    double per_step = 0;
+    for (int r = 0; r < repeat; ++r) {
+      for (const int threads : {1, 2}) {
+        RunControl control;
+        control.threads = threads;
+        control.parallel_threshold = 0;
+        const RunReport rep = run_scene(spec, control);
+        // The steps' own time (their detection test and detections, law,
+        // gather and update, guard), not the scene's building.
+        const RunProfile& p = rep.profile;
+        const double stepping = p.detection + p.patch + p.joint_law + p.gather_update + p.guard;
+        (threads == 1 ? one : two).push_back(1e6 * stepping / static_cast<double>(p.steps));
+        per_step = static_cast<double>(rep.subcontact_updates) / static_cast<double>(rep.steps);
+      }
+    }
+    const double a = median(one), b = median(two);
+    std::cerr << "  " << stones << " stones per course: " << fmt(per_step, 4) << " subcontacts, " << fmt(a, 3)
+              << " / " << fmt(b, 3) << " us\n";
+    table.add_row({std::to_string(stones), fmt(per_step, 4), fmt(a, 3), fmt(b, 3), fmt_fixed(a / b, 2),
+                   loadavg.substr(0, loadavg.find(' '))});
+  }
+  std::cout << "Two threads always in parallel against one (median of " << repeat << " runs, alternating)\n"
+            << "machine: " << this_machine().cpu_model << ", polydem " << engine_version(argc, argv)
+            << "; engine threshold " << RunControl{}.parallel_threshold << " subcontacts\n\n"
+            << table.markdown();
+  return 0;
+}
+
 int run(int argc, char** argv) {
+  if (flag(argc, argv, "--threshold-sweep")) return threshold_sweep(argc, argv);
   const bool quick = flag(argc, argv, "--quick");
   const int repeat = std::max(1, std::stoi(option(argc, argv, "--repeat", quick ? "1" : "3")));
   const std::string csv_path =

@@ -94,9 +94,12 @@ class Simulation {
              BlockLoads loads = {});
 
   // Steps with fewer subcontacts (and fewer free blocks than a sixteenth of
-  // this) run on one thread: below a few thousand subcontacts a step takes
-  // tens of microseconds and the threads' barriers cost more than they save,
-  // badly so on a loaded machine.
+  // this) run on one thread: a step of a few microseconds gains little from
+  // a second thread, and a loaded machine makes every barrier expensive.
+  // Measured (polydem_throughput --threshold-sweep, docs/benchmarks.md): on a
+  // quiet machine two threads pay from a few hundred subcontacts (1.66× at
+  // 346, 1.84× at 1399) since session 9's lanes; above the threshold the
+  // thread governor drops to one thread when another process holds a core.
   void set_parallel_threshold(std::size_t subcontacts) { parallel_threshold_ = subcontacts; }
   // The code path of the joint law and of the blocks' update
   // (core/code_path.hpp): automatic by default; tests run both and compare
@@ -232,7 +235,7 @@ class Simulation {
   ContactSet contacts_;
   bool bond_initial_;
   bool adaptive_dt_;
-  std::size_t parallel_threshold_ = 2048;
+  std::size_t parallel_threshold_ = 512;
   CodePath code_path_ = CodePath::automatic;
   ThreadGovernor governor_;
   double dt_;
