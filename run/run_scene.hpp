@@ -109,7 +109,7 @@ struct RunReport {
 
 struct RunControl {
   int threads = 0;  // 0: OpenMP default
-  std::size_t parallel_threshold = 512;  // see Simulation::set_parallel_threshold
+  std::size_t parallel_threshold = 2048;  // see Simulation::set_parallel_threshold
   CodePath code_path = CodePath::automatic;  // see Simulation::set_code_path
   // Called every `progress_every` steps (for progress output); may be empty.
   std::function<void(const Simulation&)> progress;

@@ -28,7 +28,7 @@ def reader(every_seen):
     return look
 
 
-# The spire on 1 and 2 threads (its parallel path: more than 512
+# The spire on 1 and 2 threads (its parallel path: more than 2048
 # subcontacts); a 2-thread Python process once differed from the command
 # line, depending on its environment (docs/python.md, "Determinism").
 @pytest.mark.parametrize("name,path,end_time,threads", [
