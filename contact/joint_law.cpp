@@ -317,34 +317,24 @@ double overlap_now(const BlockState& st, const Subcontacts& sub, std::size_t s) 
   return sub.ref_offset_local[s] + n.dot(st.position[r]) - n.dot(p);
 }
 
-// Σ ½·kn·A·u_n² over the subcontacts, in subcontact order. With
-// `threads` > 1 the overlaps are computed in parallel first (into the
-// calling thread's scratch), the sum still in order: the same bits.
+// Σ ½·kn·A·u_n² over the subcontacts, in subcontact order. The overlaps
+// first (in parallel with `threads` > 1 on large sets), into the calling
+// thread's scratch (reused: no allocation once warmed up; named by
+// reference, since inside the region thread_local would name each thread's
+// own); then the sum in order: the same bits on any thread count.
 template <class LawOf>
 double normal_strain_energy_with(const LawOf& law_of, const BlockState& st, const Subcontacts& sub, int threads) {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(sub.size());
-  if (threads > 1 && n >= 2048) {
-    // The calling thread's scratch, reused (no allocation once warmed up);
-    // named by reference, since inside the region thread_local would name
-    // each thread's own.
-    thread_local std::vector<double> scratch;
-    std::vector<double>& un = scratch;
-    un.resize(static_cast<std::size_t>(n));
-#pragma omp parallel for schedule(static) num_threads(threads)
-    for (std::ptrdiff_t s = 0; s < n; ++s)
-      un[static_cast<std::size_t>(s)] = overlap_now(st, sub, static_cast<std::size_t>(s));
-    double e = 0;
-    for (std::size_t s = 0; s < sub.size(); ++s) {
-      const JointLaw& law = law_of(s);
-      if (un[s] > 0 || sub.bonded[s]) e += 0.5 * law.kn * sub.area[s] * un[s] * un[s];
-    }
-    return e;
-  }
+  thread_local std::vector<double> scratch;
+  std::vector<double>& un = scratch;
+  un.resize(static_cast<std::size_t>(n));
+#pragma omp parallel for schedule(static) if (threads > 1 && n >= 2048) num_threads(std::max(threads, 1))
+  for (std::ptrdiff_t s = 0; s < n; ++s)
+    un[static_cast<std::size_t>(s)] = overlap_now(st, sub, static_cast<std::size_t>(s));
   double e = 0;
   for (std::size_t s = 0; s < sub.size(); ++s) {
     const JointLaw& law = law_of(s);
-    const double un = overlap_now(st, sub, s);
-    if (un > 0 || sub.bonded[s]) e += 0.5 * law.kn * sub.area[s] * un * un;
+    if (un[s] > 0 || sub.bonded[s]) e += 0.5 * law.kn * sub.area[s] * un[s] * un[s];
   }
   return e;
 }

@@ -48,8 +48,8 @@ double block_omega_squared(const Blocks& b, int i, const Mat6& K) {
 
 // A joint between two free blocks can vibrate up to √2 faster than the
 // block on a fixed neighbour (see the header): ω = √(2 ω_b²).
-void keep_highest(CriticalStep& out, const Blocks& b, int i, const Mat6& K) {
-  const double w = std::sqrt(2.0 * block_omega_squared(b, i, K));
+void keep_highest(CriticalStep& out, int i, double omega_b_squared) {
+  const double w = std::sqrt(2.0 * omega_b_squared);
   if (w > out.omega_max) {
     out.omega_max = w;
     out.governing_block = i;
@@ -126,39 +126,27 @@ CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const St
     return below > 0 && !per_block &&
            chosen_for(std::sqrt(2.0 * omega_squared_bound(b, i, K)), joint, safety_factor) >= below;
   };
+  // Each block's ω_b² into its slot (−1: no joint, or skipped), the blocks
+  // in parallel with `threads` > 1; then the highest in block order: the
+  // same bits on any thread count. The calling thread's scratch, reused (no
+  // allocation once warmed up), named by reference: inside the region
+  // thread_local would name each thread's own.
   const std::ptrdiff_t n_free = static_cast<std::ptrdiff_t>(b.free_blocks.size());
-  if (threads > 1 && !per_block && n_free >= 64) {
-    // The blocks in parallel, each frequency into its slot (−1: no joint
-    // or skipped); then the highest in block order, as below: the same bits.
-    // The calling thread's scratch, reused (no allocation once warmed up);
-    // named by reference, since inside the region thread_local would name
-    // each thread's own.
-    thread_local std::vector<double> scratch;
-    std::vector<double>& w = scratch;
-    w.resize(static_cast<std::size_t>(n_free));
-#pragma omp parallel for schedule(dynamic, 8) num_threads(threads)
-    for (std::ptrdiff_t j = 0; j < n_free; ++j) {
-      const int i = b.free_blocks[static_cast<std::size_t>(j)];
-      Mat6 K;
-      w[static_cast<std::size_t>(j)] =
-          stiffness(i, K) && !skipped(i, K) ? std::sqrt(2.0 * block_omega_squared(b, i, K)) : -1.0;
-    }
-    for (std::ptrdiff_t j = 0; j < n_free; ++j) {
-      const double wj = w[static_cast<std::size_t>(j)];
-      if (wj < 0) continue;
-      if (wj > out.omega_max) {
-        out.omega_max = wj;
-        out.governing_block = b.free_blocks[static_cast<std::size_t>(j)];
-      }
-    }
-    finish(out, joint, safety_factor);
-    return out;
-  }
-  for (int i : b.free_blocks) {
+  thread_local std::vector<double> scratch;
+  std::vector<double>& omega2 = scratch;
+  omega2.resize(static_cast<std::size_t>(n_free));
+#pragma omp parallel for schedule(dynamic, 8) if (threads > 1 && n_free >= 64) num_threads(std::max(threads, 1))
+  for (std::ptrdiff_t j = 0; j < n_free; ++j) {
+    const int i = b.free_blocks[static_cast<std::size_t>(j)];
     Mat6 K;
-    if (!stiffness(i, K) || skipped(i, K)) continue;
-    keep_highest(out, b, i, K);
-    if (per_block) (*per_block)[i] = std::sqrt(block_omega_squared(b, i, K));
+    omega2[static_cast<std::size_t>(j)] = stiffness(i, K) && !skipped(i, K) ? block_omega_squared(b, i, K) : -1.0;
+  }
+  for (std::ptrdiff_t j = 0; j < n_free; ++j) {
+    const double w2 = omega2[static_cast<std::size_t>(j)];
+    if (w2 < 0) continue;
+    const int i = b.free_blocks[static_cast<std::size_t>(j)];
+    keep_highest(out, i, w2);
+    if (per_block) (*per_block)[i] = std::sqrt(w2);
   }
   finish(out, joint, safety_factor);
   return out;
@@ -226,7 +214,10 @@ Mat6 all_faces_stiffness(const Blocks& b, int i, double kn, double ks) {
 
 CriticalStep critical_time_step(const Blocks& b, const JointSpec& joint, double safety_factor) {
   CriticalStep out;
-  for (int i : b.free_blocks) keep_highest(out, b, i, all_faces_stiffness(b, i, joint.normal_stiffness, joint.shear_stiffness));
+  for (int i : b.free_blocks) {
+    const Mat6 K = all_faces_stiffness(b, i, joint.normal_stiffness, joint.shear_stiffness);
+    keep_highest(out, i, block_omega_squared(b, i, K));
+  }
   finish(out, joint, safety_factor);
   return out;
 }
