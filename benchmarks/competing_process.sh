@@ -7,7 +7,11 @@
 # or a user with a second job open would have), and prints the subcontact
 # updates per second (median of REPEAT runs) as a markdown table.
 #
-# Usage: benchmarks/competing_process.sh [BUILD_DIR] [END_TIME] [REPEAT]
+# Usage: benchmarks/competing_process.sh [BUILD_DIR] [END_TIME] [REPEAT] [DECK]
+# DECK defaults to the spire's earthquake deck; a small scene, e.g.
+# examples/verification/dry_stone_wall.toml (52 stones, steps of ~10 µs),
+# shows the short steps and the detections of a serial scene. The
+# competitor is always the spire on one thread.
 # Run it on an otherwise quiet machine (check `uptime`): the competitor is
 # the only other load it should see.
 set -euo pipefail
@@ -16,7 +20,8 @@ build=${1:-build}
 end_time=${2:-0.1}
 repeat=${3:-3}
 polydem="$build/polydem"
-deck=examples/spire/earthquake.toml
+deck=${4:-examples/spire/earthquake.toml}
+competitor_deck=examples/spire/earthquake.toml
 tmp=$(mktemp -d)
 stop_competitor() {
   kill "${competitor:-}" 2>/dev/null || true
@@ -34,7 +39,7 @@ rate() {  # threads adaptive -> subcontact updates per second of one run
 median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
 
 start_competitor() {
-  ( while true; do "$polydem" run "$deck" --quiet --threads 1 --set simulation.end_time=10 \
+  ( while true; do "$polydem" run "$competitor_deck" --quiet --threads 1 --set simulation.end_time=10 \
       --out "$tmp/competitor" > /dev/null 2>&1 || true; done ) &
   competitor=$!
   sleep 2

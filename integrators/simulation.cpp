@@ -86,6 +86,10 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec
   position_prev_ = blocks_.state.position;
   orientation_prev_ = blocks_.state.orientation;
   load_work_.assign(n, 0.0);
+  // The first detection on the governor's threads: one, when it governs
+  // (beside a competitor the first region on two threads waits ~15 ms for
+  // the second to be scheduled, longer than a small scene's whole setup).
+  detector_.set_threads(governor_.now);
   detect_contacts();
   dt_prev_ = dt_;
   start_half_step_back();
@@ -153,8 +157,10 @@ void Simulation::step() {
   // scenes stay serial, where a parallel region costs more than it saves.
   // The governor picks all threads or one (a competing process on a core
   // makes the threads wait at every barrier); results are the same bits.
+  // A small scene detects on one thread too: its detection gains little
+  // from a second, and threads woken for it would spin beside a competitor.
   const bool big = contacts_.sub.size() >= parallel_threshold_ || 16 * blocks_.free_blocks.size() >= parallel_threshold_;
-  const int threads = big ? threads_for_step(governor_, steps_) : governor_.now;
+  const int threads = big ? threads_for_step(governor_, steps_) : 1;
   detector_.set_threads(threads);
   double patch = 0;
   if (detector_.needs_detection(blocks_, dt_)) patch = detect_contacts().patch;
@@ -187,8 +193,15 @@ void Simulation::step() {
   // A sample only if the step could run in parallel after its detection too.
   if (big && (contacts_.sub.size() >= parallel_threshold_ || 16 * blocks_.free_blocks.size() >= parallel_threshold_)) {
     record_step(governor_, seconds(t1, t3), steps_);
+    // Dropped to one thread: release the idle threads now. They would spin
+    // for milliseconds waiting for the next region (libgomp's default wait
+    // policy), taking the core from the competitor that made the drop, and
+    // through it from this thread (measured ~4 ms per drop on the 52-stone
+    // wall). The next region on all threads starts them again.
+    if (threads > 1 && governor_.probing == 0 && governor_.now == 1) omp_pause_resource_all(omp_pause_soft);
     profile_.thread_probes = governor_.probes;
     profile_.thread_switches = governor_.switches;
+    profile_.thread_stall_drops = governor_.stall_drops;
     profile_.steps_on_one_thread = governor_.steps_on_one;
   }
   if (steps_ % 256 == 0) {

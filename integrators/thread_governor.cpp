@@ -7,7 +7,7 @@ namespace polydem {
 ThreadGovernor make_thread_governor(int most, bool enabled) {
   ThreadGovernor g;
   g.most = enabled && most > 1 ? most : 1;
-  g.now = most > 1 ? most : 1;
+  g.now = g.most > 1 ? 1 : std::max(most, 1);  // governed: one thread until a probe shows all are faster
   g.next_probe = g.first_probe;
   g.interval = g.shortest_interval;
   return g;
@@ -17,49 +17,115 @@ int faster_choice(int most, double many_mean, double one_mean, double margin) {
   return many_mean < margin * one_mean ? most : 1;
 }
 
-int threads_for_step(ThreadGovernor& g, long step) {
-  if (g.most <= 1) return g.now;
-  if (g.probing == 0 && step >= g.next_probe) {
-    g.probing = 1;
-    g.many_steps = g.one_steps = 0;
-    g.many_seconds = g.one_seconds = 0;
-  }
-  const int threads = g.probing == 1 ? g.most : (g.probing == 2 ? 1 : g.now);
-  if (threads == 1) ++g.steps_on_one;
-  return threads;
+bool window_stalled(long steps, double seconds, double fastest, double ratio) {
+  return seconds > ratio * static_cast<double>(steps) * fastest;
 }
 
 namespace {
 
-bool side_done(const ThreadGovernor& g, long steps, double seconds) {
-  return steps >= g.probe_steps_most || (steps >= g.probe_steps && seconds >= g.probe_seconds);
+void restart_watch(ThreadGovernor& g) {
+  g.window_steps = 0;
+  g.window_seconds = 0;
+  g.window_fastest = 0;
+  g.stalled_windows = 0;
+}
+
+// One step on all threads into the stall watch; true when the watch has
+// seen `stalled_windows_to_drop` stalled windows in a row.
+bool stalls(ThreadGovernor& g, double seconds) {
+  if (g.window_steps == 0 || seconds < g.window_fastest) g.window_fastest = seconds;
+  ++g.window_steps;
+  g.window_seconds += seconds;
+  if (g.window_seconds < g.watch_seconds || g.window_steps < g.watch_steps_least) return false;
+  const bool stalled = window_stalled(g.window_steps, g.window_seconds, g.window_fastest, g.stall_ratio);
+  const int in_a_row = stalled ? g.stalled_windows + 1 : 0;
+  restart_watch(g);
+  g.stalled_windows = in_a_row;
+  return in_a_row >= g.stalled_windows_to_drop;
+}
+
+void wait_short(ThreadGovernor& g, long step) {
+  g.interval = g.shortest_interval;
+  g.wait = g.shortest_wait;
+  g.next_probe = step + g.interval;
+  g.waited = 0;
+}
+
+void end_probe(ThreadGovernor& g, int choice, long step) {
+  ++g.probes;
+  if (choice != g.now) {
+    ++g.switches;
+    wait_short(g, step);
+  } else {
+    g.interval = std::min(2 * g.interval, g.longest_interval);
+    g.wait = std::min(std::max(2 * g.wait, g.shortest_wait), g.longest_wait);
+    g.next_probe = step + g.interval;
+    g.waited = 0;
+  }
+  g.now = choice;
+  g.probing = 0;
+  restart_watch(g);
 }
 
 }  // namespace
 
+int threads_for_step(ThreadGovernor& g, long step) {
+  if (g.most <= 1) return g.now;
+  if (g.probing == 0 && step >= g.next_probe && g.waited >= g.wait) {
+    g.probing = kProbingOne;
+    g.many_steps = g.one_steps = 0;
+    g.many_seconds = g.one_seconds = 0;
+  }
+  const int threads = g.probing == kProbingOne ? 1 : (g.probing == kProbingAll ? g.most : g.now);
+  if (threads == 1) ++g.steps_on_one;
+  return threads;
+}
+
 void record_step(ThreadGovernor& g, double seconds, long step) {
-  if (g.most <= 1 || g.probing == 0) return;
-  if (g.probing == 1) {
-    ++g.many_steps;
-    g.many_seconds += seconds;
-    if (side_done(g, g.many_steps, g.many_seconds)) g.probing = 2;
+  if (g.most <= 1) return;
+  const bool on_all = g.probing == kProbingAll || (g.probing == 0 && g.now == g.most);
+  if (on_all && stalls(g, seconds)) {
+    if (g.probing == kProbingAll) {  // the probe's all-threads side has lost
+      end_probe(g, 1, step);
+    } else {  // drop now; the next probe decides whether to come back
+      ++g.switches;
+      ++g.stall_drops;
+      g.now = 1;
+      wait_short(g, step);
+      restart_watch(g);
+    }
     return;
   }
-  ++g.one_steps;
-  g.one_seconds += seconds;
-  if (!side_done(g, g.one_steps, g.one_seconds)) return;
-  const int choice = faster_choice(g.most, g.many_seconds / static_cast<double>(g.many_steps),
-                                   g.one_seconds / static_cast<double>(g.one_steps), g.margin);
-  ++g.probes;
-  if (choice != g.now) {
-    ++g.switches;
-    g.interval = g.shortest_interval;
-  } else {
-    g.interval = std::min(2 * g.interval, g.longest_interval);
+  if (g.probing == 0) g.waited += seconds;
+  if (g.probing == kProbingOne) {
+    ++g.one_steps;
+    g.one_seconds += seconds;
+    if (g.one_steps >= g.probe_steps && g.one_seconds >= g.one_side_seconds) {
+      g.probing = kProbingAll;
+      g.warmed = 0;
+      g.warm_steps = 0;
+      restart_watch(g);
+    }
+    return;
   }
-  g.now = choice;
-  g.probing = 0;
-  g.next_probe = step + g.interval;
+  if (g.probing != kProbingAll) return;
+  if (g.warmed < g.warm_up_seconds || g.warm_steps == 0) {  // starting the threads: not samples
+    g.warmed += seconds;
+    ++g.warm_steps;
+    return;
+  }
+  ++g.many_steps;
+  g.many_seconds += seconds;
+  const double one_mean = g.one_seconds / static_cast<double>(g.one_steps);
+  // Lost early: clearly slower than one thread already.
+  if (g.many_seconds >= g.lost_after_seconds &&
+      g.many_seconds > g.lost_ratio * static_cast<double>(g.many_steps) * one_mean) {
+    end_probe(g, 1, step);
+    return;
+  }
+  const bool done =
+      g.many_steps >= g.probe_steps_most || (g.many_steps >= g.probe_steps && g.many_seconds >= g.probe_seconds);
+  if (done) end_probe(g, faster_choice(g.most, g.many_seconds / static_cast<double>(g.many_steps), one_mean, g.margin), step);
 }
 
 }  // namespace polydem

@@ -10,21 +10,48 @@
 // must never be slower than one.
 //
 // How: the step times itself (it does already, for the profile). Now and
-// then the governor probes: it times steps on all the threads, then on one,
-// and keeps the side with the shorter mean step (each timed without its
+// then the governor probes: it times steps on one thread, then on all, and
+// keeps the side with the shorter mean step (each timed without its
 // detection, which is longer for another reason; steps too small to run in
-// parallel are not samples). A side lasts at least `probe_steps` steps and
-// `probe_seconds` of wall time: a competitor takes the shared core in
-// scheduler slices of a few milliseconds, so the threads run many steps at
-// full speed and then stall for a whole slice. A median of a few steps
-// misses the stalls (measured: it kept two threads at half the speed of
-// one); the mean over many slices counts them, and all threads must beat
-// one by a margin (10 %) to be kept. The probes start after
-// `first_probe` steps; when a probe confirms the choice, the wait to the
-// next doubles (up to `longest_interval`), when it changes it the wait
-// starts short again, so a competitor that comes or goes is noticed within
-// seconds while a quiet run probes a few times per million steps; a probe of
-// the slow side costs about probe_seconds of it.
+// parallel are not samples). The all-threads side lasts at least
+// `probe_steps` steps and `probe_seconds` of wall time: a competitor takes
+// the shared core in scheduler slices of a few milliseconds, so the threads
+// run many steps at full speed and then stall for a whole slice. A median
+// of a few steps misses the stalls (measured: it kept two threads at half
+// the speed of one); the mean over many slices counts them, and all threads
+// must beat one by a margin (10 %) to be kept. One thread, which a
+// competitor on the other core cannot stall, is timed first and briefly
+// (`one_side_seconds`), so that the all-threads side can be called lost as
+// soon as its mean over its first `lost_after_seconds` is already twice
+// one thread's (`lost_ratio`): beside a competitor the steps on two threads
+// wait milliseconds for the second thread to be scheduled (measured: means
+// of 60-120 µs on the 52-stone wall, whose steps take 9 µs on one thread),
+// and a run must not pay a whole probe of them. The side's first step and
+// first `warm_up_seconds` are not samples: starting the threads took up to
+// 14 ms even on a quiet machine (this VM: a second step of 8 ms, or a
+// hundred steps at 3 times the speed to come, in 3 of 5 runs measured),
+// and the steps after run ~1.5 times slower than the rest while they warm
+// up, so the ratio is 2, not 1. The first probe
+// starts at once (`first_probe`); the wait to the next is counted both in
+// steps and in wall time (probes of steps of a few microseconds must not
+// come every tenth of a second: each costs ~15 ms beside a competitor).
+// When a probe confirms the choice, the wait doubles (up to
+// `longest_interval` steps and `longest_wait` seconds), when it changes it
+// the wait starts short again, so a competitor that comes or goes is
+// noticed within seconds while a quiet run probes a few times per million
+// steps.
+//
+// Between probes it watches the steps on all threads for stalls, since a
+// competitor may come between probes that are far apart. A stall is what
+// the competitor does to two threads once they run: most steps at full
+// speed, then a whole scheduler slice lost at a barrier. So the watch
+// compares, over windows of `watch_seconds`, the mean step with the
+// window's fastest: a mean above `stall_ratio` times the fastest in
+// `stalled_windows_to_drop` windows in a row drops to one thread at once
+// (a single hiccup of the machine does not; on a quiet machine the ratio
+// was measured at 1.01-1.25 on the spire), and the next probe, a short
+// interval later, decides whether to go back. The same watch also ends a
+// probe's all-threads side as lost.
 //
 // Results do not depend on it: every stage gives the same bits on any
 // number of threads (docs/architecture.md, determinism), so switching
@@ -34,32 +61,55 @@
 
 namespace polydem {
 
+inline constexpr int kProbingOne = 1;  // a probe timing one thread
+inline constexpr int kProbingAll = 2;  // ... then all of them
+
 struct ThreadGovernor {
   // Settings.
   int most = 1;                   // threads OpenMP was given; 1: the governor never acts
-  long first_probe = 512;         // steps before the first probe
+  long first_probe = 0;           // steps before the first probe
   long shortest_interval = 16384;  // steps between probes after a change
   long longest_interval = 262144;  // ... once the choice has held
+  double shortest_wait = 1.0;     // and at least this much stepping wall time (s) after a change
+  double longest_wait = 16.0;     // ... once the choice has held (short steps: a probe costs ~15 ms)
   int probe_steps = 32;           // at least this many timed steps per side of a probe
-  double probe_seconds = 0.1;     // ... and at least this much wall time (s)
+  double one_side_seconds = 0.02;  // ... and at least this much wall time (s) on one thread
+  double probe_seconds = 0.1;     // ... and on all threads, unless lost earlier:
+  double warm_up_seconds = 0.01;      // the all-threads side's first step and first this long are not samples
+  double lost_after_seconds = 0.005;  // all threads have lost when, after this long (s),
+  double lost_ratio = 2.0;            // ... their mean step is above this times one thread's
   double margin = 0.9;            // all threads are kept only when their mean step is below this times one's
   long probe_steps_most = 20000;  // a side ends after this many steps whatever its time
+  double watch_seconds = 0.01;    // the stall watch's window of wall time (a few scheduler slices)
+  long watch_steps_least = 16;    // ... of at least this many steps
+  double stall_ratio = 2.0;       // a window stalls when its mean step is above this times its fastest
+  int stalled_windows_to_drop = 2;  // stalled windows in a row that drop to one thread
 
   // State.
   int now = 1;          // threads the next step uses
   long next_probe = 0;  // step count at which the next probe starts
-  long interval = 0;    // current wait between probes
-  int probing = 0;      // 0: not; 1: timing `most` threads; 2: timing one
+  long interval = 0;    // current wait between probes, steps
+  double wait = 0;      // ... and stepping wall time (s); none before the first
+  double waited = 0;    // stepping wall time since the last probe (s)
+  int probing = 0;      // 0: not; kProbingOne, then kProbingAll
+  double warmed = 0;                         // the all-threads side's warm-up so far (s)
+  long warm_steps = 0;                       // ... and its steps
   long many_steps = 0, one_steps = 0;        // the probe's samples on each side
   double many_seconds = 0, one_seconds = 0;  // ... and their wall time, s
+  long window_steps = 0;         // the stall watch's current window: steps,
+  double window_seconds = 0;     // ... their wall time (s)
+  double window_fastest = 0;     // ... and the fastest of them (s)
+  int stalled_windows = 0;       // stalled windows in a row
 
   // What the run reports (summary.json profile.threads).
   long probes = 0;
   long switches = 0;
   long steps_on_one = 0;  // steps run on one thread while more were available
+  long stall_drops = 0;   // drops to one thread by the stall watch (among `switches`)
 };
 
-// A governor for `most` threads; starts on all of them.
+// A governor for `most` threads; when it governs (enabled, most > 1) the run
+// starts on one thread and its first probe, at once, decides.
 ThreadGovernor make_thread_governor(int most, bool enabled);
 
 // Threads for the step about to run (number `step`, counting from 0).
@@ -67,6 +117,10 @@ int threads_for_step(ThreadGovernor& g, long step);
 
 // After step number `step`: its wall time without the detection.
 void record_step(ThreadGovernor& g, double seconds, long step);
+
+// The stall watch's verdict on one window (exposed for tests): its mean step
+// is above `ratio` times its fastest.
+bool window_stalled(long steps, double seconds, double fastest, double ratio);
 
 // The choice between the two mean step times (exposed for tests): all
 // threads when their mean step is below `margin` times one thread's, one

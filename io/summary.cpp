@@ -96,6 +96,7 @@ Json profile_json(const RunProfile& p) {
   t.set("given", p.threads_given);
   t.set("probes", p.thread_probes);
   t.set("switches", p.thread_switches);
+  t.set("stall_drops", p.thread_stall_drops);
   t.set("steps_on_one", p.steps_on_one_thread);
   j.set("threads", std::move(t));
   return j;

@@ -347,6 +347,7 @@ const RunReport& SceneRun::finish() {
   rep.profile.threads_given = sp.threads_given;
   rep.profile.thread_probes = sp.thread_probes;
   rep.profile.thread_switches = sp.thread_switches;
+  rep.profile.thread_stall_drops = sp.thread_stall_drops;
   rep.profile.steps_on_one_thread = sp.steps_on_one_thread;
   rep.profile.total = seconds_since(loop_->wall_start);
   return rep;

@@ -58,7 +58,7 @@ struct RunProfile {
   long steps = 0;
   // The thread governor (integrators/thread_governor.hpp).
   int threads_given = 1;
-  long thread_probes = 0, thread_switches = 0, steps_on_one_thread = 0;
+  long thread_probes = 0, thread_switches = 0, steps_on_one_thread = 0, thread_stall_drops = 0;
 };
 
 struct RunReport {

@@ -34,29 +34,68 @@ int until_probed(ThreadGovernor& g, long& step, double many, double one) {
 
 TEST(ThreadGovernor, KeepsTheFasterAndNoticesWhenItChanges) {
   ThreadGovernor g = make_thread_governor(2, true);
-  EXPECT_EQ(g.now, 2);
+  EXPECT_EQ(g.now, 1) << "a governed run starts on one thread";
   long step = 0;
-  // A quiet machine: two threads 1.7 times faster. The first probe keeps
-  // them, after its first_probe steps, and lasts at least probe_seconds on
-  // each side; the wait to the next probe doubles when the choice holds.
+  // A quiet machine: two threads 1.7 times faster. The first probe, at
+  // once, times one thread for one_side_seconds, then two for
+  // probe_seconds, and takes them.
   EXPECT_EQ(until_probed(g, step, 60e-6, 100e-6), 2);
-  EXPECT_EQ(g.switches, 0);
-  EXPECT_GE(step, g.first_probe + long(g.probe_seconds / 60e-6) + long(g.probe_seconds / 100e-6));
+  EXPECT_EQ(g.switches, 1);
+  EXPECT_GE(step, long(g.one_side_seconds / 100e-6) + long(g.probe_seconds / 60e-6));
+  EXPECT_EQ(g.interval, g.shortest_interval);
+  EXPECT_EQ(g.wait, g.shortest_wait);
+  // The choice holds: the wait doubles, in steps and in seconds.
+  EXPECT_EQ(until_probed(g, step, 60e-6, 100e-6), 2);
+  EXPECT_EQ(g.switches, 1);
   EXPECT_EQ(g.interval, 2 * g.shortest_interval);
+  EXPECT_EQ(g.wait, 2 * g.shortest_wait);
   // A competing process: two threads 26 times slower on average. The next
   // probe drops to one thread, and probes come back at the short interval.
   EXPECT_EQ(until_probed(g, step, 2.6e-3, 100e-6), 1);
-  EXPECT_EQ(g.switches, 1);
+  EXPECT_EQ(g.switches, 2);
   EXPECT_EQ(g.interval, g.shortest_interval);
   EXPECT_GT(g.steps_on_one, 0);
   // Still loaded: the choice holds and the probes thin out to the longest wait.
   for (int k = 0; k < 8; ++k) EXPECT_EQ(until_probed(g, step, 2.6e-3, 100e-6), 1);
   EXPECT_EQ(g.interval, g.longest_interval);
+  EXPECT_EQ(g.wait, g.longest_wait);
   // Between probes it runs on one thread.
   EXPECT_EQ(drive(g, step, 10, 2.6e-3, 100e-6), 1);
   // The competitor ends: back to two threads at the next probe.
   EXPECT_EQ(until_probed(g, step, 60e-6, 100e-6), 2);
-  EXPECT_EQ(g.switches, 2);
+  EXPECT_EQ(g.switches, 3);
+}
+
+// Beside a competitor the first steps on two threads each wait
+// milliseconds for the second thread: the probe calls the all-threads side
+// lost after lost_after_seconds, not after probe_seconds of it.
+TEST(ThreadGovernor, AllThreadsLoseEarlyWhenAlreadySlowerThanOne) {
+  ThreadGovernor g = make_thread_governor(2, true);
+  long step = 0;
+  long on_all = 0;
+  const long probes = g.probes;
+  while (g.probes == probes) {
+    const int t = threads_for_step(g, step);
+    on_all += t > 1;
+    record_step(g, t > 1 ? 6e-3 : 9e-6, step);
+    ++step;
+  }
+  EXPECT_EQ(g.now, 1);
+  EXPECT_EQ(g.switches, 0);
+  EXPECT_EQ(on_all, 3) << "two 6 ms steps warm up (past warm_up_seconds); one more is past lost_after_seconds";
+  // A quiet machine where the steps on two threads are 1.2 times faster,
+  // the first of them 14 ms (starting the threads) and the next 200 warming
+  // up at 15 µs: not lost early, kept at the end.
+  ThreadGovernor q = make_thread_governor(2, true);
+  step = 0;
+  long first = -1;
+  while (q.probes == 0) {
+    const int t = threads_for_step(q, step);
+    if (t > 1 && first < 0) first = step;
+    record_step(q, t > 1 ? (step == first ? 14e-3 : (step < first + 200 ? 15e-6 : 7.5e-6)) : 9e-6, step);
+    ++step;
+  }
+  EXPECT_EQ(q.now, 2);
 }
 
 // Stalls: two threads run most steps fast but lose a 4 ms scheduler slice
@@ -64,6 +103,8 @@ TEST(ThreadGovernor, KeepsTheFasterAndNoticesWhenItChanges) {
 // fast one; their mean is what the run pays, and it loses to one thread.
 TEST(ThreadGovernor, CountsTheStallsNotTheMedianStep) {
   ThreadGovernor g = make_thread_governor(2, true);
+  g.lost_after_seconds = 1.0;  // the probe's mean decides, not the early loss
+  g.stall_ratio = 100.0;       // ... nor the watch
   long step = 0;
   const long probes = g.probes;
   while (g.probes == probes) {
@@ -73,6 +114,36 @@ TEST(ThreadGovernor, CountsTheStallsNotTheMedianStep) {
     ++step;
   }
   EXPECT_EQ(g.now, 1);
+}
+
+// Between probes the watch drops to one thread within a few windows when a
+// competitor arrives, long before the next probe; a single hiccup of the
+// machine does not drop it.
+TEST(ThreadGovernor, TheWatchDropsOnStallsInARowNotOnOneHiccup) {
+  ThreadGovernor g = make_thread_governor(2, true);
+  long step = 0;
+  EXPECT_EQ(until_probed(g, step, 6e-6, 10e-6), 2);
+  const long probes = g.probes;
+  // A hiccup: one 8 ms step among 6 µs ones (its window stalls), then quiet.
+  for (long k = 0; k < 20000; ++k, ++step) {
+    ASSERT_EQ(threads_for_step(g, step), 2);
+    record_step(g, k == 100 ? 8e-3 : 6e-6, step);
+  }
+  EXPECT_EQ(g.stall_drops, 0);
+  // A competitor: every 300th step loses a 3 ms slice (mean 16 µs).
+  long dropped_after = -1;
+  for (long k = 0; k < 20000 && dropped_after < 0; ++k, ++step) {
+    threads_for_step(g, step);
+    record_step(g, k % 300 == 0 ? 3e-3 : 6e-6, step);
+    if (g.now == 1) dropped_after = k;
+  }
+  EXPECT_EQ(g.stall_drops, 1);
+  EXPECT_GT(dropped_after, 0);
+  EXPECT_LT(dropped_after, 3000) << "within a few 10 ms windows";
+  EXPECT_EQ(g.probes, probes) << "no probe was due (the wait is a second of steps)";
+  EXPECT_EQ(g.interval, g.shortest_interval);
+  EXPECT_TRUE(window_stalled(100, 3e-3, 6e-6, 2.0));
+  EXPECT_FALSE(window_stalled(100, 1e-3, 6e-6, 2.0));
 }
 
 TEST(ThreadGovernor, OneThreadOrSwitchedOffNeverProbes) {
@@ -114,7 +185,16 @@ TEST(ThreadGovernor, SwitchingThreadsChangesNoBits) {
     RunSetup setup;
     auto sim = build_simulation(spec, setup);
     sim->set_parallel_threshold(0);
-    sim->set_thread_probing(3, 5, 9, 2, 0.0);
+    ThreadGovernor every_few_steps;
+    every_few_steps.first_probe = 3;
+    every_few_steps.shortest_interval = 5;
+    every_few_steps.longest_interval = 9;
+    every_few_steps.probe_steps = 2;
+    every_few_steps.one_side_seconds = every_few_steps.probe_seconds = 0;
+    every_few_steps.shortest_wait = every_few_steps.longest_wait = 0;
+    every_few_steps.warm_up_seconds = 0;
+    every_few_steps.lost_after_seconds = 1.0;
+    sim->set_thread_governor(every_few_steps);
     for (int n = 0; n < 400; ++n) sim->step();
     return sim;
   };
