@@ -161,6 +161,15 @@ void Simulation::step() {
   // from a second, and threads woken for it would spin beside a competitor.
   const bool big = contacts_.sub.size() >= parallel_threshold_ || 16 * blocks_.free_blocks.size() >= parallel_threshold_;
   const int threads = big ? threads_for_step(governor_, steps_) : 1;
+  // Down from all threads to one (a drop, a probe's one-thread side, a scene
+  // grown small): release the idle threads first. With libgomp's default
+  // wait policy they spin for milliseconds after a region, taking the core
+  // from a competitor and through it from this thread (measured ~4 ms per
+  // drop on the 52-stone wall), and they would slow a probe's one-thread
+  // side. The next region on all threads starts them again. Inside a
+  // caller's parallel region this does nothing.
+  if (threads == 1 && last_threads_ > 1) omp_pause_resource_all(omp_pause_soft);
+  last_threads_ = threads;
   detector_.set_threads(threads);
   double patch = 0;
   if (detector_.needs_detection(blocks_, dt_)) patch = detect_contacts().patch;
@@ -193,12 +202,6 @@ void Simulation::step() {
   // A sample only if the step could run in parallel after its detection too.
   if (big && (contacts_.sub.size() >= parallel_threshold_ || 16 * blocks_.free_blocks.size() >= parallel_threshold_)) {
     record_step(governor_, seconds(t1, t3), steps_);
-    // Dropped to one thread: release the idle threads now. They would spin
-    // for milliseconds waiting for the next region (libgomp's default wait
-    // policy), taking the core from the competitor that made the drop, and
-    // through it from this thread (measured ~4 ms per drop on the 52-stone
-    // wall). The next region on all threads starts them again.
-    if (threads > 1 && governor_.probing == 0 && governor_.now == 1) omp_pause_resource_all(omp_pause_soft);
     profile_.thread_probes = governor_.probes;
     profile_.thread_switches = governor_.switches;
     profile_.thread_stall_drops = governor_.stall_drops;

@@ -113,6 +113,7 @@ class Simulation {
   void set_thread_governor(ThreadGovernor settings) {
     settings.most = governor_.most;
     settings.now = governor_.now;
+    settings.probing = 0;
     settings.next_probe = settings.first_probe;
     settings.interval = settings.shortest_interval;
     governor_ = settings;
@@ -241,6 +242,7 @@ class Simulation {
   std::size_t parallel_threshold_ = 2048;
   CodePath code_path_ = CodePath::automatic;
   ThreadGovernor governor_;
+  int last_threads_ = 0;  // threads of the last step (0: none yet)
   double dt_;
   double dt_prev_;  // the step before: leapfrog with a changing step
   int dt_reductions_ = 0;

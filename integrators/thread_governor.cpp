@@ -18,7 +18,7 @@ int faster_choice(int most, double many_mean, double one_mean, double margin) {
 }
 
 bool window_stalled(long steps, double seconds, double fastest, double ratio) {
-  return seconds > ratio * static_cast<double>(steps) * fastest;
+  return fastest > 0 && seconds > ratio * static_cast<double>(steps) * fastest;
 }
 
 namespace {
@@ -58,7 +58,7 @@ void end_probe(ThreadGovernor& g, int choice, long step) {
     wait_short(g, step);
   } else {
     g.interval = std::min(2 * g.interval, g.longest_interval);
-    g.wait = std::min(std::max(2 * g.wait, g.shortest_wait), g.longest_wait);
+    g.wait = std::min(2 * std::max(g.wait, g.shortest_wait), g.longest_wait);
     g.next_probe = step + g.interval;
     g.waited = 0;
   }
@@ -71,7 +71,11 @@ void end_probe(ThreadGovernor& g, int choice, long step) {
 
 int threads_for_step(ThreadGovernor& g, long step) {
   if (g.most <= 1) return g.now;
-  if (g.probing == 0 && step >= g.next_probe && g.waited >= g.wait) {
+  // Due when both waits have passed, or twice the wall-time wait: long
+  // steps (a 10^5-block wall's ~25 ms) must not wait hours for 16,384 of
+  // them; short steps must not probe every tenth of a second.
+  const bool due = g.waited >= g.wait && (step >= g.next_probe || (g.wait > 0 && g.waited >= 2 * g.wait));
+  if (g.probing == 0 && due) {
     g.probing = kProbingOne;
     g.many_steps = g.one_steps = 0;
     g.many_seconds = g.one_seconds = 0;
@@ -83,13 +87,20 @@ int threads_for_step(ThreadGovernor& g, long step) {
 
 void record_step(ThreadGovernor& g, double seconds, long step) {
   if (g.most <= 1) return;
+  if (g.probing == kProbingAll && (g.warmed < g.warm_up_seconds || g.warm_steps == 0)) {
+    // Starting the threads: not samples, for the probe nor for the watch.
+    g.warmed += seconds;
+    ++g.warm_steps;
+    if (g.warmed >= g.warm_up_seconds) restart_watch(g);
+    return;
+  }
   const bool on_all = g.probing == kProbingAll || (g.probing == 0 && g.now == g.most);
   if (on_all && stalls(g, seconds)) {
+    ++g.stall_drops;
     if (g.probing == kProbingAll) {  // the probe's all-threads side has lost
       end_probe(g, 1, step);
     } else {  // drop now; the next probe decides whether to come back
       ++g.switches;
-      ++g.stall_drops;
       g.now = 1;
       wait_short(g, step);
       restart_watch(g);
@@ -109,15 +120,11 @@ void record_step(ThreadGovernor& g, double seconds, long step) {
     return;
   }
   if (g.probing != kProbingAll) return;
-  if (g.warmed < g.warm_up_seconds || g.warm_steps == 0) {  // starting the threads: not samples
-    g.warmed += seconds;
-    ++g.warm_steps;
-    return;
-  }
   ++g.many_steps;
   g.many_seconds += seconds;
   const double one_mean = g.one_seconds / static_cast<double>(g.one_steps);
-  // Lost early: clearly slower than one thread already.
+  // Lost early: clearly slower than one thread, at any point of the side
+  // once it has lost_after_seconds of samples.
   if (g.many_seconds >= g.lost_after_seconds &&
       g.many_seconds > g.lost_ratio * static_cast<double>(g.many_steps) * one_mean) {
     end_probe(g, 1, step);

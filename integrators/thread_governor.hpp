@@ -33,13 +33,14 @@
 // and the steps after run ~1.5 times slower than the rest while they warm
 // up, so the ratio is 2, not 1. The first probe
 // starts at once (`first_probe`); the wait to the next is counted both in
-// steps and in wall time (probes of steps of a few microseconds must not
-// come every tenth of a second: each costs ~15 ms beside a competitor).
-// When a probe confirms the choice, the wait doubles (up to
-// `longest_interval` steps and `longest_wait` seconds), when it changes it
-// the wait starts short again, so a competitor that comes or goes is
-// noticed within seconds while a quiet run probes a few times per million
-// steps.
+// steps and in wall time of stepping, and a probe is due when both have
+// passed (probes of steps of a few microseconds must not come every tenth
+// of a second: each costs ~30-60 ms beside a competitor) or when twice the
+// wall-time wait has (steps of 25 ms must not wait 16,384 of them). When a
+// probe confirms the choice, the wait doubles (up to `longest_interval`
+// steps and `longest_wait` seconds), when it changes it the wait starts
+// short again (1 s), so a competitor that comes or goes is noticed within
+// seconds to half a minute while a quiet run probes a few times an hour.
 //
 // Between probes it watches the steps on all threads for stalls, since a
 // competitor may come between probes that are far apart. A stall is what
@@ -105,7 +106,7 @@ struct ThreadGovernor {
   long probes = 0;
   long switches = 0;
   long steps_on_one = 0;  // steps run on one thread while more were available
-  long stall_drops = 0;   // drops to one thread by the stall watch (among `switches`)
+  long stall_drops = 0;   // times the stall watch ended all threads: drops, and probes' all-threads sides
 };
 
 // A governor for `most` threads; when it governs (enabled, most > 1) the run
@@ -119,7 +120,8 @@ int threads_for_step(ThreadGovernor& g, long step);
 void record_step(ThreadGovernor& g, double seconds, long step);
 
 // The stall watch's verdict on one window (exposed for tests): its mean step
-// is above `ratio` times its fastest.
+// is above `ratio` times its fastest (a fastest of 0, a clock too coarse,
+// is no verdict).
 bool window_stalled(long steps, double seconds, double fastest, double ratio);
 
 // The choice between the two mean step times (exposed for tests): all

@@ -83,6 +83,23 @@ TEST(ThreadGovernor, AllThreadsLoseEarlyWhenAlreadySlowerThanOne) {
   EXPECT_EQ(g.now, 1);
   EXPECT_EQ(g.switches, 0);
   EXPECT_EQ(on_all, 3) << "two 6 ms steps warm up (past warm_up_seconds); one more is past lost_after_seconds";
+  // A first probe that keeps the choice (one thread) doubles both waits.
+  EXPECT_EQ(g.interval, 2 * g.shortest_interval);
+  EXPECT_EQ(g.wait, 2 * g.shortest_wait);
+  // Three times slower, not milliseconds: lost once lost_after_seconds of
+  // samples (5 ms, ~167 steps of 30 µs) say so, not at the first sample.
+  ThreadGovernor s = make_thread_governor(2, true);
+  step = 0;
+  on_all = 0;
+  while (s.probes == 0) {
+    const int t = threads_for_step(s, step);
+    on_all += t > 1;
+    record_step(s, t > 1 ? 30e-6 : 9e-6, step);
+    ++step;
+  }
+  EXPECT_EQ(s.now, 1);
+  EXPECT_GT(on_all, 100);
+  EXPECT_LT(on_all, 600) << "not the whole probe_seconds side";
   // A quiet machine where the steps on two threads are 1.2 times faster,
   // the first of them 14 ms (starting the threads) and the next 200 warming
   // up at 15 µs: not lost early, kept at the end.
@@ -96,6 +113,35 @@ TEST(ThreadGovernor, AllThreadsLoseEarlyWhenAlreadySlowerThanOne) {
     ++step;
   }
   EXPECT_EQ(q.now, 2);
+}
+
+// The warm-up of a probe's all-threads side (starting the threads: a 9 ms
+// step, then slow ones) feeds neither the probe nor the stall watch.
+TEST(ThreadGovernor, TheWarmUpIsNoSample) {
+  ThreadGovernor g = make_thread_governor(2, true);
+  long step = 0;
+  while (g.probing != kProbingAll) {
+    threads_for_step(g, step);
+    record_step(g, 9e-6, step++);
+  }
+  record_step(g, 9e-3, step++);
+  for (int k = 0; k < 21; ++k) record_step(g, 50e-6, step++);  // 10.05 ms in all
+  EXPECT_GE(g.warmed, g.warm_up_seconds);
+  EXPECT_EQ(g.many_steps, 0);
+  EXPECT_EQ(g.window_steps, 0);
+  EXPECT_EQ(g.stalled_windows, 0);
+  EXPECT_EQ(until_probed(g, step, 5e-6, 9e-6), 2);
+}
+
+// Long steps (a large model's 25 ms) do not wait 16,384 of them for the
+// next probe: twice the wall-time wait is enough.
+TEST(ThreadGovernor, LongStepsProbeWithinSeconds) {
+  ThreadGovernor g = make_thread_governor(2, true);
+  long step = 0;
+  EXPECT_EQ(until_probed(g, step, 25e-3, 45e-3), 2);
+  const long after_first = step;
+  EXPECT_EQ(until_probed(g, step, 25e-3, 45e-3), 2);
+  EXPECT_LT(step - after_first, 200) << "2 s of 25 ms steps, plus the probe's own";
 }
 
 // Stalls: two threads run most steps fast but lose a 4 ms scheduler slice
