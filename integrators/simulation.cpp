@@ -151,6 +151,10 @@ DetectionTimes Simulation::detect_contacts() {
   return times;
 }
 
+bool Simulation::large_enough_for_threads() const {
+  return contacts_.sub.size() >= parallel_threshold_ || 16 * blocks_.free_blocks.size() >= parallel_threshold_;
+}
+
 void Simulation::step() {
   const Clock::time_point t0 = Clock::now();
   // One parallel region per step (a region costs more than a barrier); small
@@ -159,7 +163,7 @@ void Simulation::step() {
   // makes the threads wait at every barrier); results are the same bits.
   // A small scene detects on one thread too: its detection gains little
   // from a second, and threads woken for it would spin beside a competitor.
-  const bool big = contacts_.sub.size() >= parallel_threshold_ || 16 * blocks_.free_blocks.size() >= parallel_threshold_;
+  const bool big = large_enough_for_threads();
   const int threads = big ? threads_for_step(governor_, steps_) : 1;
   // Down from all threads to one (a drop, a probe's one-thread side, a scene
   // grown small): release the idle threads first. With libgomp's default
@@ -175,8 +179,7 @@ void Simulation::step() {
   if (detector_.needs_detection(blocks_, dt_)) patch = detect_contacts().patch;
   const Clock::time_point t1 = Clock::now();
   Clock::time_point t2 = t1;  // the joint law's end, read by the master thread
-  const bool parallel = threads > 1 && (contacts_.sub.size() >= parallel_threshold_ ||
-                                        16 * blocks_.free_blocks.size() >= parallel_threshold_);
+  const bool parallel = threads > 1 && large_enough_for_threads();
   // The loads once, before the threads: a caller's extra ground
   // acceleration (GroundMotion::extra) is called once per step, on this thread.
   const StepLoads loads = step_loads();
@@ -200,13 +203,7 @@ void Simulation::step() {
   profile_.gather_update += seconds(t2, t3);
   ++profile_.steps;
   // A sample only if the step could run in parallel after its detection too.
-  if (big && (contacts_.sub.size() >= parallel_threshold_ || 16 * blocks_.free_blocks.size() >= parallel_threshold_)) {
-    record_step(governor_, seconds(t1, t3), steps_);
-    profile_.thread_probes = governor_.probes;
-    profile_.thread_switches = governor_.switches;
-    profile_.thread_stall_drops = governor_.stall_drops;
-    profile_.steps_on_one_thread = governor_.steps_on_one;
-  }
+  if (big && large_enough_for_threads()) record_step(governor_, seconds(t1, t3), steps_);
   if (steps_ % 256 == 0) {
     check_health();
     profile_.guard += seconds(t3, Clock::now());

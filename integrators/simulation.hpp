@@ -72,11 +72,9 @@ struct StepProfile {
   double gather_update = 0;  // gather, central-difference update, kinematic blocks
   double guard = 0;          // check_health, every 256 steps
   long steps = 0;            // steps timed
-  // The thread governor (integrators/thread_governor.hpp): threads given,
-  // probes run, changes of choice, steps run on one thread while more were
-  // given.
+  // Threads OpenMP gave the run (what the thread governor did with them:
+  // Simulation::thread_governor()).
   int threads_given = 1;
-  long thread_probes = 0, thread_switches = 0, steps_on_one_thread = 0, thread_stall_drops = 0;
 };
 
 class Simulation {
@@ -121,6 +119,9 @@ class Simulation {
   const ThreadGovernor& thread_governor() const { return governor_; }
 
   void step();
+  // The scene is large enough for the step to run on more than one thread
+  // (set_parallel_threshold).
+  bool large_enough_for_threads() const;
   double time() const { return time_; }
   double dt() const { return dt_; }
   // Times the step was lowered because a detection found joints stiffer

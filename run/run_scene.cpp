@@ -345,10 +345,11 @@ const RunReport& SceneRun::finish() {
   rep.profile.output = loop_->output_seconds;
   rep.profile.steps = sim.steps();
   rep.profile.threads_given = sp.threads_given;
-  rep.profile.thread_probes = sp.thread_probes;
-  rep.profile.thread_switches = sp.thread_switches;
-  rep.profile.thread_stall_drops = sp.thread_stall_drops;
-  rep.profile.steps_on_one_thread = sp.steps_on_one_thread;
+  const ThreadGovernor& g = sim.thread_governor();
+  rep.profile.thread_probes = g.probes;
+  rep.profile.thread_switches = g.switches;
+  rep.profile.thread_stall_drops = g.stall_drops;
+  rep.profile.steps_on_one_thread = g.steps_on_one;
   rep.profile.total = seconds_since(loop_->wall_start);
   return rep;
 }
