@@ -64,12 +64,20 @@ void finish(CriticalStep& out, const JointSpec& joint, double safety_factor) {
   out.chosen = safety_factor * out.critical;
 }
 
-// The step finish() would choose for ω (falls as ω rises).
-double chosen_for(double omega, const JointSpec& joint, double safety_factor) {
+}  // namespace
+
+CriticalStep critical_step_for(double omega, const JointSpec& joint, double safety_factor) {
   CriticalStep c;
   c.omega_max = omega;
   finish(c, joint, safety_factor);
-  return c.chosen;
+  return c;
+}
+
+namespace {
+
+// The step finish() would choose for ω (falls as ω rises).
+double chosen_for(double omega, const JointSpec& joint, double safety_factor) {
+  return critical_step_for(omega, joint, safety_factor).chosen;
 }
 
 // An upper bound of block i's ω_b² (block_omega_squared): the largest

@@ -32,6 +32,11 @@ struct CriticalStep {
 
 CriticalStep critical_time_step(const Blocks& blocks, const JointSpec& joint, double safety_factor);
 
+// The step for a highest frequency ω (rad/s) found some other way (e.g.
+// joint_modes.hpp): ξ = β·ω/2 with `joint`'s β, the limit and the chosen step
+// as above; governing_block −1.
+CriticalStep critical_step_for(double omega, const JointSpec& joint, double safety_factor);
+
 // Each free block's ω_b of the same all-faces bound (rad/s, without the √2
 // between free blocks; 0 for blocks that are not free). critical_time_step's
 // omega_max is √2 times the largest. The static stage's density scaling
