@@ -31,6 +31,8 @@ add_wall_options(p, interval=1.0)
 p.add_argument("--beta", type=float, default=2.1e-5, help="contact damping beta (s)")
 p.add_argument("--threads", type=int, default=1)
 p.add_argument("--fixed-threads", action="store_true", help="simulation.adaptive_threads = false")
+p.add_argument("--history-interval", type=float, default=0.0,
+               help="output.history_interval (s): 0 records the histories and the energy ledger every step")
 a = p.parse_args()
 
 L, W, H = a.unit
@@ -63,6 +65,7 @@ density = {a.density!r}
 
 [output]
 snapshot_interval = 0
+history_interval = {a.history_interval!r}
 """
 run = polydem.Run(polydem.Scene.from_text(deck, name="side-by-side wall"), threads=a.threads)
 free = np.asarray(run.free, dtype=bool)

@@ -88,6 +88,9 @@ def main():
                          "0.002 s (YADE), settle at most 0.03 s")
     ap.add_argument("--polydem-fixed-threads", action="store_true",
                     help="polydem with simulation.adaptive_threads = false (default: the thread governor on)")
+    ap.add_argument("--polydem-history-interval", type=float, default=0.01,
+                    help="polydem's output.history_interval (s), as in its example decks; 0: every step "
+                         "(histories and energy ledger; YADE's half records nothing)")
     ap.add_argument("--no-yade", action="store_true", help="run only the polydem half")
     ap.add_argument("--csv", help="also write the table as CSV here")
     a = ap.parse_args()
@@ -125,6 +128,9 @@ def main():
         print(f"# YADE: {v[-1] if v else yade}")
     print(f"# intervals: polydem {a.polydem_interval} s, YADE {a.yade_interval} s; settle <= {a.settle_max} s "
           f"until every brick < {a.settle_speed} m/s")
+    print(f"# polydem records its histories and energy ledger "
+          + (f"every {a.polydem_history_interval} s" if a.polydem_history_interval > 0 else "every step")
+          + "; YADE's half records nothing while timed")
     print()
 
     py = "/usr/bin/python3"
@@ -134,7 +140,8 @@ def main():
     for courses, bricks in sizes:
         for t in threads:
             jobs = [("polydem", [py, os.path.join(HERE, "polydem_wall.py"), "--threads", str(t),
-                                 "--interval", str(a.polydem_interval)]
+                                 "--interval", str(a.polydem_interval),
+                                 "--history-interval", str(a.polydem_history_interval)]
                      + (["--fixed-threads"] if a.polydem_fixed_threads else []))]
             if yade:
                 jobs.append(("yade", [yade, "-n", "-x", "-j", str(t), os.path.join(HERE, "yade_wall.py"),

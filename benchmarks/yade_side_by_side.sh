@@ -9,7 +9,8 @@
 #
 # Usage: benchmarks/yade_side_by_side.sh [--build DIR] [--sizes 10x10,20x20,40x25]
 #          [--threads 1,2] [--polydem-interval S] [--yade-interval S]
-#          [--settle-max S] [--settle-speed V] [--yade-dt S] [--quick] [--no-yade]
+#          [--settle-max S] [--settle-speed V] [--yade-dt S] [--polydem-history-interval S]
+#          [--quick] [--no-yade]
 #          [--csv FILE]
 # Without yade on PATH it says so, runs the polydem half only and exits 0.
 set -euo pipefail
