@@ -21,6 +21,13 @@ using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 using Quat = Eigen::Quaterniond;
 
+// The cross-product matrix [r]×: [r]×·v = r × v.
+inline Mat3 cross_matrix(const Vec3& r) {
+  Mat3 m;
+  m << 0, -r.z(), r.y(), r.z(), 0, -r.x(), -r.y(), r.x(), 0;
+  return m;
+}
+
 // Invalid geometry (open, non-convex, degenerate, ...). The message says what
 // is wrong and where (face/vertex index).
 struct GeometryError : std::runtime_error {

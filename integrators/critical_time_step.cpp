@@ -12,12 +12,6 @@ namespace {
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 using Vec6 = Eigen::Matrix<double, 6, 1>;
 
-Mat3 cross_matrix(const Vec3& r) {
-  Mat3 m;
-  m << 0, -r.z(), r.y(), r.z(), 0, -r.x(), -r.y(), r.x(), 0;
-  return m;
-}
-
 // Contribution of a face point at r with weight w to the 6×6 stiffness.
 void add_point(Mat6& K, const Mat3& D, const Vec3& r, double w) {
   const Mat3 X = cross_matrix(r);  // rotation θ gives displacement θ×r = −X·θ

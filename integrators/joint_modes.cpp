@@ -13,12 +13,6 @@ namespace {
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 using Mat36 = Eigen::Matrix<double, 3, 6>;
 
-Mat3 cross_matrix(const Vec3& r) {
-  Mat3 m;
-  m << 0, -r.z(), r.y(), r.z(), 0, -r.x(), -r.y(), r.x(), 0;
-  return m;
-}
-
 // The displacement of block i's point p for a mass-normalised motion of the
 // block: translation (world axes) over √m, rotation about the body's principal
 // axes over √I. A rotation θ (body frame) moves p by (R·θ) × (p − x).
