@@ -40,19 +40,21 @@ JointModes joint_modes(const Blocks& b, const ContactSet& contacts, const JointL
   std::vector<int> slot(static_cast<std::size_t>(b.count), -1);
   for (int j = 0; j < n; ++j) slot[b.free_blocks[j]] = j;
 
-  // Each subcontact: its spring D and, for each free side, the mass-normalised
-  // motion of the point (inc side +, reference side −).
+  // Each subcontact: its spring D, for each free side the mass-normalised
+  // motion of the point (inc side +, reference side −) and that side's own
+  // 6×6 part hᵀ·D·h.
   const auto& sub = contacts.sub;
   struct Spring {
     Mat3 d;
     int side[2];  // slots of the incident and reference blocks, −1 when not free
     Mat36 h[2];
+    Mat6 own[2];
   };
   std::vector<Spring> springs;
   springs.reserve(sub.size());
   for (std::size_t s = 0; s < sub.size(); ++s) {
     const int ref = sub.ref_block[s], inc = sub.inc_block[s];
-    const JointLaw& law = laws.single() ? laws.laws[0] : laws.between(ref, inc);
+    const JointLaw& law = laws.between(ref, inc);
     const Vec3 nn = b.state.rotation[ref] * sub.ref_normal_local[s];
     Spring sp;
     sp.d = sub.area[s] * (law.kn * nn * nn.transpose() + law.ks * (Mat3::Identity() - nn * nn.transpose()));
@@ -60,6 +62,8 @@ JointModes joint_modes(const Blocks& b, const ContactSet& contacts, const JointL
     sp.side[1] = slot[ref];
     if (sp.side[0] >= 0) sp.h[0] = normalised_motion(b, inc, sub.point[s]);
     if (sp.side[1] >= 0) sp.h[1] = -normalised_motion(b, ref, sub.point[s]);
+    for (int u = 0; u < 2; ++u)
+      if (sp.side[u] >= 0) sp.own[u] = sp.h[u].transpose() * sp.d * sp.h[u];
     if (sp.side[0] >= 0 || sp.side[1] >= 0) springs.push_back(sp);
   }
 
@@ -70,7 +74,7 @@ JointModes joint_modes(const Blocks& b, const ContactSet& contacts, const JointL
     for (int u = 0; u < 2; ++u)
       for (int v = 0; v < 2; ++v)
         if (sp.side[u] >= 0 && sp.side[v] >= 0)
-          k.block<6, 6>(6 * sp.side[u], 6 * sp.side[v]) += sp.h[u].transpose() * sp.d * sp.h[v];
+          k.block<6, 6>(6 * sp.side[u], 6 * sp.side[v]) += u == v ? sp.own[u] : sp.h[u].transpose() * sp.d * sp.h[v];
   if (n > 0) {
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(k);
     out.omega.resize(static_cast<std::size_t>(6 * n));
@@ -89,7 +93,7 @@ JointModes joint_modes(const Blocks& b, const ContactSet& contacts, const JointL
     std::vector<Mat6> kb(static_cast<std::size_t>(n), Mat6::Zero());
     for (const Spring& sp : springs)
       for (int u = 0; u < 2; ++u)
-        if (sp.side[u] >= 0) kb[sp.side[u]] += weight(sp, u) * (sp.h[u].transpose() * sp.d * sp.h[u]);
+        if (sp.side[u] >= 0) kb[sp.side[u]] += weight(sp, u) * sp.own[u];
     std::vector<double> l(static_cast<std::size_t>(n));
     for (int j = 0; j < n; ++j) l[j] = largest_eigenvalue(kb[j]);
     return l;

@@ -138,6 +138,8 @@ class Simulation {
   const GroundMotion& ground_motion() const { return motion_; }
   const JointLaw& joint_law() const { return laws_.laws[0]; }  // the default law
   const JointLaws& joint_laws() const { return laws_; }
+  // The stiffest law that can act: its β sets the time step's damping.
+  const JointSpec& step_joint() const { return step_joint_; }
   // Block i moves as a [[prescribe]] says (not with the ground motion).
   bool is_prescribed(int i) const { return !prescription_of_.empty() && prescription_of_[i] >= 0; }
 
