@@ -1,10 +1,11 @@
 // How much step the automatic time step leaves on the table: for each deck,
-// the joints of its first detection (as a run builds them), the run's
-// block-by-block bound of the highest frequency (√2·max ω_b, what sets the
-// step), the per-joint-weighted bound and the assembled system's exact
-// highest frequency (integrators/joint_modes.hpp), each with the step it
-// would give (the deck's β and safety factor), and the blocks the top mode
-// lives in. Dense eigenvalues: seconds for a few hundred blocks; decks with
+// the joints of its first detection (as a run builds them), the bounds of
+// the highest frequency a run can take (critical_time_step.hpp: the
+// all-faces estimate a run starts from, the block bound √2·max ω_b and the
+// joint bound of simulation.time_step_bound = "joint") and the assembled
+// system's exact highest frequency (integrators/joint_modes.hpp), each with
+// the step it would give (the deck's β and safety factor) against the step a
+// run with the default bound takes, and the blocks the top mode lives in. Dense eigenvalues: seconds for a few hundred blocks; decks with
 // more than max_joint_mode_blocks free blocks are reported as too large.
 //
 //   polydem_step_bound [DECK...]     (default examples/spire/earthquake.toml)
@@ -42,11 +43,20 @@ int main(int argc, char** argv) {
       const JointModes m = joint_modes(sim->blocks(), sim->contacts(), laws);
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       const std::string name = path.substr(path.find_last_of('/') + 1);
-      const double run_step = critical_step_for(m.block_bound, beta, sf).chosen;
+      // The step a run with the default bound takes: the all-faces start,
+      // lowered by the first detection's joints (or the deck's own step).
+      const double run_step = spec.simulation.time_step > 0
+                                  ? spec.simulation.time_step
+                                  : std::min(setup.critical.chosen, critical_step_for(m.block_bound, beta, sf).chosen);
+      const CriticalStep joint_bound =
+          critical_time_step_from_contacts(sim->blocks(), sim->contacts(), laws, beta, sf, 0, 1, StepBound::joint);
       const struct {
         const char* label;
         double omega;
-      } rows[] = {{"run's (√2·max ω_b)", m.block_bound}, {"split per joint", m.split_bound}, {"exact", m.omega_max}};
+      } rows[] = {{"all faces (the start)", setup.critical.omega_max},
+                  {"block (√2·max ω_b)", m.block_bound},
+                  {"joint (time_step_bound = \"joint\")", joint_bound.omega_max},
+                  {"exact", m.omega_max}};
       for (const auto& r : rows) {
         const CriticalStep c = critical_step_for(r.omega, beta, sf);
         std::printf("| %s | %zu | %zu | %s | %.4e | %.3f | %.4e | %.3f |\n", name.c_str(), sim->blocks().free_blocks.size(),

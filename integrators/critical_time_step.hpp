@@ -13,6 +13,19 @@
 // decks measured). The central-difference limit with stiffness-
 // proportional damping ξ = β·ω/2 is dt = (2/ω)(√(1+ξ²) − ξ); the step used
 // is that times the safety factor.
+//
+// The joint bound (simulation.time_step_bound = "joint", StepBound::joint)
+// is tighter where the √2 is loose: a joint between free blocks a and b, with
+// own parts A and B (each block's side of its spring, the other held),
+// stores at most (1 + t)·xᵀAx + (1 + 1/t)·yᵀBy for any t > 0 (Young's
+// inequality), so the assembled stiffness is at most the block-diagonal one
+// in which block a counts that joint (1 + t) times and b (1 + 1/t) times. With
+// t = g_b/g_a, the ratio of the blocks' own frequency bounds, a stiff small
+// stone beside a heavy one counts its joint about once, not twice; a joint
+// with a fixed or kinematic neighbour counts once (the block bound counts
+// every joint twice). The highest eigenvalue over the weighted blocks bounds
+// the assembled system's. 1.14× the block bound's step on the spire, 1.5× on
+// the 8-drum column (docs/benchmarks.md).
 #pragma once
 
 #include "contact/joint_law.hpp"
@@ -61,15 +74,20 @@ std::vector<double> block_frequencies(const Blocks& blocks, const JointSpec& joi
 // as without it; when no, chosen ≥ below (or 0) and the governing block may
 // not be the stiffest. 0: every block, the exact estimate. `threads` > 1:
 // the blocks in parallel, the same result bit for bit.
+//
+// `bound`: StepBound::block (√2·max ω_b, above) or StepBound::joint (each
+// joint shared by its blocks' stiffness, above); governing_block is the
+// block whose weighted stiffness is highest.
 CriticalStep critical_time_step_from_contacts(const Blocks& blocks, const ContactSet& contacts, const JointSpec& joint,
-                                              double safety_factor, double below = 0, int threads = 1);
+                                              double safety_factor, double below = 0, int threads = 1,
+                                              StepBound bound = StepBound::block);
 
 // The same with each joint's own law (kn, ks of its pair of groups) and the
 // damping β of `stiffest` (stiffest_joint: the largest β that can act). With
 // one law, exactly the call above with that law's spec.
 CriticalStep critical_time_step_from_contacts(const Blocks& blocks, const ContactSet& contacts, const JointLaws& laws,
                                               const JointSpec& stiffest, double safety_factor, double below = 0,
-                                              int threads = 1);
+                                              int threads = 1, StepBound bound = StepBound::block);
 
 // Each free block's ω_b on the joints it has now (the subcontacts of the
 // last detection, each law's kn and ks; 0 for blocks without joints). A

@@ -20,9 +20,11 @@
 // with its neighbours held: ω_max ≤ √2·max_b ω_b, the run's bound. Choosing
 // t per joint as the ratio of the two blocks' own ω_b² (exact for two point
 // masses on one spring) gives a second, tighter bound where light stones sit
-// on heavy ones. Both are bounds of the same linear system; neither is used
-// by a run (the second would change every step and so every result; see
-// docs/benchmarks.md "What sets the spire's step").
+// on heavy ones (split_bound). A run takes the same bound with the ratio of
+// the blocks' Gershgorin bounds instead when the deck asks for it
+// (simulation.time_step_bound = "joint", critical_time_step.hpp); this one,
+// with the exact ratios, is the independent reference its tests compare
+// with (docs/benchmarks.md "What sets the spire's step").
 //
 // Dense: for verification and the benchmark polydem_step_bound, not for runs
 // (N ≤ max_joint_mode_blocks: a 2412-degree eigenproblem takes seconds).

@@ -142,7 +142,7 @@ DetectionTimes Simulation::detect_contacts() {
   if (!adaptive_dt_) return times;
   const CriticalStep c =
       critical_time_step_from_contacts(blocks_, contacts_, laws_, step_joint_, sim_.safety_factor, dt_,
-                                       detector_.threads());
+                                       detector_.threads(), sim_.time_step_bound);
   if (c.chosen > 0 && c.chosen < dt_) {
     dt_ = c.chosen;
     ++dt_reductions_;
@@ -414,6 +414,15 @@ void Simulation::begin_static_stage(double local_damping, const Vec3& load, bool
   for (int i : blocks_.free_blocks) {
     w[i] = std::max(w[i], wc[i]);
     top = std::max(top, w[i]);
+  }
+  // Under the joint bound the step may allow less than √2·top (each joint
+  // counted once beside a fixed block or a stiffer stone), but blocks scaled
+  // to one frequency count every joint twice: scale them to ω/√2 of the
+  // highest ω the step allows (blocks above it become heavier). That ω
+  // inverts dt = sf·(2/ω)(√(1+ξ²) − ξ), ξ = βω/2: ω = 2/√(c(c + 2β)), c = dt/sf.
+  if (sim_.time_step_bound == StepBound::joint) {
+    const double c = dt_ / sim_.safety_factor;
+    top = std::min(top, 2.0 / std::sqrt(c * (c + 2.0 * step_joint_.damping)) / std::sqrt(2.0));
   }
   scaled_inv_mass_ = blocks_.props.inv_mass;
   scaled_inv_inertia_ = blocks_.props.inv_principal_inertia;

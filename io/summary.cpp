@@ -169,6 +169,7 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   s.set("highest_frequency_rad_s", r.critical.omega_max);
   s.set("damping_ratio_at_highest_frequency", r.critical.damping_ratio);
   s.set("time_step_set_by", r.time_step_set_by);
+  s.set("time_step_bound", spec.simulation.time_step_bound == StepBound::joint ? "joint" : "block");
   s.set("time_step_block", r.time_step_block);
   s.set("contact_margin_m", r.margin);
   s.set("blocks", r.blocks);
