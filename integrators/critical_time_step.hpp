@@ -24,8 +24,9 @@
 // stone beside a heavy one counts its joint about once, not twice; a joint
 // with a fixed or kinematic neighbour counts once (the block bound counts
 // every joint twice). The highest eigenvalue over the weighted blocks bounds
-// the assembled system's. 1.14× the block bound's step on the spire, 1.5× on
-// the 8-drum column (docs/benchmarks.md).
+// the assembled system's. At the first joints: 1.14× the block bound's step
+// on the spire, 1.5× on the 8-drum column (a run of it 1.08×: the all-faces
+// start caps both bounds), 0.995× on the semicircular arch (docs/benchmarks.md).
 #pragma once
 
 #include "contact/joint_law.hpp"

@@ -131,6 +131,7 @@ TEST(JointModes, TheSpiresStepBoundsLieAboveItsHighestFrequency) {
   const double joint = joint_bound(sim, laws, spec.joint);
   EXPECT_GT(joint, m.omega_max);
   EXPECT_NEAR(joint / m.block_bound, 0.921, 0.005);
+  EXPECT_NEAR(joint / m.split_bound, 0.997, 0.002);  // Gershgorin ratios against exact ones
   // The top mode lives in the top course's half-stones (course 19).
   double top_course = 0;
   for (int i = 0; i < sim.blocks().count; ++i)
@@ -151,6 +152,7 @@ TEST(JointModes, TheColumnsJointBoundIsCloseAboveItsHighestFrequency) {
   EXPECT_GT(joint, m.omega_max);
   EXPECT_NEAR(joint / m.omega_max, 1.023, 0.005);
   EXPECT_NEAR(m.block_bound / m.omega_max, 1.409, 0.005);
+  EXPECT_NEAR(joint / m.split_bound, 1.008, 0.002);  // Gershgorin ratios against exact ones
 }
 
 TEST(JointModes, RefusesSceneTooLargeForADenseSolve) {
