@@ -125,8 +125,8 @@ CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const St
   thread_local std::vector<double> own_scratch;
   std::vector<double>& own_bound = own_scratch;
   // Block i's 6×6 stiffness on its joints, in its body frame (the inertia
-  // is diagonal there), each joint weighted by `weight` (pass 2 of the
-  // joint bound) or 1; false if it has no joint.
+  // is diagonal there), each joint `weighted` by its share (pass 2 of the
+  // joint bound) or by 1; false if it has no joint.
   auto stiffness = [&](int i, Mat6& K, bool weighted) {
     K = Mat6::Zero();
     const int first = contacts.gather_offset[i], last = contacts.gather_offset[i + 1];
