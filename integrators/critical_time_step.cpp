@@ -68,6 +68,11 @@ CriticalStep critical_step_for(double omega, const JointSpec& joint, double safe
   return c;
 }
 
+double highest_frequency_for_step(double dt, const JointSpec& joint, double safety_factor) {
+  const double c = dt / safety_factor;
+  return 2.0 / std::sqrt(c * (c + 2.0 * joint.damping));
+}
+
 namespace {
 
 // The step finish() would choose for ω (falls as ω rises).

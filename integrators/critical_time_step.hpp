@@ -53,6 +53,11 @@ CriticalStep critical_time_step(const Blocks& blocks, const JointSpec& joint, do
 // as above; governing_block −1.
 CriticalStep critical_step_for(double omega, const JointSpec& joint, double safety_factor);
 
+// Its inverse: the highest frequency (rad/s) a chosen step `dt` allows with
+// `joint`'s β and the safety factor. dt = sf·(2/ω)(√(1+ξ²) − ξ), ξ = βω/2
+// gives ω = 2/√(c(c + 2β)), c = dt/sf.
+double highest_frequency_for_step(double dt, const JointSpec& joint, double safety_factor);
+
 // Each free block's ω_b of the same all-faces bound (rad/s, without the √2
 // between free blocks; 0 for blocks that are not free). critical_time_step's
 // omega_max is √2 times the largest. The static stage's density scaling

@@ -418,12 +418,9 @@ void Simulation::begin_static_stage(double local_damping, const Vec3& load, bool
   // Under the joint bound the step may allow less than √2·top (each joint
   // counted once beside a fixed block or a stiffer stone), but blocks scaled
   // to one frequency count every joint twice: scale them to ω/√2 of the
-  // highest ω the step allows (blocks above it become heavier). That ω
-  // inverts dt = sf·(2/ω)(√(1+ξ²) − ξ), ξ = βω/2: ω = 2/√(c(c + 2β)), c = dt/sf.
-  if (sim_.time_step_bound == StepBound::joint) {
-    const double c = dt_ / sim_.safety_factor;
-    top = std::min(top, 2.0 / std::sqrt(c * (c + 2.0 * step_joint_.damping)) / std::sqrt(2.0));
-  }
+  // highest ω the step allows (blocks above it become heavier).
+  if (sim_.time_step_bound == StepBound::joint)
+    top = std::min(top, highest_frequency_for_step(dt_, step_joint_, sim_.safety_factor) / std::sqrt(2.0));
   scaled_inv_mass_ = blocks_.props.inv_mass;
   scaled_inv_inertia_ = blocks_.props.inv_principal_inertia;
   if (!(top > 0)) return;

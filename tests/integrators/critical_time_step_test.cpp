@@ -112,6 +112,10 @@ TEST(CriticalTimeStep, DampingCorrection) {
   EXPECT_NEAR(cs.chosen, 0.7 * dt, 1e-12 * dt);
   // Damping shortens the step.
   EXPECT_LT(cs.critical, 2.0 / omega);
+  // The step gives back the frequency it was chosen for (with and without β).
+  EXPECT_NEAR(highest_frequency_for_step(cs.chosen, joint, 0.7), omega, 1e-12 * omega);
+  joint.damping = 0;
+  EXPECT_NEAR(highest_frequency_for_step(critical_step_for(omega, joint, 0.7).chosen, joint, 0.7), omega, 1e-12 * omega);
 }
 
 TEST(CriticalTimeStep, SmallestFreeBlockGovernsAndFixedBlocksDoNot) {
