@@ -204,6 +204,63 @@ void copy3(const Vec3& v, double* out) {
   out[2] = v.z();
 }
 
+// The lanes' PairFrame of the pair (r reference, c incident, `nl` the
+// reference face's normal in r's frame), in plain doubles: the same
+// operations in the same order as the portable loop's Eigen expressions
+// below (R·v is ((a + b) + c) in rows 0 and 1 and a + (b + c) in row 2, a
+// dot product (x·x′ + y·y′) + z·z′), without Eigen's SSE2 shuffles between
+// the packed and the scalar part of a Vec3, which cost a fifth of a step.
+// False, and the frame unfinished, when the joint turns beyond
+// rotation_matrix's series (the portable expressions then take it).
+[[gnu::always_inline]] inline bool pair_frame(const BlockState& st, int r, int c, const Vec3& nl, double dt,
+                                              lanes::PairFrame& f) {
+  const double* Rr = st.rotation[r].data();
+  const double* xr = st.position[r].data();
+  const double* xc = st.position[c].data();
+  const double* vr = st.velocity[r].data();
+  const double* vc = st.velocity[c].data();
+  const double* wr = st.angular_velocity[r].data();
+  const double* wc = st.angular_velocity[c].data();
+  const double l0 = nl.x(), l1 = nl.y(), l2 = nl.z();
+  const double n0 = (Rr[0] * l0 + Rr[3] * l1) + Rr[6] * l2;
+  const double n1 = (Rr[1] * l0 + Rr[4] * l1) + Rr[7] * l2;
+  const double n2 = Rr[2] * l0 + (Rr[5] * l1 + Rr[8] * l2);
+  // joint_spin: θ = dt·(w_ref + (½·(w_inc − w_ref)·n)·n)
+  const double h = 0.5 * (((wc[0] - wr[0]) * n0 + (wc[1] - wr[1]) * n1) + (wc[2] - wr[2]) * n2);
+  const double t0 = dt * (wr[0] + h * n0), t1 = dt * (wr[1] + h * n1), t2 = dt * (wr[2] + h * n2);
+  const double a2 = (t0 * t0 + t1 * t1) + t2 * t2;
+  if (!(a2 < 1e-6)) return false;
+  constexpr double k6 = 1.0 / 6.0, k24 = 1.0 / 24.0, k120 = 1.0 / 120.0, k720 = 1.0 / 720.0;
+  const double sn = 1.0 - a2 * k6 + (a2 * a2) * k120;
+  const double cs = 0.5 - a2 * k24 + (a2 * a2) * k720;
+  const double u0 = cs * t0, u1 = cs * t1, u2 = cs * t2;
+  const double diag = 1.0 - cs * a2;
+  double* R = f.spin;  // column-major: R(i, j) = R[i + 3j]
+  R[0] = u0 * t0 + diag;
+  R[4] = u1 * t1 + diag;
+  R[8] = u2 * t2 + diag;
+  R[3] = u0 * t1 - sn * t2;  // (0, 1)
+  R[6] = u0 * t2 + sn * t1;  // (0, 2)
+  R[1] = u1 * t0 + sn * t2;  // (1, 0)
+  R[7] = u1 * t2 - sn * t0;  // (1, 2)
+  R[2] = u2 * t0 - sn * t1;  // (2, 0)
+  R[5] = u2 * t1 + sn * t0;  // (2, 1)
+  f.n[0] = n0;
+  f.n[1] = n1;
+  f.n[2] = n2;
+  f.plane = (n0 * xr[0] + n1 * xr[1]) + n2 * xr[2];
+  for (int i = 0; i < 3; ++i) {
+    f.xc[i] = xc[i];
+    f.dv[i] = vc[i] - vr[i];
+    f.wc[i] = wc[i];
+    f.wr[i] = wr[i];
+    f.xcr[i] = xc[i] - xr[i];
+  }
+  const double* Rc = st.rotation[c].data();
+  for (int i = 0; i < 9; ++i) f.Rc[i] = Rc[i];
+  return true;
+}
+
 // The pair loop; `law_of(r, c)` gives the pair's law (a constant for one law,
 // which the compiler folds: the one-law loop is the loop it always was).
 // kLanes: the subcontacts in AVX2 lanes (joint_law_lanes.hpp), the same bits.
@@ -221,6 +278,14 @@ template <bool kLanes, class LawOf>
     const JointLaw& law = law_of(r, c);
     // Shared by the pair's subcontacts: the common plane and both motions.
     const std::size_t s0 = static_cast<std::size_t>(cp.first);
+    if constexpr (kLanes) {
+      lanes::PairFrame f;
+      if (pair_frame(st, r, c, sub.ref_normal_local[s0], dt, f)) {
+        const lanes::LawConstants k{law.kn, law.ks, law.tan_phi, law.cohesion, law.tensile_strength, law.beta, dt};
+        lanes::pair_law(f, k, arrays, s0, static_cast<std::size_t>(cp.count));
+        continue;
+      }
+    }
     const Vec3 n = st.rotation[r] * sub.ref_normal_local[s0];
     const Vec3& xr = st.position[r];
     const Vec3& xc = st.position[c];
