@@ -1,7 +1,7 @@
 // Which code path the step's hot loops take: the AVX2 lanes (the joint law,
-// contact/joint_law_lanes.hpp; the blocks' update,
-// integrators/block_update_lanes.hpp) or the portable loops every machine
-// runs. Both give the same bits (each lane repeats the portable arithmetic
+// contact/joint_law_lanes.hpp; the gather, contact/gather_lanes.hpp; the
+// blocks' update, integrators/block_update_lanes.hpp) or the portable loops
+// every machine runs. Both give the same bits (each lane repeats the portable arithmetic
 // in its order), so the choice changes speed only; tests run both and
 // compare.
 //

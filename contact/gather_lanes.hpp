@@ -1,0 +1,35 @@
+// The gather's AVX2 code path: gather_block_force (gather.hpp) with a
+// block's force and moment each held in one register, x y z in three lanes.
+//
+// A block's force is a sum in its gather list's fixed order (the
+// determinism contract): a chain of dependent additions that no lane may
+// split, and lanes across blocks pay more to fill than they save (docs/
+// benchmarks.md, session 13). What one entry does is three components of
+// the same operations: fk = s·F, f += fk, m += (p − x) × fk, the cross
+// product as (d_y·k_z − d_z·k_y, d_z·k_x − d_x·k_z, d_x·k_y − d_y·k_x), the
+// lanes' permutations of d and fk. Each lane rounds exactly the portable
+// loop's operations in its order (no fused multiply-add), so a block's force
+// and moment have the same bits on either path; the fourth lane reads
+// nothing (masked loads) and is not stored.
+#pragma once
+
+namespace polydem::gather_lanes {
+
+// ContactSet's gather lists and force/point slots, and the blocks'
+// centroid and contact force/moment records, as plain pointers (Vec3: x y z).
+struct GatherArrays {
+  const int* offset;       // gather_offset, blocks + 1 entries
+  const int* entry;        // gather_sub
+  const double* sign;      // gather_sign
+  const double* force;     // sub.force
+  const double* point;     // sub.point
+  const double* centroid;  // BlockState::position
+  double* contact_force;   // BlockState::contact_force
+  double* contact_torque;  // BlockState::contact_torque
+};
+
+// gather_block_force for block i, the same bits. Only call when
+// lanes_available() (core/code_path.hpp).
+void gather_block(const GatherArrays& a, int i);
+
+}  // namespace polydem::gather_lanes

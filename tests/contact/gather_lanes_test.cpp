@@ -1,0 +1,78 @@
+// The gather's AVX2 code path (contact/gather_lanes.hpp) gives
+// gather_block_force's bits: blocks with empty, short and long lists,
+// reference and incident entries, forces from 1 N to 1e12 N and points on
+// every side of the centroid. Whole runs on either path:
+// tests/verification/determinism_test.cpp.
+#include "contact/gather.hpp"
+#include "core/code_path.hpp"
+
+#ifdef POLYDEM_LANES_AVX2
+#include "contact/gather_lanes.hpp"
+#endif
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+
+namespace polydem {
+namespace {
+
+#ifdef POLYDEM_LANES_AVX2
+bool same_bits(const Vec3& a, const Vec3& b) { return std::memcmp(a.data(), b.data(), sizeof(Vec3)) == 0; }
+
+TEST(GatherLanes, SameBitsAsThePortableSum) {
+  if (!lanes_available()) GTEST_SKIP() << "no AVX2 on this machine: only the portable path runs";
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  constexpr int blocks = 40;
+  ContactSet cs;
+  // Subcontacts between random blocks; blocks 0-3 have none, block 4 many.
+  for (int q = 0; q < 600; ++q) {
+    int a = 4 + static_cast<int>(rng() % (blocks - 4)), b = 4 + static_cast<int>(rng() % (blocks - 4));
+    if (q % 5 == 0) a = 4;
+    if (a == b) continue;
+    const std::size_t s = cs.sub.size();
+    cs.sub.resize(s + 1);
+    cs.sub.ref_block[s] = a;
+    cs.sub.inc_block[s] = b;
+    const double scale = std::pow(10.0, 6.0 * (u(rng) + 1.0));  // 1 to 1e12 N
+    cs.sub.force[s] = Vec3(u(rng), u(rng), u(rng)) * scale;
+    cs.sub.point[s] = Vec3(u(rng), u(rng), u(rng)) * 3.0;
+  }
+  std::vector<int> scratch;
+  build_gather_lists(blocks, cs, scratch);
+  std::vector<Vec3> centroid(blocks), force(blocks, Vec3::Constant(7.0)), torque(blocks, Vec3::Constant(7.0));
+  for (Vec3& x : centroid) x = Vec3(u(rng), u(rng), u(rng)) * 3.0;
+  gather_lanes::GatherArrays a;
+  a.offset = cs.gather_offset.data();
+  a.entry = cs.gather_sub.data();
+  a.sign = cs.gather_sign.data();
+  a.force = reinterpret_cast<const double*>(cs.sub.force.data());
+  a.point = reinterpret_cast<const double*>(cs.sub.point.data());
+  a.centroid = reinterpret_cast<const double*>(centroid.data());
+  a.contact_force = reinterpret_cast<double*>(force.data());
+  a.contact_torque = reinterpret_cast<double*>(torque.data());
+  int longest = 0;
+  for (int i = 0; i < blocks; ++i) {
+    const int length = cs.gather_offset[i + 1] - cs.gather_offset[i];
+    longest = std::max(longest, length);
+    if (i < 4) {
+      ASSERT_EQ(length, 0);
+    }
+  }
+  ASSERT_GT(longest, 100);
+  for (int i = 0; i < blocks; ++i) {
+    gather_lanes::gather_block(a, i);
+    Vec3 f, m;
+    gather_block_force(cs, i, centroid[i], f, m);
+    EXPECT_TRUE(same_bits(f, force[i])) << "block " << i << ": " << f.transpose() << " / " << force[i].transpose();
+    EXPECT_TRUE(same_bits(m, torque[i])) << "block " << i << ": " << m.transpose() << " / " << torque[i].transpose();
+  }
+  EXPECT_TRUE(same_bits(force[0], Vec3::Zero()));  // an empty list: zero, written
+}
+#endif
+
+}  // namespace
+}  // namespace polydem
