@@ -263,11 +263,13 @@ void copy3(const Vec3& v, double* out) {
 
 // The pair loop; `law_of(r, c)` gives the pair's law (a constant for one law,
 // which the compiler folds: the one-law loop is the loop it always was).
-// kLanes: the subcontacts in AVX2 lanes (joint_law_lanes.hpp), the same bits.
+// kLanes: the subcontacts in AVX2 lanes (joint_law_lanes.hpp) by `kernel`,
+// lanes::pair_law or lanes::pair_law_wide, the same bits.
 template <bool kLanes, class LawOf>
 [[gnu::always_inline]] inline void pair_forces(const LawOf& law_of, const BlockState& st,
                                                const std::vector<ContactPair>& pairs, Subcontacts& sub, double dt,
-                                               std::size_t pair_begin, std::size_t pair_end) {
+                                               std::size_t pair_begin, std::size_t pair_end,
+                                               [[maybe_unused]] lanes::PairLawKernel kernel = nullptr) {
   [[maybe_unused]] lanes::SubcontactArrays arrays;
   if constexpr (kLanes) arrays = lane_arrays(sub);
   for (std::size_t q = pair_begin; q < pair_end; ++q) {
@@ -282,7 +284,7 @@ template <bool kLanes, class LawOf>
       lanes::PairFrame f;
       if (pair_frame(st, r, c, sub.ref_normal_local[s0], dt, f)) {
         const lanes::LawConstants k{law.kn, law.ks, law.tan_phi, law.cohesion, law.tensile_strength, law.beta, dt};
-        lanes::pair_law(f, k, arrays, s0, static_cast<std::size_t>(cp.count));
+        kernel(f, k, arrays, s0, static_cast<std::size_t>(cp.count));
         continue;
       }
     }
@@ -308,7 +310,7 @@ template <bool kLanes, class LawOf>
       copy3(xcr, f.xcr);
       std::copy(spin.data(), spin.data() + 9, f.spin);
       const lanes::LawConstants k{law.kn, law.ks, law.tan_phi, law.cohesion, law.tensile_strength, law.beta, dt};
-      lanes::pair_law(f, k, arrays, s0, static_cast<std::size_t>(cp.count));
+      kernel(f, k, arrays, s0, static_cast<std::size_t>(cp.count));
       continue;
     }
     for (std::size_t s = s0; s < s0 + static_cast<std::size_t>(cp.count); ++s) {
@@ -329,7 +331,8 @@ void pair_forces_on_path(const LawOf& law_of, const BlockState& st, const std::v
                          CodePath path) {
 #ifdef POLYDEM_LANES_AVX2
   if (use_lanes(path)) {
-    pair_forces<true>(law_of, st, pairs, sub, dt, pair_begin, pair_end);
+    pair_forces<true>(law_of, st, pairs, sub, dt, pair_begin, pair_end,
+                      use_wide_lanes(path) ? &lanes::pair_law_wide : &lanes::pair_law);
     return;
   }
 #endif

@@ -69,4 +69,13 @@ struct SubcontactArrays {
 void pair_law(const PairFrame& f, const LawConstants& law, const SubcontactArrays& a, std::size_t s0,
               std::size_t count);
 
+using PairLawKernel = void (*)(const PairFrame&, const LawConstants&, const SubcontactArrays&, std::size_t,
+                               std::size_t);
+
+// The same kernel compiled for AVX-512VL (its 32 vector registers; the
+// same 256-bit lanes and the same bits). Only call when
+// wide_lanes_available() (core/code_path.hpp).
+void pair_law_wide(const PairFrame& f, const LawConstants& law, const SubcontactArrays& a, std::size_t s0,
+                   std::size_t count);
+
 }  // namespace polydem::lanes

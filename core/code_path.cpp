@@ -18,13 +18,37 @@ bool lanes_available() {
 #endif
 }
 
+bool wide_lanes_available() {
+#if defined(POLYDEM_LANES_AVX2) && !defined(__AVX__) && !defined(__FMA__)
+  // __builtin_cpu_supports asks the OS too (XCR0 keeps the AVX-512 state).
+  static const bool wide =
+      lanes_available() && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl");
+  return wide;
+#else
+  return false;
+#endif
+}
+
+namespace {
+
+bool environment_says(std::string_view value) {
+  const char* e = std::getenv("POLYDEM_CODE_PATH");
+  return e && std::string_view(e) == value;
+}
+
+}  // namespace
+
 bool use_lanes(CodePath path) {
   if (path == CodePath::portable) return false;
-  if (path == CodePath::lanes) return lanes_available();
-  static const bool automatic = [] {
-    const char* e = std::getenv("POLYDEM_CODE_PATH");
-    return lanes_available() && !(e && std::string_view(e) == "portable");
-  }();
+  if (path == CodePath::lanes || path == CodePath::lanes_avx2) return lanes_available();
+  static const bool automatic = lanes_available() && !environment_says("portable");
+  return automatic;
+}
+
+bool use_wide_lanes(CodePath path) {
+  if (path == CodePath::lanes) return wide_lanes_available();
+  if (path != CodePath::automatic) return false;
+  static const bool automatic = use_lanes(CodePath::automatic) && wide_lanes_available() && !environment_says("avx2");
   return automatic;
 }
 

@@ -143,11 +143,15 @@ TEST(JointLawLanes, SameBitsAsThePortableLoopOnEveryBranch) {
     for (int t = 0; t < 25; ++t, ++trial) {
       Scene s = random_scene(rng, 12);
       const Subcontacts before = s.sub;
-      Subcontacts lanes = s.sub, portable = s.sub;
+      // The AVX2 kernel, and where the CPU has AVX-512VL the copy compiled
+      // for it (CodePath::lanes takes it there).
+      Subcontacts lanes = s.sub, avx2 = s.sub, portable = s.sub;
       for (const double dt : {1e-5, 0.0}) {
         compute_pair_forces(law, s.st, s.pairs, lanes, dt, 0, s.pairs.size(), CodePath::lanes);
+        compute_pair_forces(law, s.st, s.pairs, avx2, dt, 0, s.pairs.size(), CodePath::lanes_avx2);
         compute_pair_forces(law, s.st, s.pairs, portable, dt, 0, s.pairs.size(), CodePath::portable);
         expect_same_bits(lanes, portable, trial);
+        expect_same_bits(avx2, portable, trial);
       }
       count_branches(before, portable, seen);
     }

@@ -85,6 +85,12 @@ TEST(Determinism, TheJointLawsTwoCodePathsGiveTheSameBits) {
   const RunReport b = run_scene(spec, portable);
   expect_same_bits(a, b);
   EXPECT_GT(a.energy.slip, 0.0);  // joints slipped: the law's every branch had its say
+  // The AVX2 kernel where CodePath::lanes took the AVX-512VL copy.
+  if (wide_lanes_available()) {
+    RunControl avx2 = lanes;
+    avx2.code_path = CodePath::lanes_avx2;
+    expect_same_bits(run_scene(spec, avx2), b, "AVX2 kernel");
+  }
 }
 
 // The blocks' update in AVX2 lanes against the portable one, through every
