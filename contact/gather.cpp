@@ -58,4 +58,19 @@ void gather_block_force(const ContactSet& contacts, int i, const Vec3& x, Vec3& 
   torque = Vec3(m0, m1, m2);
 }
 
+gather_lanes::GatherArrays gather_lane_arrays(const ContactSet& contacts, const std::vector<Vec3>& centroid,
+                                              std::vector<Vec3>& force, std::vector<Vec3>& torque) {
+  static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 arrays are read as x y z per element");
+  gather_lanes::GatherArrays a;
+  a.offset = contacts.gather_offset.data();
+  a.entry = contacts.gather_sub.data();
+  a.sign = contacts.gather_sign.data();
+  a.force = reinterpret_cast<const double*>(contacts.sub.force.data());
+  a.point = reinterpret_cast<const double*>(contacts.sub.point.data());
+  a.centroid = reinterpret_cast<const double*>(centroid.data());
+  a.contact_force = reinterpret_cast<double*>(force.data());
+  a.contact_torque = reinterpret_cast<double*>(torque.data());
+  return a;
+}
+
 }  // namespace polydem

@@ -11,6 +11,7 @@
 // thread count (Chrono's multicore DEM does the same).
 #pragma once
 
+#include "contact/gather_lanes.hpp"
 #include "contact/subcontacts.hpp"
 
 #include <vector>
@@ -25,5 +26,10 @@ void build_gather_lists(int blocks, ContactSet& contacts, std::vector<int>& coun
 // its torque about `centroid` (N·m), from the subcontacts' force slots and
 // points.
 void gather_block_force(const ContactSet& contacts, int i, const Vec3& centroid, Vec3& force, Vec3& torque);
+
+// The arrays gather_lanes::gather_block reads and writes: `contacts`' lists
+// and slots, the blocks' centroids, and their contact force and moment.
+gather_lanes::GatherArrays gather_lane_arrays(const ContactSet& contacts, const std::vector<Vec3>& centroid,
+                                              std::vector<Vec3>& force, std::vector<Vec3>& torque);
 
 }  // namespace polydem

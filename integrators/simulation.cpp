@@ -1,7 +1,6 @@
 #include "integrators/simulation.hpp"
 
 #include "contact/gather.hpp"
-#include "contact/gather_lanes.hpp"
 #include "core/loads.hpp"
 
 #include <omp.h>
@@ -226,17 +225,7 @@ void Simulation::gather_block(int i) {
   auto& st = blocks_.state;
 #ifdef POLYDEM_LANES_AVX2
   if (use_lanes(code_path_)) {  // the same bits (contact/gather_lanes.hpp)
-    static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 arrays are read as x y z per element");
-    gather_lanes::GatherArrays a;
-    a.offset = contacts_.gather_offset.data();
-    a.entry = contacts_.gather_sub.data();
-    a.sign = contacts_.gather_sign.data();
-    a.force = reinterpret_cast<const double*>(contacts_.sub.force.data());
-    a.point = reinterpret_cast<const double*>(contacts_.sub.point.data());
-    a.centroid = reinterpret_cast<const double*>(st.position.data());
-    a.contact_force = reinterpret_cast<double*>(st.contact_force.data());
-    a.contact_torque = reinterpret_cast<double*>(st.contact_torque.data());
-    gather_lanes::gather_block(a, i);
+    gather_lanes::gather_block(gather_lane_arrays(contacts_, st.position, st.contact_force, st.contact_torque), i);
     return;
   }
 #endif

@@ -6,10 +6,6 @@
 #include "contact/gather.hpp"
 #include "core/code_path.hpp"
 
-#ifdef POLYDEM_LANES_AVX2
-#include "contact/gather_lanes.hpp"
-#endif
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -45,15 +41,7 @@ TEST(GatherLanes, SameBitsAsThePortableSum) {
   build_gather_lists(blocks, cs, scratch);
   std::vector<Vec3> centroid(blocks), force(blocks, Vec3::Constant(7.0)), torque(blocks, Vec3::Constant(7.0));
   for (Vec3& x : centroid) x = Vec3(u(rng), u(rng), u(rng)) * 3.0;
-  gather_lanes::GatherArrays a;
-  a.offset = cs.gather_offset.data();
-  a.entry = cs.gather_sub.data();
-  a.sign = cs.gather_sign.data();
-  a.force = reinterpret_cast<const double*>(cs.sub.force.data());
-  a.point = reinterpret_cast<const double*>(cs.sub.point.data());
-  a.centroid = reinterpret_cast<const double*>(centroid.data());
-  a.contact_force = reinterpret_cast<double*>(force.data());
-  a.contact_torque = reinterpret_cast<double*>(torque.data());
+  const gather_lanes::GatherArrays a = gather_lane_arrays(cs, centroid, force, torque);
   int longest = 0;
   for (int i = 0; i < blocks; ++i) {
     const int length = cs.gather_offset[i + 1] - cs.gather_offset[i];
