@@ -10,10 +10,13 @@ namespace {
 
 using namespace avx2;
 
-const __m256i kXYZ = _mm256_setr_epi64x(-1, -1, -1, 0);  // lanes x y z, not the fourth
+// Lanes x y z, not the fourth. A function, not a namespace-scope constant:
+// that would be built by a static initialiser with AVX instructions, run
+// before main() on every CPU (core/avx2_lanes.hpp).
+inline __m256i xyz() { return _mm256_setr_epi64x(-1, -1, -1, 0); }
 
-inline V load3(const double* p) { return _mm256_maskload_pd(p, kXYZ); }
-inline void store3(double* p, V v) { _mm256_maskstore_pd(p, kXYZ, v); }
+inline V load3(const double* p) { return _mm256_maskload_pd(p, xyz()); }
+inline void store3(double* p, V v) { _mm256_maskstore_pd(p, xyz(), v); }
 // (y, z, x, ·) and (z, x, y, ·)
 inline V yzx(V v) { return _mm256_permute4x64_pd(v, _MM_SHUFFLE(3, 0, 2, 1)); }
 inline V zxy(V v) { return _mm256_permute4x64_pd(v, _MM_SHUFFLE(3, 1, 0, 2)); }

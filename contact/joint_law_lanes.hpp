@@ -17,11 +17,13 @@
 // or two (tests/contact/joint_law_lanes_test.cpp compares them on every
 // branch of the law, tests/verification/determinism_test.cpp on a run).
 //
-// The kernel's file is compiled with -mavx2 and includes no Eigen or other
-// inline library code, so no function instantiated there with AVX2
-// instructions can be picked by the linker for the rest of the program.
-// Whether the CPU has AVX2 is asked once, at run time (core/code_path.hpp);
-// without it, or on another architecture, the portable loop runs.
+// The kernel's source (joint_law_lanes_kernel.inc) is compiled twice: with
+// -mavx2 as pair_law, with -mavx512vl as pair_law_wide (the same 256-bit
+// lanes in 32 registers). It includes no Eigen or other inline library
+// code, so no function instantiated there with AVX2 or AVX-512 instructions
+// can be picked by the linker for the rest of the program. Whether the CPU
+// has AVX2, and AVX-512VL, is asked once, at run time (core/code_path.hpp);
+// without AVX2, or on another architecture, the portable loop runs.
 #pragma once
 
 #include <cstddef>

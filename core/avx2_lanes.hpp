@@ -1,11 +1,18 @@
-// Four doubles at a time: the helpers of the AVX2 kernels
-// (contact/joint_law_lanes_avx2.cpp, integrators/block_update_lanes_avx2.cpp).
+// Four doubles at a time: the helpers of the AVX2 kernels (the joint law's,
+// contact/joint_law_lanes_kernel.inc, compiled by joint_law_lanes_avx2.cpp
+// with -mavx2 and by joint_law_lanes_avx512.cpp with -mavx512vl; the
+// gather's, contact/gather_lanes_avx2.cpp; the blocks' update,
+// integrators/block_update_lanes_avx2.cpp).
 //
-// Only those files include this header; they are compiled with -mavx2 and
-// must instantiate no inline code shared with the rest of the program (an
-// AVX2 copy of an Eigen or std:: function could be the one the linker keeps
-// for every caller). So: intrinsics and functions of internal linkage only,
-// and no Eigen in the same file.
+// Only those files include this header; they are compiled for AVX2 or
+// AVX-512VL and must instantiate no inline code shared with the rest of the
+// program (an AVX2 copy of an Eigen or std:: function could be the one the
+// linker keeps for every caller). So: intrinsics and functions of internal
+// linkage only, and no Eigen in the same file. And no vector object at
+// namespace scope (a `const __m256i` there is built by a static initialiser
+// in AVX instructions, which runs before main() on every CPU, with or
+// without AVX: build such constants in functions; the test
+// LanesObjects.HaveNoStaticInitialisers checks the objects).
 //
 // Every helper is one IEEE operation per lane, or a fixed sequence of them
 // written out, so that a kernel's lanes repeat the portable code's arithmetic

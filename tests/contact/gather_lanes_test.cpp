@@ -15,16 +15,13 @@
 namespace polydem {
 namespace {
 
-#ifdef POLYDEM_LANES_AVX2
 bool same_bits(const Vec3& a, const Vec3& b) { return std::memcmp(a.data(), b.data(), sizeof(Vec3)) == 0; }
 
-TEST(GatherLanes, SameBitsAsThePortableSum) {
-  if (!lanes_available()) GTEST_SKIP() << "no AVX2 on this machine: only the portable path runs";
-  std::mt19937_64 rng(5);
+// A ContactSet of `blocks` blocks with random forces and points; blocks 0-3
+// have no subcontact, block 4 over a hundred entries.
+ContactSet random_contacts(std::mt19937_64& rng, int blocks) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  constexpr int blocks = 40;
   ContactSet cs;
-  // Subcontacts between random blocks; blocks 0-3 have none, block 4 many.
   for (int q = 0; q < 600; ++q) {
     int a = 4 + static_cast<int>(rng() % (blocks - 4)), b = 4 + static_cast<int>(rng() % (blocks - 4));
     if (q % 5 == 0) a = 4;
@@ -39,6 +36,40 @@ TEST(GatherLanes, SameBitsAsThePortableSum) {
   }
   std::vector<int> scratch;
   build_gather_lists(blocks, cs, scratch);
+  return cs;
+}
+
+// gather_block_force is written in plain doubles; the Eigen expressions it
+// replaced are the reference: the same bits.
+TEST(Gather, PlainDoublesGiveTheEigenSumsBits) {
+  std::mt19937_64 rng(8);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  constexpr int blocks = 40;
+  const ContactSet cs = random_contacts(rng, blocks);
+  for (int i = 0; i < blocks; ++i) {
+    const Vec3 x = Vec3(u(rng), u(rng), u(rng)) * 3.0;
+    Vec3 f_ref = Vec3::Zero(), m_ref = Vec3::Zero();
+    for (int k = cs.gather_offset[i]; k < cs.gather_offset[i + 1]; ++k) {
+      const int s = cs.gather_sub[k];
+      const Vec3 fk = cs.gather_sign[k] * cs.sub.force[s];
+      f_ref += fk;
+      m_ref += (cs.sub.point[s] - x).cross(fk);
+    }
+    Vec3 f, m;
+    gather_block_force(cs, i, x, f, m);
+    EXPECT_TRUE(same_bits(f, f_ref)) << "block " << i;
+    EXPECT_TRUE(same_bits(m, m_ref)) << "block " << i;
+  }
+}
+
+#ifdef POLYDEM_LANES_AVX2
+
+TEST(GatherLanes, SameBitsAsThePortableSum) {
+  if (!lanes_available()) GTEST_SKIP() << "no AVX2 on this machine: only the portable path runs";
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  constexpr int blocks = 40;
+  ContactSet cs = random_contacts(rng, blocks);
   std::vector<Vec3> centroid(blocks), force(blocks, Vec3::Constant(7.0)), torque(blocks, Vec3::Constant(7.0));
   for (Vec3& x : centroid) x = Vec3(u(rng), u(rng), u(rng)) * 3.0;
   const gather_lanes::GatherArrays a = gather_lane_arrays(cs, centroid, force, torque);

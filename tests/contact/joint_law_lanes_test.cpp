@@ -59,7 +59,7 @@ struct Scene {
 
 // `blocks` blocks at random poses and motions, pairs between neighbours with
 // 1..9 subcontacts each, overlaps of both signs, random stored forces.
-Scene random_scene(std::mt19937_64& rng, int blocks) {
+Scene random_scene(std::mt19937_64& rng, int blocks, double spin = 0.2) {
   Scene s;
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int i = 0; i < blocks; ++i) {
@@ -67,7 +67,7 @@ Scene random_scene(std::mt19937_64& rng, int blocks) {
     s.st.orientation.push_back(random_rotation(rng));
     s.st.rotation.push_back(s.st.orientation.back().toRotationMatrix());
     s.st.velocity.push_back(random_vec(rng, 0.05));
-    s.st.angular_velocity.push_back(random_vec(rng, 0.2));
+    s.st.angular_velocity.push_back(random_vec(rng, spin));
   }
   std::uniform_int_distribution<int> count(1, 9);
   for (int a = 0; a + 1 < blocks; ++a) {
@@ -164,6 +164,36 @@ TEST(JointLawLanes, SameBitsAsThePortableLoopOnEveryBranch) {
   EXPECT_GT(seen.broken, 10);
   EXPECT_GT(seen.slipping, 100);
   EXPECT_GT(seen.sticking, 10);
+}
+
+// Joints turning beyond rotation_matrix's series in a step (|θ|² ≥ 1e-6:
+// blocks spinning at hundreds of rad/s) take the frame's portable
+// expressions on the lanes path too: the same bits, and such pairs occur.
+TEST(JointLawLanes, JointsTurningBeyondTheSeriesGiveTheSameBits) {
+  if (!lanes_available()) GTEST_SKIP() << "no AVX2 on this machine or build";
+  std::mt19937_64 rng(21);
+  JointLaw law;
+  law.kn = 1e10, law.ks = 4e9, law.tan_phi = 0.7, law.beta = 2e-5;
+  const double dt = 1e-5;
+  int beyond = 0, within = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    Scene s = random_scene(rng, 12, trial % 2 == 0 ? 400.0 : 50.0);
+    for (const ContactPair& cp : s.pairs) {
+      const int r = cp.ref_block, c = r == cp.a ? cp.b : cp.a;
+      const Vec3 n = s.st.rotation[r] * s.sub.ref_normal_local[cp.first];
+      const Vec3& wr = s.st.angular_velocity[r];
+      const Vec3 t = dt * (wr + (0.5 * (s.st.angular_velocity[c] - wr).dot(n)) * n);
+      (t.squaredNorm() < 1e-6 ? within : beyond) += 1;
+    }
+    for (const CodePath path : {CodePath::lanes, CodePath::lanes_avx2}) {
+      Subcontacts lanes = s.sub, portable = s.sub;
+      compute_pair_forces(law, s.st, s.pairs, lanes, dt, 0, s.pairs.size(), path);
+      compute_pair_forces(law, s.st, s.pairs, portable, dt, 0, s.pairs.size(), CodePath::portable);
+      expect_same_bits(lanes, portable, trial);
+    }
+  }
+  EXPECT_GT(beyond, 50);
+  EXPECT_GT(within, 10);
 }
 
 // A pair's range split across two calls (two threads' halves) gives the
