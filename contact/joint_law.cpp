@@ -198,10 +198,24 @@ lanes::SubcontactArrays lane_arrays(Subcontacts& sub) {
   return a;
 }
 
-void copy3(const Vec3& v, double* out) {
-  out[0] = v.x();
-  out[1] = v.y();
-  out[2] = v.z();
+
+// rotation_matrix's series branch (a2 = |θ|² < 1e-6) term by term in plain
+// doubles, into R column-major: R(i, j) = R[i + 3j].
+inline void rotation_series(double t0, double t1, double t2, double a2, double* R) {
+  constexpr double k6 = 1.0 / 6.0, k24 = 1.0 / 24.0, k120 = 1.0 / 120.0, k720 = 1.0 / 720.0;
+  const double sn = 1.0 - a2 * k6 + (a2 * a2) * k120;
+  const double cs = 0.5 - a2 * k24 + (a2 * a2) * k720;
+  const double u0 = cs * t0, u1 = cs * t1, u2 = cs * t2;
+  const double diag = 1.0 - cs * a2;
+  R[0] = u0 * t0 + diag;
+  R[4] = u1 * t1 + diag;
+  R[8] = u2 * t2 + diag;
+  R[3] = u0 * t1 - sn * t2;  // (0, 1)
+  R[6] = u0 * t2 + sn * t1;  // (0, 2)
+  R[1] = u1 * t0 + sn * t2;  // (1, 0)
+  R[7] = u1 * t2 - sn * t0;  // (1, 2)
+  R[2] = u2 * t0 - sn * t1;  // (2, 0)
+  R[5] = u2 * t1 + sn * t0;  // (2, 1)
 }
 
 // The lanes' PairFrame of the pair (r reference, c incident, `nl` the
@@ -210,9 +224,9 @@ void copy3(const Vec3& v, double* out) {
 // below (R·v is ((a + b) + c) in rows 0 and 1 and a + (b + c) in row 2, a
 // dot product (x·x′ + y·y′) + z·z′), without Eigen's SSE2 shuffles between
 // the packed and the scalar part of a Vec3, which cost a fifth of a step.
-// False, and the frame unfinished, when the joint turns beyond
-// rotation_matrix's series (the portable expressions then take it).
-[[gnu::always_inline]] inline bool pair_frame(const BlockState& st, int r, int c, const Vec3& nl, double dt,
+// A joint turning beyond rotation_matrix's series takes rotation_matrix
+// itself, with the same θ.
+[[gnu::always_inline]] inline void pair_frame(const BlockState& st, int r, int c, const Vec3& nl, double dt,
                                               lanes::PairFrame& f) {
   const double* Rr = st.rotation[r].data();
   const double* xr = st.position[r].data();
@@ -229,22 +243,12 @@ void copy3(const Vec3& v, double* out) {
   const double h = 0.5 * (((wc[0] - wr[0]) * n0 + (wc[1] - wr[1]) * n1) + (wc[2] - wr[2]) * n2);
   const double t0 = dt * (wr[0] + h * n0), t1 = dt * (wr[1] + h * n1), t2 = dt * (wr[2] + h * n2);
   const double a2 = (t0 * t0 + t1 * t1) + t2 * t2;
-  if (!(a2 < 1e-6)) return false;
-  constexpr double k6 = 1.0 / 6.0, k24 = 1.0 / 24.0, k120 = 1.0 / 120.0, k720 = 1.0 / 720.0;
-  const double sn = 1.0 - a2 * k6 + (a2 * a2) * k120;
-  const double cs = 0.5 - a2 * k24 + (a2 * a2) * k720;
-  const double u0 = cs * t0, u1 = cs * t1, u2 = cs * t2;
-  const double diag = 1.0 - cs * a2;
-  double* R = f.spin;  // column-major: R(i, j) = R[i + 3j]
-  R[0] = u0 * t0 + diag;
-  R[4] = u1 * t1 + diag;
-  R[8] = u2 * t2 + diag;
-  R[3] = u0 * t1 - sn * t2;  // (0, 1)
-  R[6] = u0 * t2 + sn * t1;  // (0, 2)
-  R[1] = u1 * t0 + sn * t2;  // (1, 0)
-  R[7] = u1 * t2 - sn * t0;  // (1, 2)
-  R[2] = u2 * t0 - sn * t1;  // (2, 0)
-  R[5] = u2 * t1 + sn * t0;  // (2, 1)
+  if (a2 < 1e-6) {
+    rotation_series(t0, t1, t2, a2, f.spin);
+  } else {
+    const Mat3 spin = rotation_matrix(Vec3(t0, t1, t2));
+    std::copy(spin.data(), spin.data() + 9, f.spin);
+  }
   f.n[0] = n0;
   f.n[1] = n1;
   f.n[2] = n2;
@@ -258,7 +262,6 @@ void copy3(const Vec3& v, double* out) {
   }
   const double* Rc = st.rotation[c].data();
   for (int i = 0; i < 9; ++i) f.Rc[i] = Rc[i];
-  return true;
 }
 
 // The pair loop; `law_of(r, c)` gives the pair's law (a constant for one law,
@@ -282,11 +285,10 @@ template <bool kLanes, class LawOf>
     const std::size_t s0 = static_cast<std::size_t>(cp.first);
     if constexpr (kLanes) {
       lanes::PairFrame f;
-      if (pair_frame(st, r, c, sub.ref_normal_local[s0], dt, f)) {
-        const lanes::LawConstants k{law.kn, law.ks, law.tan_phi, law.cohesion, law.tensile_strength, law.beta, dt};
-        kernel(f, k, arrays, s0, static_cast<std::size_t>(cp.count));
-        continue;
-      }
+      pair_frame(st, r, c, sub.ref_normal_local[s0], dt, f);
+      const lanes::LawConstants k{law.kn, law.ks, law.tan_phi, law.cohesion, law.tensile_strength, law.beta, dt};
+      kernel(f, k, arrays, s0, static_cast<std::size_t>(cp.count));
+      continue;
     }
     const Vec3 n = st.rotation[r] * sub.ref_normal_local[s0];
     const Vec3& xr = st.position[r];
@@ -298,21 +300,6 @@ template <bool kLanes, class LawOf>
     const Vec3& wr = st.angular_velocity[r];
     const Vec3 xcr = xc - xr;
     const Mat3 spin = joint_spin(wr, wc, n, dt);
-    if constexpr (kLanes) {
-      lanes::PairFrame f;
-      copy3(n, f.n);
-      f.plane = plane;
-      copy3(xc, f.xc);
-      std::copy(Rc.data(), Rc.data() + 9, f.Rc);
-      copy3(dv, f.dv);
-      copy3(wc, f.wc);
-      copy3(wr, f.wr);
-      copy3(xcr, f.xcr);
-      std::copy(spin.data(), spin.data() + 9, f.spin);
-      const lanes::LawConstants k{law.kn, law.ks, law.tan_phi, law.cohesion, law.tensile_strength, law.beta, dt};
-      kernel(f, k, arrays, s0, static_cast<std::size_t>(cp.count));
-      continue;
-    }
     for (std::size_t s = s0; s < s0 + static_cast<std::size_t>(cp.count); ++s) {
       const Vec3 arm_c = Rc * sub.inc_point_local[s];  // p − x_c
       const Vec3 p = xc + arm_c;

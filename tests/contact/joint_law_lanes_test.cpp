@@ -167,8 +167,8 @@ TEST(JointLawLanes, SameBitsAsThePortableLoopOnEveryBranch) {
 }
 
 // Joints turning beyond rotation_matrix's series in a step (|θ|² ≥ 1e-6:
-// blocks spinning at hundreds of rad/s) take the frame's portable
-// expressions on the lanes path too: the same bits, and such pairs occur.
+// blocks spinning at hundreds of rad/s) take rotation_matrix's closed form
+// on the lanes path too: the same bits, and such pairs occur.
 TEST(JointLawLanes, JointsTurningBeyondTheSeriesGiveTheSameBits) {
   if (!lanes_available()) GTEST_SKIP() << "no AVX2 on this machine or build";
   std::mt19937_64 rng(21);
