@@ -49,7 +49,7 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec
       sim_(sim),
       joint_(joint),
       laws_(make_joint_laws(blocks_, joint, joint_pairs)),
-      step_joint_(laws_.single() ? joint : stiffest_joint(laws_)),
+      step_joint_(stiffest_joint(laws_)),
       motion_(std::move(motion)),
       detector_(blocks_, margin),
       bond_initial_(laws_.any_bonds()),
@@ -472,7 +472,8 @@ void Simulation::end_static_stage() {
   last_good_ = st;
   last_good_time_ = 0;
   last_good_step_ = 0;
-  profile_ = StepProfile{};
+  // The profile counts the run's own steps; the threads it was given stay.
+  profile_ = StepProfile{.threads_given = profile_.threads_given};
 }
 
 void Simulation::move_kinematic_blocks() {

@@ -259,5 +259,26 @@ TEST(ThreadGovernor, SwitchingThreadsChangesNoBits) {
   EXPECT_GT(fastest, 1e-3) << "the wall must move";
 }
 
+// The profile's count of the threads OpenMP gave the run (summary.json
+// profile.threads.given) survives the static stage: the dynamic stage
+// restarts the profile's times, not what the run was given.
+TEST(ThreadGovernor, TheThreadsGivenSurviveTheStaticStage) {
+  const std::string deck =
+      "[simulation]\nend_time = 0.01\n[joint]\nnormal_stiffness = 1e9\n[[block]]\nname = \"base\"\n"
+      "shape = \"box\"\nsize = [2, 2, 0.5]\ncenter = [0, 0, -0.25]\nmotion = \"fixed\"\n[[block]]\n"
+      "shape = \"box\"\nsize = [0.3, 0.3, 0.2]\ncenter = [0, 0, 0.1]\n";
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(2);
+  RunSetup setup;
+  auto sim = build_simulation(parse_deck(deck, "block.toml"), setup);
+  omp_set_num_threads(before);
+  EXPECT_EQ(sim->profile().threads_given, 2);
+  sim->begin_static_stage(0.8);
+  for (int n = 0; n < 10; ++n) sim->step();
+  sim->end_static_stage();
+  EXPECT_EQ(sim->profile().steps, 0);
+  EXPECT_EQ(sim->profile().threads_given, 2);
+}
+
 }  // namespace
 }  // namespace polydem
