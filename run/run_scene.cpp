@@ -206,7 +206,10 @@ struct SceneRun::Loop {
 
 SceneRun::SceneRun(const SceneSpec& spec, const RunControl& control) : spec_(spec), control_(control) {
   const auto wall_start = Clock::now();
-  if (control_.threads > 0) omp_set_num_threads(control_.threads);
+  // Threads: the caller's (the command line's --threads), else the deck's
+  // simulation.threads, else OpenMP's default (OMP_NUM_THREADS or the cores).
+  const int threads = control_.threads > 0 ? control_.threads : spec_.simulation.threads;
+  if (threads > 0) omp_set_num_threads(threads);
   RunReport& rep = report_;
 
   // 1. Setup.

@@ -108,7 +108,7 @@ struct RunReport {
 };
 
 struct RunControl {
-  int threads = 0;  // 0: OpenMP default
+  int threads = 0;  // 0: the deck's simulation.threads (0 there: OpenMP's default)
   std::size_t parallel_threshold = 2048;  // see Simulation::set_parallel_threshold
   CodePath code_path = CodePath::automatic;  // see Simulation::set_code_path
   // Called every `progress_every` steps (for progress output); may be empty.
