@@ -137,6 +137,92 @@ bool ContactDetector::travels_clearly_below(const Blocks& b, const Vec3& c, bool
   return u1 + u2 < threshold * (1.0 - 1e-6);
 }
 
+namespace {
+
+double l1(const Vec3& v) { return std::abs(v.x()) + std::abs(v.y()) + std::abs(v.z()); }
+
+void keep_two_largest(double u, double& u1, double& u2) {
+  if (u > u1) {
+    u2 = u1;
+    u1 = u;
+  } else if (u > u2) {
+    u2 = u;
+  }
+}
+
+// Block i's part of the bound (a block that is not fixed): its translation
+// since the detection into the box, and the 1-norm bound of its travel from
+// `ref` (as travels_clearly_below, from ref instead of the drift).
+inline void add_travel(const Blocks& b, const Vec3& p0, const Quat& q0, int i, const Vec3& ref, double dt,
+                       TravelBound& t) {
+  const Vec3 d = b.state.position[i] - p0;
+  t.lo = t.lo.cwiseMin(d);
+  t.hi = t.hi.cwiseMax(d);
+  const Quat& q = b.state.orientation[i];
+  const double minus = std::abs(q.x() - q0.x()) + std::abs(q.y() - q0.y()) + std::abs(q.z() - q0.z()) +
+                       std::abs(q.w() - q0.w());
+  const double plus = std::abs(q.x() + q0.x()) + std::abs(q.y() + q0.y()) + std::abs(q.z() + q0.z()) +
+                      std::abs(q.w() + q0.w());
+  const double radius = b.props.radius[i];
+  const double u = l1(d - ref) + 2.0 * std::min(minus, plus) * radius +
+                   dt * (l1(b.state.velocity[i]) + l1(b.state.angular_velocity[i]) * radius);
+  if (!(u <= std::numeric_limits<double>::max())) t.finite = false;  // NaN or infinite
+  keep_two_largest(u, t.u1, t.u2);
+}
+
+}  // namespace
+
+void merge(TravelBound& into, const TravelBound& from) {
+  into.lo = into.lo.cwiseMin(from.lo);
+  into.hi = into.hi.cwiseMax(from.hi);
+  keep_two_largest(from.u1, into.u1, into.u2);
+  keep_two_largest(from.u2, into.u1, into.u2);
+  into.any_fixed = into.any_fixed || from.any_fixed;
+  into.finite = into.finite && from.finite;
+}
+
+void ContactDetector::add_travels(const Blocks& b, int begin, int end, const Vec3& ref, double dt,
+                                  TravelBound& t) const {
+  const auto& im = *impl_;
+  const auto& motion = b.props.motion;
+  for (int i = begin; i < end; ++i) {
+    if (motion[i] == BlockMotion::fixed) {
+      t.any_fixed = true;
+      continue;
+    }
+    if (motion[i] == BlockMotion::kinematic) continue;  // moved after the step's threads: add_travels(list)
+    add_travel(b, im.detected_position[i], im.detected_orientation[i], i, ref, dt, t);
+  }
+}
+
+void ContactDetector::add_travels(const Blocks& b, const std::vector<int>& list, const Vec3& ref, double dt,
+                                  TravelBound& t) const {
+  const auto& im = *impl_;
+  for (int i : list) add_travel(b, im.detected_position[i], im.detected_orientation[i], i, ref, dt, t);
+}
+
+// The test's sum is r₁ + r₂ over r_i = |d_i − c| + turn_i + ahead_i (and |c|
+// for the fixed blocks); each is at most the bound from ref plus
+// δ = |c − ref|₁, so r₁ + r₂ ≤ u₁ + u₂ + 2δ. The relative 1e-6 is the
+// round-off margin of travels_clearly_below.
+bool ContactDetector::clearly_no_detection(const TravelBound& t, const Vec3& ref, Vec3& drift) const {
+  drift = ref;
+  if (!t.finite) return false;
+  Vec3 lo = t.lo, hi = t.hi;
+  if (t.any_fixed) {
+    lo = lo.cwiseMin(Vec3::Zero());
+    hi = hi.cwiseMax(Vec3::Zero());
+  }
+  if (!(lo.x() <= hi.x())) return true;  // no block: nothing can close (needs_detection: false)
+  const Vec3 c = 0.5 * (lo + hi);
+  const double delta = l1(c - ref);
+  if (!(delta <= std::numeric_limits<double>::max())) return false;
+  drift = c;
+  double u1 = t.u1, u2 = t.u2;
+  if (t.any_fixed) keep_two_largest(l1(ref), u1, u2);
+  return u1 + u2 + 2.0 * delta < 0.5 * margin_ * (1.0 - 1e-6);
+}
+
 DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bool bond_new, const JointLaws& laws) {
   auto& im = *impl_;
   DetectionTimes times;

@@ -29,7 +29,9 @@
 #include "contact/subcontacts.hpp"
 #include "core/blocks.hpp"
 
+#include <limits>
 #include <memory>
+#include <vector>
 
 namespace polydem {
 
@@ -41,6 +43,24 @@ struct DetectionTimes {
   double subcontacts = 0;  // assembly and history carry-over
   double gather = 0;
 };
+
+// The half-margin test's bound, gathered block by block where the step
+// already holds each block (Simulation::step: each thread over the blocks
+// it has just moved), instead of two serial passes over all the blocks at
+// the next step's start. Travels are measured from a reference `ref` chosen
+// before they are added (the last step's common drift, which moves little);
+// clearly_no_detection() then bounds the test's own sum, taken from the
+// drift c of this step's translations, by |d − c| ≤ |d − ref|₁ + |c − ref|₁
+// for every travel (the fixed blocks' |c| likewise). When it answers true,
+// needs_detection() answers false: the same decisions, the same runs.
+struct TravelBound {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());  // translations since the detection
+  Vec3 hi = -Vec3::Constant(std::numeric_limits<double>::infinity());
+  double u1 = 0, u2 = 0;   // the two largest travel bounds from ref (1-norms)
+  bool any_fixed = false;  // a fixed block: no translation, lo ≤ 0 ≤ hi
+  bool finite = true;      // false: a bound was NaN or infinite
+};
+void merge(TravelBound& into, const TravelBound& from);
 
 class ContactDetector {
  public:
@@ -59,6 +79,15 @@ class ContactDetector {
   // `bound_first`: a cheap bound settles the clear cases (the same answer;
   // false only for tests comparing the two).
   bool needs_detection(const Blocks& blocks, double dt = 0, bool bound_first = true) const;
+  // The test's bound block by block (TravelBound above): blocks [begin, end)
+  // but the kinematic ones, or the blocks of `list`, added into `t`, their
+  // travels from `ref` with the coming step `dt`.
+  void add_travels(const Blocks& blocks, int begin, int end, const Vec3& ref, double dt, TravelBound& t) const;
+  void add_travels(const Blocks& blocks, const std::vector<int>& list, const Vec3& ref, double dt,
+                   TravelBound& t) const;
+  // True only when needs_detection(blocks, dt) would answer false, from the
+  // bound `t` of every block taken from `ref`; `drift` gets this step's c.
+  bool clearly_no_detection(const TravelBound& t, const Vec3& ref, Vec3& drift) const;
   // Rebuilds `contacts` for the current state, carrying history over by
   // position (carry_history). The joint law's stiffnesses price what the
   // re-sampling changes at the same pose: the shear it cannot carry

@@ -20,6 +20,14 @@ double seconds(Clock::time_point from, Clock::time_point to) {
   return std::chrono::duration<double>(to - from).count();
 }
 
+// Thread t's share of n items among nt threads: one contiguous range each.
+template <class I>
+std::pair<I, I> thread_range(I n, I nt, I t) {
+  const I chunk = (n + nt - 1) / nt;
+  const I begin = std::min(n, t * chunk);
+  return {begin, std::min(n, begin + chunk)};
+}
+
 // Rotation by the rotation vector w (the exponential map). A step turns a
 // block by far less than 1e-3 rad, where the fourth-order series is exact to
 // round-off and avoids sin/cos; larger turns take the closed form.
@@ -58,6 +66,7 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec
       dt_prev_(dt),
       loads_(std::move(loads)) {
   governor_ = make_thread_governor(omp_get_max_threads(), sim.adaptive_threads);
+  travel_parts_.resize(static_cast<std::size_t>(std::max(1, omp_get_max_threads())));
   profile_.threads_given = omp_get_max_threads();
   const int n = blocks_.count;
   if (!loads_.loads.empty()) {
@@ -176,7 +185,11 @@ void Simulation::step() {
   last_threads_ = threads;
   detector_.set_threads(threads);
   double patch = 0;
-  if (detector_.needs_detection(blocks_, dt_)) patch = detect_contacts().patch;
+  // The half-margin test: settled at the last step's end where its bound
+  // was clear (the same answer, block by block in the threads), else here.
+  const bool known_clear = travel_clear_ && travel_dt_ == dt_;
+  travel_clear_ = false;
+  if (!known_clear && detector_.needs_detection(blocks_, dt_)) patch = detect_contacts().patch;
   const Clock::time_point t1 = Clock::now();
   Clock::time_point t2 = t1;  // the joint law's end, read by the master thread
   const bool parallel = threads > 1 && large_enough_for_threads();
@@ -184,15 +197,29 @@ void Simulation::step() {
   // acceleration (GroundMotion::extra) is called once per step, on this thread.
   const StepLoads loads = step_loads();
   if (!loaded_.empty() && !static_stage_) compute_point_loads(time_);
+  int region_threads = 1;
+  if (travel_parts_.size() < static_cast<std::size_t>(threads)) travel_parts_.resize(static_cast<std::size_t>(threads));
 #pragma omp parallel if (parallel) num_threads(threads)
   {
     compute_joint_forces_parallel();
 #pragma omp barrier
+    const int nt = omp_get_num_threads(), t = omp_get_thread_num();
 #pragma omp master
-    t2 = Clock::now();
-    gather_and_advance(loads);
+    {
+      t2 = Clock::now();
+      region_threads = nt;
+    }
+    const auto [begin, end] = thread_range(blocks_.count, nt, t);
+    gather_and_advance(loads, begin, end);
+    // The next step's half-margin test, this thread's part: over the blocks
+    // it has just moved, while it holds them (no second pass over every
+    // block, on one thread, at the next step's start).
+    TravelBound& part = travel_parts_[static_cast<std::size_t>(t)].bound;
+    part = TravelBound{};
+    detector_.add_travels(blocks_, begin, end, travel_ref_, dt_, part);
   }
   move_kinematic_blocks();
+  settle_travel_test(region_threads);
   time_ += dt_;
   dt_prev_ = dt_;
   ++steps_;
@@ -210,14 +237,25 @@ void Simulation::step() {
   }
 }
 
+// The threads' parts of the half-margin test in thread order, the
+// kinematic blocks (moved after the threads) added; clear only when the
+// test itself would answer no (ContactDetector::clearly_no_detection).
+void Simulation::settle_travel_test(int threads) {
+  TravelBound all = travel_parts_[0].bound;
+  for (int t = 1; t < threads; ++t) merge(all, travel_parts_[static_cast<std::size_t>(t)].bound);
+  if (!blocks_.kinematic_blocks.empty())
+    detector_.add_travels(blocks_, blocks_.kinematic_blocks, travel_ref_, dt_, all);
+  Vec3 drift;
+  travel_clear_ = detector_.clearly_no_detection(all, travel_ref_, drift);
+  travel_ref_ = drift;
+  travel_dt_ = dt_;
+}
+
 void Simulation::compute_joint_forces_parallel() {
   // Called inside the step's parallel region: each thread takes one
   // contiguous range of pairs (a static partition).
-  const std::size_t n = contacts_.pairs.size();
-  const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
-  const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
-  const std::size_t chunk = (n + nt - 1) / nt;
-  const std::size_t begin = std::min(n, t * chunk), end = std::min(n, begin + chunk);
+  const auto [begin, end] = thread_range(contacts_.pairs.size(), static_cast<std::size_t>(omp_get_num_threads()),
+                                         static_cast<std::size_t>(omp_get_thread_num()));
   compute_pair_forces(laws_, blocks_.state, contacts_.pairs, contacts_.sub, dt_, begin, end, code_path_);
 }
 
@@ -321,14 +359,13 @@ Simulation::StepLoads Simulation::step_loads() const {
   return loads;
 }
 
-// Gather and update fused in one loop over the blocks: a block's update
-// needs only its own gathered force, so one barrier less per step.
-void Simulation::gather_and_advance(const StepLoads& loads) {
-  const int n = blocks_.count;
+// Gather and update fused in one loop over the blocks [begin, end) of the
+// calling thread: a block's update needs only its own gathered force, so
+// one barrier less per step (the region's end is the barrier).
+void Simulation::gather_and_advance(const StepLoads& loads, int begin, int end) {
   const auto& motion = blocks_.props.motion;
   if (local_damping_ > 0) {
-#pragma omp for schedule(static)
-    for (int i = 0; i < n; ++i) {
+    for (int i = begin; i < end; ++i) {
       gather_block(i);
       if (motion[i] == BlockMotion::free) advance_block<true>(i, loads);
     }
@@ -351,8 +388,7 @@ void Simulation::gather_and_advance(const StepLoads& loads) {
     const bool any_loaded = !loaded_.empty() && !static_stage_;
     int four[4];
     int waiting = 0;
-#pragma omp for schedule(static) nowait
-    for (int i = 0; i < n; ++i) {
+    for (int i = begin; i < end; ++i) {
       gather_block(i);
       if (motion[i] != BlockMotion::free) continue;
       if (any_loaded && loaded_[i]) {
@@ -366,11 +402,10 @@ void Simulation::gather_and_advance(const StepLoads& loads) {
         for (int b : four) advance_block<false>(b, loads);
     }
     for (int w = 0; w < waiting; ++w) advance_block<false>(four[w], loads);
-    return;  // the region's end is the barrier
+    return;
   }
 #endif
-#pragma omp for schedule(static)
-  for (int i = 0; i < n; ++i) {
+  for (int i = begin; i < end; ++i) {
     gather_block(i);
     if (motion[i] == BlockMotion::free) advance_block<false>(i, loads);
   }
@@ -407,6 +442,7 @@ void Simulation::begin_static_stage(double local_damping) { begin_static_stage(l
 
 void Simulation::begin_static_stage(double local_damping, const Vec3& load, bool density_scaling) {
   static_stage_ = true;
+  travel_clear_ = false;
   local_damping_ = local_damping;
   static_load_ = load;
   scaled_inv_mass_.clear();
@@ -440,6 +476,7 @@ void Simulation::begin_static_stage(double local_damping, const Vec3& load, bool
 
 void Simulation::end_static_stage() {
   static_stage_ = false;
+  travel_clear_ = false;
   local_damping_ = 0;
   scaled_inv_mass_.clear();
   scaled_inv_inertia_.clear();
@@ -670,6 +707,7 @@ void Simulation::save_state(ByteWriter& w) const {
 }
 
 void Simulation::load_state(ByteReader& r) {
+  travel_clear_ = false;  // the test runs in full at the first step after
   std::int32_t count = 0;
   r.get(count);
   if (count != blocks_.count)

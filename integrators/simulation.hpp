@@ -2,10 +2,13 @@
 //
 //   step():
 //     1. detect contacts, only if some pair may have closed half the margin
+//        (settled at the last step's end where the threads' bound is clear)
 //     2. joint law: one force slot per subcontact          (parallel)
 //     3. gather: each block sums its slots in fixed order   (parallel)
 //     4. central differences for free blocks                (parallel)
-//     5. kinematic base blocks follow the ground velocity
+//        and each thread's part of the next step's test     (parallel)
+//     5. kinematic base blocks follow the ground velocity; the test's
+//        parts merged (contact/detection.hpp TravelBound)
 //     6. every 256 steps, the guard checks the state
 // Each stage is timed into the StepProfile (a few clock reads per step).
 //
@@ -223,7 +226,8 @@ class Simulation {
     bool rising;        // g(t) ≠ g: count m·(g(t) − g) as load work
   };
   StepLoads step_loads() const;
-  void gather_and_advance(const StepLoads& loads);
+  void gather_and_advance(const StepLoads& loads, int begin, int end);
+  void settle_travel_test(int threads);
   block_lanes::BlockArrays block_lane_arrays();
   template <bool kLocalDamping>
   void advance_block(int i, const StepLoads& loads);
@@ -246,6 +250,17 @@ class Simulation {
   CodePath code_path_ = CodePath::automatic;
   ThreadGovernor governor_;
   int last_threads_ = 0;  // threads of the last step (0: none yet)
+  // The half-margin test gathered by the step's threads (contact/
+  // detection.hpp TravelBound): each thread's part in its own cache line;
+  // travel_clear_ when the last step's end settled the next step's test
+  // (for a step of travel_dt_), travel_ref_ the drift travels are taken from.
+  struct alignas(64) TravelPart {
+    TravelBound bound;
+  };
+  std::vector<TravelPart> travel_parts_;
+  Vec3 travel_ref_ = Vec3::Zero();
+  bool travel_clear_ = false;
+  double travel_dt_ = 0;
   double dt_;
   double dt_prev_;  // the step before: leapfrog with a changing step
   int dt_reductions_ = 0;

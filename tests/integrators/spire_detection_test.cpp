@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <random>
 #include <string>
 
@@ -130,6 +131,137 @@ TEST(DetectionCheck, TheBoundNeverChangesTheAnswer) {
   EXPECT_GT(yes, 50);
   EXPECT_GT(no, 50);
   EXPECT_GT(tight_yes, 5);
+}
+
+// The test's bound gathered block by block (TravelBound: ranges of blocks as
+// the step's threads take them, kinematic blocks from a list, merged) never
+// settles a step the exact test would detect at: the same random states as
+// above, the travels taken from references near and far from the drift
+// (the last step's, zero, 3 mm off). It settles most of the clear steps
+// (each check in the step would otherwise run the exact test).
+TEST(DetectionCheck, TheThreadsBoundNeverSettlesAStepTheTestWouldDetectAt) {
+  const SceneSpec spec = read_deck(std::string(POLYDEM_SOURCE_DIR) + "/examples/spire/earthquake.toml");
+  Blocks start = build_blocks(spec.blocks);
+  const double margin = 0.005;
+  ContactDetector det(start, margin);
+  ContactSet contacts;
+  det.detect(start, contacts, false, JointLaws(make_joint_law(spec.joint)));
+  std::vector<int> kinematic;
+  for (int i = 5; i < start.count; i += 61) {
+    if (start.props.motion[i] != BlockMotion::free) continue;
+    start.props.motion[i] = BlockMotion::kinematic;  // as a prescribed block: moved after the threads
+    kinematic.push_back(i);
+  }
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int yes = 0, no = 0, settled = 0;
+  Vec3 last_drift = Vec3::Zero();
+  for (int trial = 0; trial < 600; ++trial) {
+    Blocks b = start;
+    const double scale = margin * std::pow(10.0, -3.0 + 3.5 * (trial % 40) / 40.0);
+    const bool few = trial % 3 == 0;
+    const bool tight = trial % 5 == 1;  // a few blocks along x: the bound is the travel itself
+    const Vec3 common = trial % 7 == 2 ? Vec3(2e-3 * u(rng), 2e-3 * u(rng), 0) : Vec3::Zero();
+    for (int i = 0; i < b.count; ++i) {
+      if (b.props.motion[i] == BlockMotion::fixed) continue;
+      b.state.position[i] += common;
+      if ((few || tight) && i % 97 != 0 && i % 61 != 5) continue;
+      if (tight) {
+        b.state.position[i].x() += scale * u(rng);
+        continue;
+      }
+      b.state.position[i] += scale * Vec3(u(rng), u(rng), u(rng));
+      const Vec3 turn = (scale / b.props.radius[i]) * Vec3(u(rng), u(rng), u(rng));
+      b.state.orientation[i] =
+          (Quat(Eigen::AngleAxisd(turn.norm(), turn.normalized())) * b.state.orientation[i]).normalized();
+      if (trial % 2) b.state.orientation[i].coeffs() *= -1.0;
+      b.state.velocity[i] = (scale / 1e-4) * Vec3(u(rng), u(rng), u(rng));
+      b.state.angular_velocity[i] = (scale / 1e-4 / b.props.radius[i]) * Vec3(u(rng), u(rng), u(rng));
+    }
+    const double dt = trial % 4 == 0 || tight ? 0.0 : 1e-5;
+    const bool exact = det.needs_detection(b, dt, false);
+    (exact ? yes : no) += 1;
+    const Vec3 refs[] = {last_drift, Vec3::Zero(), last_drift + Vec3(3e-3, -3e-3, 1e-3)};
+    for (const Vec3& ref : refs) {
+      const int parts = 1 + trial % 3;  // one, two or three threads' ranges
+      TravelBound all;
+      for (int t = 0; t < parts; ++t) {
+        TravelBound part;
+        const int chunk = (b.count + parts - 1) / parts;
+        const int begin = std::min(b.count, t * chunk), end = std::min(b.count, begin + chunk);
+        det.add_travels(b, begin, end, ref, dt, part);
+        merge(all, part);
+      }
+      det.add_travels(b, kinematic, ref, dt, all);
+      Vec3 drift;
+      const bool clear = det.clearly_no_detection(all, ref, drift);
+      EXPECT_FALSE(clear && exact) << "trial " << trial << ", ref " << ref.transpose();
+      if (&ref == &refs[0]) {
+        if (clear) ++settled;
+        last_drift = drift;
+      }
+    }
+  }
+  EXPECT_GT(yes, 100);
+  EXPECT_GT(no, 100);
+  EXPECT_GT(settled, no / 2) << "the bound from the last drift settles most clear steps";
+  std::cout << "exact test: " << yes << " detect, " << no << " clear; the threads' bound settled " << settled
+            << "\n";
+}
+
+// Where the threads' bound needs each of its terms: travels that the drift c
+// of the whole box brings closer together than the reference does. (a) Three
+// spire stones moved by a along +x, +y and −x: c = (0, a/2, 0) and the test's
+// sum is 2·√(5/4)·a ≈ 2.24a; from ref = 0 the 1-norms alone give 2a, from
+// ref = c the plain displacements 2a too, so a bound without the 2|c − ref|₁
+// slack, or taken from the displacements instead of from ref, settles a step
+// at 2.1a = the threshold that the test detects at. (b) One block on a fixed
+// base moved by a: the test counts the fixed base's |c| = a/2 beside the
+// block's a/2; without the fixed blocks' term the bound is a/2.
+TEST(DetectionCheck, TheThreadsBoundKeepsEveryTerm) {
+  const SceneSpec spec = read_deck(std::string(POLYDEM_SOURCE_DIR) + "/examples/spire/earthquake.toml");
+  const Blocks start = build_blocks(spec.blocks);
+  const double margin = 0.005, threshold = 0.5 * margin;
+  ContactDetector det(start, margin);
+  ContactSet contacts;
+  det.detect(start, contacts, false, JointLaws(make_joint_law(spec.joint)));
+  auto settled = [&](const Blocks& b, const Vec3& ref) {
+    TravelBound t;
+    det.add_travels(b, 0, b.count, ref, 0.0, t);
+    Vec3 drift;
+    return det.clearly_no_detection(t, ref, drift);
+  };
+  for (const double a : {threshold / 2.1, 0.3 * threshold / 2.24}) {
+    Blocks b = start;
+    const int i = b.free_blocks[40], j = b.free_blocks[200], k = b.free_blocks[300];
+    b.state.position[i].x() += a;
+    b.state.position[j].y() += a;
+    b.state.position[k].x() -= a;
+    const bool exact = det.needs_detection(b, 0.0, false);
+    EXPECT_EQ(exact, a > 0.5 * threshold / 2.1) << a;
+    for (const Vec3& ref : {Vec3(Vec3::Zero()), Vec3(0, 0.5 * a, 0)})
+      EXPECT_EQ(settled(b, ref), !exact) << "a " << a << ", ref " << ref.transpose();
+  }
+  const std::string deck =
+      "[simulation]\nend_time = 0.01\n[joint]\nnormal_stiffness = 1e9\n[[block]]\nname = \"base\"\n"
+      "shape = \"box\"\nsize = [2, 2, 0.5]\ncenter = [0, 0, -0.25]\nmotion = \"fixed\"\n[[block]]\n"
+      "shape = \"box\"\nsize = [0.3, 0.3, 0.2]\ncenter = [0, 0, 0.1]\n";
+  const SceneSpec one = parse_deck(deck, "block.toml");
+  const Blocks pair = build_blocks(one.blocks);
+  ContactDetector det2(pair, margin);
+  ContactSet c2;
+  det2.detect(pair, c2, false, JointLaws(make_joint_law(one.joint)));
+  for (const double a : {1.5 * threshold, 0.3 * threshold}) {
+    Blocks b = pair;
+    b.state.position[1].x() += a;
+    const bool exact = det2.needs_detection(b, 0.0, false);
+    EXPECT_EQ(exact, a > threshold) << a;
+    TravelBound t;
+    det2.add_travels(b, 0, b.count, Vec3(0.5 * a, 0, 0), 0.0, t);
+    Vec3 drift;
+    EXPECT_EQ(det2.clearly_no_detection(t, Vec3(0.5 * a, 0, 0), drift), !exact) << a;
+    EXPECT_EQ(drift, Vec3(0.5 * a, 0, 0));
+  }
 }
 
 }  // namespace
