@@ -209,7 +209,7 @@ void Simulation::step() {
       t2 = Clock::now();
       region_threads = nt;
     }
-    const auto [begin, end] = thread_range(blocks_.count, nt, t);
+    const int begin = block_split(nt, t), end = block_split(nt, t + 1);
     gather_and_advance(loads, begin, end);
     // The next step's half-margin test, this thread's part: over the blocks
     // it has just moved, while it holds them (no second pass over every
@@ -249,6 +249,18 @@ void Simulation::settle_travel_test(int threads) {
   travel_clear_ = detector_.clearly_no_detection(all, travel_ref_, drift);
   travel_ref_ = drift;
   travel_dt_ = dt_;
+}
+
+// Where thread t's blocks start (t = nt: the end): at the first block of
+// its pairs (the pairs are in block order, ContactPair::a), so that the
+// blocks a thread gathers and moves are, but for the joints across the
+// split, those whose joint forces it has just computed.
+int Simulation::block_split(int nt, int t) const {
+  if (t <= 0) return 0;
+  if (t >= nt) return blocks_.count;
+  const std::size_t np = contacts_.pairs.size();
+  const std::size_t first = thread_range(np, static_cast<std::size_t>(nt), static_cast<std::size_t>(t)).first;
+  return first < np ? contacts_.pairs[first].a : blocks_.count;
 }
 
 void Simulation::compute_joint_forces_parallel() {

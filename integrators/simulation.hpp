@@ -228,6 +228,7 @@ class Simulation {
   StepLoads step_loads() const;
   void gather_and_advance(const StepLoads& loads, int begin, int end);
   void settle_travel_test(int threads);
+  int block_split(int nt, int t) const;
   block_lanes::BlockArrays block_lane_arrays();
   template <bool kLocalDamping>
   void advance_block(int i, const StepLoads& loads);
