@@ -39,7 +39,10 @@
 // wall-time wait has (steps of 25 ms must not wait 16,384 of them). When a
 // probe confirms the choice, the wait doubles (up to `longest_interval`
 // steps and `longest_wait` seconds), when it changes it the wait starts
-// short again (1 s), so a competitor that comes or goes is noticed within
+// short again (1 s), and after the run's first probe too, whichever it
+// keeps (its all-threads side meets the erratic start above and, kept to
+// one thread by it, a whole short run stayed there: 1 in 40 of the
+// spire's 0.3 s runs on this VM), so a competitor that comes or goes is noticed within
 // seconds to half a minute while a quiet run probes a few times an hour.
 //
 // Between probes it watches the steps on all threads for stalls, since a
