@@ -20,7 +20,8 @@ int main(int argc, char** argv) {
   run_cmd->add_option("deck", run.deck_path, "Deck file (TOML)");
   run_cmd->add_flag("--default", run.use_default, "Run the built-in default deck (the main job)");
   auto* run_out = run_cmd->add_option("--out", run.out_dir, "Output directory")->capture_default_str();
-  run_cmd->add_option("--threads", run.threads, "OpenMP threads (0: the deck's simulation.threads, else OMP_NUM_THREADS or all cores)");
+  run_cmd->add_option("--threads", run.threads,
+                      "OpenMP threads (0: the deck's simulation.threads, else OMP_NUM_THREADS or all cores)");
   run_cmd->add_option("--set", run.overrides, "Override a deck key: section.key=value (repeatable)");
   run_cmd->add_flag("--quiet", run.quiet, "No progress or report on stderr");
   run_cmd->add_option("--restart", run.restart_dir,

@@ -10,7 +10,6 @@
 #include "run/run_scene.hpp"
 
 #include <fmt/core.h>
-#include <omp.h>
 
 #include <chrono>
 #include <cstdlib>
@@ -135,7 +134,7 @@ int run_command(const RunOptions& o) {
   if (!o.quiet && isatty(STDERR_FILENO)) std::cerr << "\n";
   if (snapshots) snapshots->finish();
 
-  write_run_outputs(out_dir, spec, report, omp_get_max_threads());
+  write_run_outputs(out_dir, spec, report, report.profile.threads_given);
   if (report.unstable) {
     std::cerr << "\npolydem: stopped: " << report.instability << "\npolydem: last good state in " << out_dir
               << "/last_good_state.vtu, results so far in " << out_dir << "/summary.json and results.h5\n";

@@ -37,6 +37,17 @@ double seconds(Clock::time_point from, Clock::time_point to) {
   return std::chrono::duration<double>(to - from).count();
 }
 
+double l1(const Vec3& v) { return std::abs(v.x()) + std::abs(v.y()) + std::abs(v.z()); }
+
+void keep_two_largest(double u, double& u1, double& u2) {
+  if (u > u1) {
+    u2 = u1;
+    u1 = u;
+  } else if (u > u2) {
+    u2 = u;
+  }
+}
+
 PosedBlock posed(const Blocks& b, int i) {
   return {&b.props.local_shape[i], b.state.rotation[i], b.state.position[i], b.props.size[i]};
 }
@@ -90,12 +101,7 @@ bool ContactDetector::needs_detection(const Blocks& b, double dt, bool bound_fir
     const double ahead =
         dt * (b.state.velocity[i].norm() + b.state.angular_velocity[i].norm() * b.props.radius[i]);
     const double r = (b.state.position[i] - im.detected_position[i] - c).norm() + turn + ahead;
-    if (r > r1) {
-      r2 = r1;
-      r1 = r;
-    } else if (r > r2) {
-      r2 = r;
-    }
+    keep_two_largest(r, r1, r2);
   }
   return r1 + r2 > threshold;
 }
@@ -112,7 +118,6 @@ bool ContactDetector::travels_clearly_below(const Blocks& b, const Vec3& c, bool
                                             double threshold) const {
   const auto& im = *impl_;
   const auto& motion = b.props.motion;
-  auto l1 = [](const Vec3& v) { return std::abs(v.x()) + std::abs(v.y()) + std::abs(v.z()); };
   double u1 = any_fixed ? l1(c) : 0.0, u2 = 0;
   for (int i = 0; i < b.count; ++i) {
     if (motion[i] == BlockMotion::fixed) continue;
@@ -127,28 +132,12 @@ bool ContactDetector::travels_clearly_below(const Blocks& b, const Vec3& c, bool
                      2.0 * std::min(minus, plus) * radius +
                      dt * (l1(b.state.velocity[i]) + l1(b.state.angular_velocity[i]) * radius);
     if (!(u <= std::numeric_limits<double>::max())) return false;  // NaN or infinite: the exact test decides
-    if (u > u1) {
-      u2 = u1;
-      u1 = u;
-    } else if (u > u2) {
-      u2 = u;
-    }
+    keep_two_largest(u, u1, u2);
   }
   return u1 + u2 < threshold * (1.0 - 1e-6);
 }
 
 namespace {
-
-double l1(const Vec3& v) { return std::abs(v.x()) + std::abs(v.y()) + std::abs(v.z()); }
-
-void keep_two_largest(double u, double& u1, double& u2) {
-  if (u > u1) {
-    u2 = u1;
-    u1 = u;
-  } else if (u > u2) {
-    u2 = u;
-  }
-}
 
 // Block i's part of the bound (a block that is not fixed): its translation
 // since the detection into the box, and the 1-norm bound of its travel from
@@ -172,7 +161,7 @@ inline void add_travel(const Blocks& b, const Vec3& p0, const Quat& q0, int i, c
 
 }  // namespace
 
-void merge(TravelBound& into, const TravelBound& from) {
+void merge_travels(TravelBound& into, const TravelBound& from) {
   into.lo = into.lo.cwiseMin(from.lo);
   into.hi = into.hi.cwiseMax(from.hi);
   keep_two_largest(from.u1, into.u1, into.u2);

@@ -60,7 +60,7 @@ struct TravelBound {
   bool any_fixed = false;  // a fixed block: no translation, lo ≤ 0 ≤ hi
   bool finite = true;      // false: a bound was NaN or infinite
 };
-void merge(TravelBound& into, const TravelBound& from);
+void merge_travels(TravelBound& into, const TravelBound& from);
 
 class ContactDetector {
  public:

@@ -2,6 +2,7 @@
 
 #include "contact/gather.hpp"
 #include "core/loads.hpp"
+#include "integrators/thread_split.hpp"
 
 #include <omp.h>
 
@@ -20,13 +21,6 @@ double seconds(Clock::time_point from, Clock::time_point to) {
   return std::chrono::duration<double>(to - from).count();
 }
 
-// Thread t's share of n items among nt threads: one contiguous range each.
-template <class I>
-std::pair<I, I> thread_range(I n, I nt, I t) {
-  const I chunk = (n + nt - 1) / nt;
-  const I begin = std::min(n, t * chunk);
-  return {begin, std::min(n, begin + chunk)};
-}
 
 // Rotation by the rotation vector w (the exponential map). A step turns a
 // block by far less than 1e-3 rad, where the fourth-order series is exact to
@@ -209,7 +203,8 @@ void Simulation::step() {
       t2 = Clock::now();
       region_threads = nt;
     }
-    const int begin = block_split(nt, t), end = block_split(nt, t + 1);
+    const int begin = block_split(contacts_.pairs, blocks_.count, nt, t);  // thread_split.hpp
+    const int end = block_split(contacts_.pairs, blocks_.count, nt, t + 1);
     gather_and_advance(loads, begin, end);
     // The next step's half-margin test, this thread's part: over the blocks
     // it has just moved, while it holds them (no second pass over every
@@ -242,25 +237,13 @@ void Simulation::step() {
 // test itself would answer no (ContactDetector::clearly_no_detection).
 void Simulation::settle_travel_test(int threads) {
   TravelBound all = travel_parts_[0].bound;
-  for (int t = 1; t < threads; ++t) merge(all, travel_parts_[static_cast<std::size_t>(t)].bound);
+  for (int t = 1; t < threads; ++t) merge_travels(all, travel_parts_[static_cast<std::size_t>(t)].bound);
   if (!blocks_.kinematic_blocks.empty())
     detector_.add_travels(blocks_, blocks_.kinematic_blocks, travel_ref_, dt_, all);
   Vec3 drift;
   travel_clear_ = detector_.clearly_no_detection(all, travel_ref_, drift);
   travel_ref_ = drift;
   travel_dt_ = dt_;
-}
-
-// Where thread t's blocks start (t = nt: the end): at the first block of
-// its pairs (the pairs are in block order, ContactPair::a), so that the
-// blocks a thread gathers and moves are, but for the joints across the
-// split, those whose joint forces it has just computed.
-int Simulation::block_split(int nt, int t) const {
-  if (t <= 0) return 0;
-  if (t >= nt) return blocks_.count;
-  const std::size_t np = contacts_.pairs.size();
-  const std::size_t first = thread_range(np, static_cast<std::size_t>(nt), static_cast<std::size_t>(t)).first;
-  return first < np ? contacts_.pairs[first].a : blocks_.count;
 }
 
 void Simulation::compute_joint_forces_parallel() {

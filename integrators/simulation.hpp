@@ -68,11 +68,13 @@ inline double energy_in_play(const EnergyLedger& e) {
 // resumed from a checkpoint counts only the steps it ran itself, and the
 // constructor's first detection is not in it.
 struct StepProfile {
-  double detection = 0;      // the half-margin test, broad and narrow phase, subcontacts with their
-                             // history, gather lists, and the step check after a detection
+  double detection = 0;      // the half-margin test where the threads' bound did not settle it, broad
+                             // and narrow phase, subcontacts with their history, gather lists, and
+                             // the step check after a detection
   double patch = 0;          // common plane and patch clipping (part of each detection)
   double joint_law = 0;      // joint forces, one slot per subcontact
-  double gather_update = 0;  // gather, central-difference update, kinematic blocks
+  double gather_update = 0;  // gather, central-difference update, kinematic blocks, the threads'
+                             // bound for the next step's half-margin test
   double guard = 0;          // check_health, every 256 steps
   long steps = 0;            // steps timed
   // Threads OpenMP gave the run (what the thread governor did with them:
@@ -228,7 +230,6 @@ class Simulation {
   StepLoads step_loads() const;
   void gather_and_advance(const StepLoads& loads, int begin, int end);
   void settle_travel_test(int threads);
-  int block_split(int nt, int t) const;
   block_lanes::BlockArrays block_lane_arrays();
   template <bool kLocalDamping>
   void advance_block(int i, const StepLoads& loads);

@@ -17,7 +17,6 @@
 #include "run/run_scene.hpp"
 #include "run/scene_error.hpp"
 
-#include <omp.h>
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -147,7 +146,7 @@ class Run {
     } catch (const SceneError& e) {
       raise_python("SceneError", locate_scene_error(e, spec_));
     }
-    threads_ = omp_get_max_threads();
+    threads_ = run_->simulation().profile().threads_given;
     const Simulation& sim = run_->simulation();
     up_ = spec_.simulation.gravity.norm() > 0 ? Vec3(-spec_.simulation.gravity.normalized()) : Vec3(0, 0, 1);
     mesh_ = JointMesh::from_contacts(sim, up_, spec_.simulation.overlap_tolerance);

@@ -16,7 +16,6 @@
 #include "studies/collapse_search.hpp"
 #include "studies/sweep_search.hpp"
 
-#include <omp.h>
 #include <pybind11/stl.h>
 
 #include <filesystem>
@@ -47,7 +46,7 @@ PointResult run_point(const Scene& scene, const SweepPoint& point, int threads) 
     RunControl control;
     control.threads = threads;
     const RunReport r = run_scene(spec, control);
-    PointResult p = point_result_from_summary(summary_json(spec, r, omp_get_max_threads()).dump(2), point.label());
+    PointResult p = point_result_from_summary(summary_json(spec, r, r.profile.threads_given).dump(2), point.label());
     p.exit_code = r.unstable ? 3 : r.all_checks_passed() ? 0 : 1;
     return p;
   } catch (const SceneError& e) {

@@ -1,9 +1,9 @@
 #include "run/run_scene.hpp"
 
 #include "run/schedule.hpp"
+#include "run/scoped_threads.hpp"
 #include "run/setup.hpp"
 
-#include <omp.h>
 
 #include <csignal>
 
@@ -206,10 +206,7 @@ struct SceneRun::Loop {
 
 SceneRun::SceneRun(const SceneSpec& spec, const RunControl& control) : spec_(spec), control_(control) {
   const auto wall_start = Clock::now();
-  // Threads: the caller's (the command line's --threads), else the deck's
-  // simulation.threads, else OpenMP's default (OMP_NUM_THREADS or the cores).
-  const int threads = control_.threads > 0 ? control_.threads : spec_.simulation.threads;
-  if (threads > 0) omp_set_num_threads(threads);
+  const ScopedThreads threads(run_threads(control_.threads, spec_));  // scoped_threads.hpp
   RunReport& rep = report_;
 
   // 1. Setup.
@@ -279,6 +276,7 @@ bool SceneRun::over() const {
 // 3. The loop.
 long SceneRun::advance(long max_steps, double until) {
   if (over()) return 0;
+  const ScopedThreads threads(run_threads(control_.threads, spec_));
   Simulation& sim = *sim_;
   RunReport& rep = report_;
   LoopState& loop = loop_->state;
@@ -331,6 +329,7 @@ long SceneRun::advance(long max_steps, double until) {
 const RunReport& SceneRun::finish() {
   if (finished_) return report_;
   finished_ = true;
+  const ScopedThreads threads(run_threads(control_.threads, spec_));
   Simulation& sim = *sim_;
   RunReport& rep = report_;
   const auto t_end = Clock::now();

@@ -3,9 +3,9 @@
 #include "core/units.hpp"
 #include "run/assessment.hpp"
 #include "run/equilibrium.hpp"
+#include "run/scoped_threads.hpp"
 #include "run/setup.hpp"
 
-#include <omp.h>
 
 #include <algorithm>
 #include <chrono>
@@ -170,7 +170,7 @@ CollapseTrial static_collapse_trial(const SceneSpec& scene, double deg, double a
   s.ground_motion = GroundMotionSpec{};  // none: the load is the tilted gravity
   s.simulation.gravity_rise_time = 0;
   trial_output(s);
-  if (o.threads > 0) omp_set_num_threads(o.threads);
+  const ScopedThreads threads(run_threads(o.threads, s));  // as a run: the option, else the deck's
   RunSetup setup;
   std::unique_ptr<Simulation> sim = build_simulation(s, setup);
   const Vec3 g = s.simulation.gravity;

@@ -190,7 +190,7 @@ TEST(DetectionCheck, TheThreadsBoundNeverSettlesAStepTheTestWouldDetectAt) {
         const int chunk = (b.count + parts - 1) / parts;
         const int begin = std::min(b.count, t * chunk), end = std::min(b.count, begin + chunk);
         det.add_travels(b, begin, end, ref, dt, part);
-        merge(all, part);
+        merge_travels(all, part);
       }
       det.add_travels(b, kinematic, ref, dt, all);
       Vec3 drift;

@@ -37,5 +37,23 @@ TEST(RunThreads, TheDeckSetsThemTheCallerOverrides) {
   EXPECT_EQ(threads_given(block_deck("threads = 0\n"), 1), 1);
 }
 
+// OpenMP's count is the calling thread's setting: a run sets it while it
+// works and puts it back, so a deck's threads do not carry over to the next
+// run in the same process (Python, in-process sweeps).
+TEST(RunThreads, ARunLeavesOpenMPsCountAsItFoundIt) {
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(2);
+  RunControl control;
+  SceneRun run(parse_deck(block_deck("threads = 1\n"), "block.toml"), control);
+  EXPECT_EQ(omp_get_max_threads(), 2) << "after the setup";
+  run.advance(10);
+  EXPECT_EQ(omp_get_max_threads(), 2) << "after steps";
+  const RunReport r = run.finish();
+  EXPECT_EQ(r.profile.threads_given, 1);
+  EXPECT_EQ(omp_get_max_threads(), 2) << "after the run";
+  EXPECT_EQ(threads_given(block_deck(""), 0), 2) << "the next run in the process: OpenMP's default";
+  omp_set_num_threads(before);
+}
+
 }  // namespace
 }  // namespace polydem
