@@ -144,11 +144,18 @@ def run_case(polydem, blocks, leaves, threads, end_time, tmp, max_per_wall=MAX_P
         # setup and the equilibrium stage).
         "updates_per_s": 1e6 * subcontacts / prof["microseconds_per_step"],
         "ns_per_update": 1e3 * prof["microseconds_per_step"] / subcontacts,
+        # The run's detections after its setup and equilibrium stage; the
+        # profile's "detection" also holds the per-step half-margin test where
+        # the threads' bound did not settle it (docs/benchmarks.md, "Scaling").
         "detections": det, "detection_s": round(prof["detection"]["seconds"], 4),
         "detection_s_per_detection": prof["detection"]["seconds"] / det if det else 0.0,
         "detection_us_per_step": 1e6 * prof["detection"]["seconds"] / steps,
         "peak_rss_mib": rss / 2**20, "bytes_per_block": rss / s["blocks"],
         "bytes_per_subcontact": rss / max(1, subcontacts), "load_before": round(load, 2),
+        # What the thread governor did (a two-thread case at one thread's
+        # speed says here whether its probe kept one thread).
+        "probes": prof["threads"]["probes"], "switches": prof["threads"]["switches"],
+        "steps_on_one": prof["threads"]["steps_on_one"],
     }
 
 
