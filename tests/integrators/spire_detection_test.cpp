@@ -84,6 +84,24 @@ TEST(ParallelDetection, TwoThreadsGiveTheSameBitsOnTheSpire) {
   }
 }
 
+// Block i moved by random amounts of order `scale`: along x only (`tight`:
+// the 1-norm bound is then the travel itself), or moved, turned (the same
+// turn with the quaternion's other sign when `flip`) and set moving.
+void move_block(Blocks& b, int i, double scale, bool tight, bool flip, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  if (tight) {
+    b.state.position[i].x() += scale * u(rng);
+    return;
+  }
+  b.state.position[i] += scale * Vec3(u(rng), u(rng), u(rng));
+  const Vec3 turn = (scale / b.props.radius[i]) * Vec3(u(rng), u(rng), u(rng));
+  b.state.orientation[i] =
+      (Quat(Eigen::AngleAxisd(turn.norm(), turn.normalized())) * b.state.orientation[i]).normalized();
+  if (flip) b.state.orientation[i].coeffs() *= -1.0;
+  b.state.velocity[i] = (scale / 1e-4) * Vec3(u(rng), u(rng), u(rng));
+  b.state.angular_velocity[i] = (scale / 1e-4 / b.props.radius[i]) * Vec3(u(rng), u(rng), u(rng));
+}
+
 // The cheap bound in front of needs_detection's exact test (1-norms, no
 // square roots or quaternion products) never changes its answer: the spire's
 // blocks moved, turned and set moving by random amounts spanning the
@@ -96,7 +114,6 @@ TEST(DetectionCheck, TheBoundNeverChangesTheAnswer) {
   ContactSet contacts;
   det.detect(start, contacts, false, JointLaws(make_joint_law(spec.joint)));
   std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
   int yes = 0, no = 0, tight_yes = 0;
   for (int trial = 0; trial < 400; ++trial) {
     Blocks b = start;
@@ -110,17 +127,7 @@ TEST(DetectionCheck, TheBoundNeverChangesTheAnswer) {
     const bool tight = trial % 5 == 1;
     for (int i : b.free_blocks) {
       if ((few || tight) && i % 97 != 0) continue;
-      if (tight) {
-        b.state.position[i].x() += scale * u(rng);
-        continue;
-      }
-      b.state.position[i] += scale * Vec3(u(rng), u(rng), u(rng));
-      const Vec3 turn = (scale / b.props.radius[i]) * Vec3(u(rng), u(rng), u(rng));
-      b.state.orientation[i] =
-          (Quat(Eigen::AngleAxisd(turn.norm(), turn.normalized())) * b.state.orientation[i]).normalized();
-      if (trial % 2) b.state.orientation[i].coeffs() *= -1.0;  // the same turn, the other sign
-      b.state.velocity[i] = (scale / 1e-4) * Vec3(u(rng), u(rng), u(rng));
-      b.state.angular_velocity[i] = (scale / 1e-4 / b.props.radius[i]) * Vec3(u(rng), u(rng), u(rng));
+      move_block(b, i, scale, tight, trial % 2 == 1, rng);
     }
     const double dt = trial % 4 == 0 || tight ? 0.0 : 1e-5;
     const bool exact = det.needs_detection(b, dt, false);
@@ -166,17 +173,7 @@ TEST(DetectionCheck, TheThreadsBoundNeverSettlesAStepTheTestWouldDetectAt) {
       if (b.props.motion[i] == BlockMotion::fixed) continue;
       b.state.position[i] += common;
       if ((few || tight) && i % 97 != 0 && i % 61 != 5) continue;
-      if (tight) {
-        b.state.position[i].x() += scale * u(rng);
-        continue;
-      }
-      b.state.position[i] += scale * Vec3(u(rng), u(rng), u(rng));
-      const Vec3 turn = (scale / b.props.radius[i]) * Vec3(u(rng), u(rng), u(rng));
-      b.state.orientation[i] =
-          (Quat(Eigen::AngleAxisd(turn.norm(), turn.normalized())) * b.state.orientation[i]).normalized();
-      if (trial % 2) b.state.orientation[i].coeffs() *= -1.0;
-      b.state.velocity[i] = (scale / 1e-4) * Vec3(u(rng), u(rng), u(rng));
-      b.state.angular_velocity[i] = (scale / 1e-4 / b.props.radius[i]) * Vec3(u(rng), u(rng), u(rng));
+      move_block(b, i, scale, tight, trial % 2 == 1, rng);
     }
     const double dt = trial % 4 == 0 || tight ? 0.0 : 1e-5;
     const bool exact = det.needs_detection(b, dt, false);
