@@ -48,6 +48,20 @@ void keep_two_largest(double u, double& u1, double& u2) {
   }
 }
 
+// A 1-norm bound of block i's travel since the detection (at p0, q0),
+// measured from `from`, with the coming step dt (why it bounds the travel:
+// travels_clearly_below).
+double travel_l1(const Blocks& b, const Vec3& p0, const Quat& q0, int i, const Vec3& from, double dt) {
+  const Quat& q = b.state.orientation[i];
+  const double minus = std::abs(q.x() - q0.x()) + std::abs(q.y() - q0.y()) + std::abs(q.z() - q0.z()) +
+                       std::abs(q.w() - q0.w());
+  const double plus = std::abs(q.x() + q0.x()) + std::abs(q.y() + q0.y()) + std::abs(q.z() + q0.z()) +
+                      std::abs(q.w() + q0.w());
+  const double radius = b.props.radius[i];
+  return l1(b.state.position[i] - p0 - from) + 2.0 * std::min(minus, plus) * radius +
+         dt * (l1(b.state.velocity[i]) + l1(b.state.angular_velocity[i]) * radius);
+}
+
 PosedBlock posed(const Blocks& b, int i) {
   return {&b.props.local_shape[i], b.state.rotation[i], b.state.position[i], b.props.size[i]};
 }
@@ -121,16 +135,7 @@ bool ContactDetector::travels_clearly_below(const Blocks& b, const Vec3& c, bool
   double u1 = any_fixed ? l1(c) : 0.0, u2 = 0;
   for (int i = 0; i < b.count; ++i) {
     if (motion[i] == BlockMotion::fixed) continue;
-    const Quat& q = b.state.orientation[i];
-    const Quat& q0 = im.detected_orientation[i];
-    const double minus = std::abs(q.x() - q0.x()) + std::abs(q.y() - q0.y()) + std::abs(q.z() - q0.z()) +
-                         std::abs(q.w() - q0.w());
-    const double plus = std::abs(q.x() + q0.x()) + std::abs(q.y() + q0.y()) + std::abs(q.z() + q0.z()) +
-                        std::abs(q.w() + q0.w());
-    const double radius = b.props.radius[i];
-    const double u = l1(b.state.position[i] - im.detected_position[i] - c) +
-                     2.0 * std::min(minus, plus) * radius +
-                     dt * (l1(b.state.velocity[i]) + l1(b.state.angular_velocity[i]) * radius);
+    const double u = travel_l1(b, im.detected_position[i], im.detected_orientation[i], i, c, dt);
     if (!(u <= std::numeric_limits<double>::max())) return false;  // NaN or infinite: the exact test decides
     keep_two_largest(u, u1, u2);
   }
@@ -140,21 +145,13 @@ bool ContactDetector::travels_clearly_below(const Blocks& b, const Vec3& c, bool
 namespace {
 
 // Block i's part of the bound (a block that is not fixed): its translation
-// since the detection into the box, and the 1-norm bound of its travel from
-// `ref` (as travels_clearly_below, from ref instead of the drift).
+// since the detection into the box, and its travel's bound from `ref`.
 inline void add_travel(const Blocks& b, const Vec3& p0, const Quat& q0, int i, const Vec3& ref, double dt,
                        TravelBound& t) {
   const Vec3 d = b.state.position[i] - p0;
   t.lo = t.lo.cwiseMin(d);
   t.hi = t.hi.cwiseMax(d);
-  const Quat& q = b.state.orientation[i];
-  const double minus = std::abs(q.x() - q0.x()) + std::abs(q.y() - q0.y()) + std::abs(q.z() - q0.z()) +
-                       std::abs(q.w() - q0.w());
-  const double plus = std::abs(q.x() + q0.x()) + std::abs(q.y() + q0.y()) + std::abs(q.z() + q0.z()) +
-                      std::abs(q.w() + q0.w());
-  const double radius = b.props.radius[i];
-  const double u = l1(d - ref) + 2.0 * std::min(minus, plus) * radius +
-                   dt * (l1(b.state.velocity[i]) + l1(b.state.angular_velocity[i]) * radius);
+  const double u = travel_l1(b, p0, q0, i, ref, dt);
   if (!(u <= std::numeric_limits<double>::max())) t.finite = false;  // NaN or infinite
   keep_two_largest(u, t.u1, t.u2);
 }

@@ -198,7 +198,6 @@ lanes::SubcontactArrays lane_arrays(Subcontacts& sub) {
   return a;
 }
 
-
 // rotation_matrix's series branch (a2 = |θ|² < 1e-6) term by term in plain
 // doubles, into R column-major: R(i, j) = R[i + 3j].
 inline void rotation_series(double t0, double t1, double t2, double a2, double* R) {

@@ -60,7 +60,8 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec
       dt_prev_(dt),
       loads_(std::move(loads)) {
   governor_ = make_thread_governor(omp_get_max_threads(), sim.adaptive_threads);
-  travel_parts_.resize(static_cast<std::size_t>(std::max(1, omp_get_max_threads())));
+  // One part per thread a step can take: the governor's all or, switched off, OpenMP's (never more).
+  travel_parts_.resize(static_cast<std::size_t>(std::max({1, governor_.most, governor_.now})));
   profile_.threads_given = omp_get_max_threads();
   const int n = blocks_.count;
   if (!loads_.loads.empty()) {
@@ -192,7 +193,6 @@ void Simulation::step() {
   const StepLoads loads = step_loads();
   if (!loaded_.empty() && !static_stage_) compute_point_loads(time_);
   int region_threads = 1;
-  if (travel_parts_.size() < static_cast<std::size_t>(threads)) travel_parts_.resize(static_cast<std::size_t>(threads));
 #pragma omp parallel if (parallel) num_threads(threads)
   {
     compute_joint_forces_parallel();

@@ -4,7 +4,6 @@
 #include "run/scoped_threads.hpp"
 #include "run/setup.hpp"
 
-
 #include <csignal>
 
 #include <algorithm>
@@ -204,9 +203,10 @@ struct SceneRun::Loop {
   double output_seconds = 0;
 };
 
-SceneRun::SceneRun(const SceneSpec& spec, const RunControl& control) : spec_(spec), control_(control) {
+SceneRun::SceneRun(const SceneSpec& spec, const RunControl& control)
+    : spec_(spec), control_(control), threads_(run_threads(control.threads, spec)) {
   const auto wall_start = Clock::now();
-  const ScopedThreads threads(run_threads(control_.threads, spec_));  // scoped_threads.hpp
+  const ScopedThreads threads(threads_);  // only while the run works (scoped_threads.hpp)
   RunReport& rep = report_;
 
   // 1. Setup.
@@ -276,7 +276,7 @@ bool SceneRun::over() const {
 // 3. The loop.
 long SceneRun::advance(long max_steps, double until) {
   if (over()) return 0;
-  const ScopedThreads threads(run_threads(control_.threads, spec_));
+  const ScopedThreads threads(threads_);
   Simulation& sim = *sim_;
   RunReport& rep = report_;
   LoopState& loop = loop_->state;
@@ -329,7 +329,7 @@ long SceneRun::advance(long max_steps, double until) {
 const RunReport& SceneRun::finish() {
   if (finished_) return report_;
   finished_ = true;
-  const ScopedThreads threads(run_threads(control_.threads, spec_));
+  const ScopedThreads threads(threads_);
   Simulation& sim = *sim_;
   RunReport& rep = report_;
   const auto t_end = Clock::now();

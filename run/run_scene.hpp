@@ -181,6 +181,7 @@ class SceneRun {
 
   SceneSpec spec_;
   RunControl control_;
+  int threads_ = 0;  // the run's threads (scoped_threads.hpp run_threads; 0: OpenMP's default)
   RunReport report_;
   std::unique_ptr<Simulation> sim_;
   std::unique_ptr<Loop> loop_;

@@ -6,7 +6,6 @@
 #include "run/scoped_threads.hpp"
 #include "run/setup.hpp"
 
-
 #include <algorithm>
 #include <chrono>
 #include <memory>
