@@ -6,11 +6,13 @@
 // split, and lanes across blocks pay more to fill than they save (docs/
 // benchmarks.md, session 13). What one entry does is three components of
 // the same operations: fk = s·F, f += fk, m += (p − x) × fk, the cross
-// product as (d_y·k_z − d_z·k_y, d_z·k_x − d_x·k_z, d_x·k_y − d_y·k_x), the
-// lanes' permutations of d and fk. Each lane rounds exactly the portable
-// loop's operations in its order (no fused multiply-add), so a block's force
-// and moment have the same bits on either path; the fourth lane reads
-// nothing (masked loads) and is not stored.
+// product's components (d_y·k_z − d_z·k_y, d_z·k_x − d_x·k_z,
+// d_x·k_y − d_y·k_x) summed one lane over and put in place once per block.
+// Each lane rounds exactly the portable loop's operations in its order (no
+// fused multiply-add), so a block's force and moment have the same bits on
+// either path; the fourth lane reads nothing (masked loads) and is not
+// stored. The chain, not the arithmetic, sets a block's time: gather_two
+// keeps a second block's chain in flight beside it (session 16).
 #pragma once
 
 namespace polydem::gather_lanes {
@@ -31,5 +33,11 @@ struct GatherArrays {
 // gather_block_force for block i, the same bits. Only call when
 // lanes_available() (core/code_path.hpp).
 void gather_block(const GatherArrays& a, int i);
+
+// gather_block for blocks i and j, their entries taken in turn: each sum is
+// still its own chain in its own order (the same bits), and the other
+// block's chain runs in the additions' latency (measured on the spire, one
+// thread: the gather and update 30.8 → 27.5 µs a step, docs/benchmarks.md).
+void gather_two(const GatherArrays& a, int i, int j);
 
 }  // namespace polydem::gather_lanes

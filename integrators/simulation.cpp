@@ -265,6 +265,25 @@ void Simulation::gather_block(int i) {
   gather_block_force(contacts_, i, st.position[i], st.contact_force[i], st.contact_torque[i]);
 }
 
+// Blocks i and i + 1 (when below end): on the lanes path two sums in
+// flight (gather_lanes::gather_two, the same bits).
+void Simulation::gather_two_blocks(int i, int end) {
+  const bool two = i + 1 < end;
+#ifdef POLYDEM_LANES_AVX2
+  if (use_lanes(code_path_)) {
+    auto& st = blocks_.state;
+    const gather_lanes::GatherArrays a = gather_lane_arrays(contacts_, st.position, st.contact_force, st.contact_torque);
+    if (two)
+      gather_lanes::gather_two(a, i, i + 1);
+    else
+      gather_lanes::gather_block(a, i);
+    return;
+  }
+#endif
+  gather_block(i);
+  if (two) gather_block(i + 1);
+}
+
 void Simulation::gather_block_forces() {
   const int n = blocks_.count;
 #pragma omp for schedule(static)
@@ -359,10 +378,12 @@ Simulation::StepLoads Simulation::step_loads() const {
 // one barrier less per step (the region's end is the barrier).
 void Simulation::gather_and_advance(const StepLoads& loads, int begin, int end) {
   const auto& motion = blocks_.props.motion;
+  // The blocks two by two: both gathered, then each updated.
   if (local_damping_ > 0) {
-    for (int i = begin; i < end; ++i) {
-      gather_block(i);
-      if (motion[i] == BlockMotion::free) advance_block<true>(i, loads);
+    for (int i0 = begin; i0 < end; i0 += 2) {
+      gather_two_blocks(i0, end);
+      for (int i = i0; i < std::min(i0 + 2, end); ++i)
+        if (motion[i] == BlockMotion::free) advance_block<true>(i, loads);
     }
     return;
   }
@@ -383,26 +404,29 @@ void Simulation::gather_and_advance(const StepLoads& loads, int begin, int end) 
     const bool any_loaded = !loaded_.empty() && !static_stage_;
     int four[4];
     int waiting = 0;
-    for (int i = begin; i < end; ++i) {
-      gather_block(i);
-      if (motion[i] != BlockMotion::free) continue;
-      if (any_loaded && loaded_[i]) {
-        advance_block<false>(i, loads);
-        continue;
+    for (int i0 = begin; i0 < end; i0 += 2) {
+      gather_two_blocks(i0, end);
+      for (int i = i0; i < std::min(i0 + 2, end); ++i) {
+        if (motion[i] != BlockMotion::free) continue;
+        if (any_loaded && loaded_[i]) {
+          advance_block<false>(i, loads);
+          continue;
+        }
+        four[waiting++] = i;
+        if (waiting < 4) continue;
+        waiting = 0;
+        if (!block_lanes::advance_four(arrays, k, four))  // a turn beyond the series
+          for (int b : four) advance_block<false>(b, loads);
       }
-      four[waiting++] = i;
-      if (waiting < 4) continue;
-      waiting = 0;
-      if (!block_lanes::advance_four(arrays, k, four))  // a turn beyond the series
-        for (int b : four) advance_block<false>(b, loads);
     }
     for (int w = 0; w < waiting; ++w) advance_block<false>(four[w], loads);
     return;
   }
 #endif
-  for (int i = begin; i < end; ++i) {
-    gather_block(i);
-    if (motion[i] == BlockMotion::free) advance_block<false>(i, loads);
+  for (int i0 = begin; i0 < end; i0 += 2) {
+    gather_two_blocks(i0, end);
+    for (int i = i0; i < std::min(i0 + 2, end); ++i)
+      if (motion[i] == BlockMotion::free) advance_block<false>(i, loads);
   }
 }
 

@@ -221,6 +221,7 @@ class Simulation {
   void compute_joint_forces_parallel();
   void gather_block_forces();
   void gather_block(int i);
+  void gather_two_blocks(int i, int end);
   // The loads of this step, the same for every block.
   struct StepLoads {
     Vec3 gravity;       // g(t) (core/loads.hpp gravity_at)

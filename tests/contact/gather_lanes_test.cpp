@@ -1,13 +1,14 @@
 // The gather's AVX2 code path (contact/gather_lanes.hpp) gives
-// gather_block_force's bits: blocks with empty, short and long lists,
-// reference and incident entries, forces from 1 N to 1e12 N and points on
-// every side of the centroid. Whole runs on either path:
+// gather_block_force's bits, one block or two in turn: blocks with empty,
+// short and long lists, reference and incident entries, forces from 1 N to
+// 1e12 N and points on every side of the centroid. Whole runs on either path:
 // tests/verification/determinism_test.cpp.
 #include "contact/gather.hpp"
 #include "core/code_path.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -90,6 +91,40 @@ TEST(GatherLanes, SameBitsAsThePortableSum) {
     EXPECT_TRUE(same_bits(m, torque[i])) << "block " << i << ": " << m.transpose() << " / " << torque[i].transpose();
   }
   EXPECT_TRUE(same_bits(force[0], Vec3::Zero()));  // an empty list: zero, written
+}
+
+// Two blocks' sums taken in turn keep each block's bits: every pairing of
+// an empty (0-3), a short and the longest list (4), either one first, and
+// a block with itself.
+TEST(GatherLanes, TwoBlocksInTurnGiveEachBlocksBits) {
+  if (!lanes_available()) GTEST_SKIP() << "no AVX2 on this machine: only the portable path runs";
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  constexpr int blocks = 24;
+  ContactSet cs = random_contacts(rng, blocks);
+  std::vector<Vec3> centroid(blocks), force(blocks), torque(blocks);
+  for (Vec3& x : centroid) x = Vec3(u(rng), u(rng), u(rng)) * 3.0;
+  const gather_lanes::GatherArrays a = gather_lane_arrays(cs, centroid, force, torque);
+  int unequal = 0;
+  for (int i = 0; i < blocks; ++i) {
+    for (int j = 0; j < blocks; ++j) {
+      std::fill(force.begin(), force.end(), Vec3::Constant(7.0));
+      std::fill(torque.begin(), torque.end(), Vec3::Constant(7.0));
+      gather_lanes::gather_two(a, i, j);
+      for (int b : {i, j}) {
+        Vec3 f, m;
+        gather_block_force(cs, b, centroid[b], f, m);
+        ASSERT_TRUE(same_bits(f, force[b])) << "blocks " << i << ", " << j << ": block " << b;
+        ASSERT_TRUE(same_bits(m, torque[b])) << "blocks " << i << ", " << j << ": block " << b;
+      }
+      const int k = (i + 1) % blocks;  // untouched
+      if (k != i && k != j) {
+        ASSERT_TRUE(same_bits(force[k], Vec3::Constant(7.0)));
+      }
+      unequal += cs.gather_offset[i + 1] - cs.gather_offset[i] != cs.gather_offset[j + 1] - cs.gather_offset[j];
+    }
+  }
+  EXPECT_GT(unequal, blocks * blocks / 2);  // most pairings have lists of different lengths
 }
 #endif
 
