@@ -37,7 +37,7 @@ void gather_block(const GatherArrays& a, int i);
 // gather_block for blocks i and j, their entries taken in turn: each sum is
 // still its own chain in its own order (the same bits), and the other
 // block's chain runs in the additions' latency (measured on the spire, one
-// thread: the gather and update 30.8 → 27.5 µs a step, docs/benchmarks.md).
+// thread: the gather and update 30.3 → 27.4 µs a step, docs/benchmarks.md).
 void gather_two(const GatherArrays& a, int i, int j);
 
 }  // namespace polydem::gather_lanes

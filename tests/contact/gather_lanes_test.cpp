@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <random>
 
@@ -65,15 +66,30 @@ TEST(Gather, PlainDoublesGiveTheEigenSumsBits) {
 
 #ifdef POLYDEM_LANES_AVX2
 
+// random_contacts with random centroids, and the force and moment records
+// filled with 7 (so that a record not written shows).
+struct LaneScene {
+  ContactSet cs;
+  std::vector<Vec3> centroid, force, torque;
+};
+LaneScene lane_scene(std::uint64_t seed, int blocks) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  LaneScene s{random_contacts(rng, blocks), std::vector<Vec3>(blocks), std::vector<Vec3>(blocks, Vec3::Constant(7.0)),
+              std::vector<Vec3>(blocks, Vec3::Constant(7.0))};
+  for (Vec3& x : s.centroid) x = Vec3(u(rng), u(rng), u(rng)) * 3.0;
+  return s;
+}
+
 TEST(GatherLanes, SameBitsAsThePortableSum) {
   if (!lanes_available()) GTEST_SKIP() << "no AVX2 on this machine: only the portable path runs";
-  std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
   constexpr int blocks = 40;
-  ContactSet cs = random_contacts(rng, blocks);
-  std::vector<Vec3> centroid(blocks), force(blocks, Vec3::Constant(7.0)), torque(blocks, Vec3::Constant(7.0));
-  for (Vec3& x : centroid) x = Vec3(u(rng), u(rng), u(rng)) * 3.0;
-  const gather_lanes::GatherArrays a = gather_lane_arrays(cs, centroid, force, torque);
+  LaneScene s = lane_scene(5, blocks);
+  const ContactSet& cs = s.cs;
+  const std::vector<Vec3>& centroid = s.centroid;
+  const std::vector<Vec3>& force = s.force;
+  const std::vector<Vec3>& torque = s.torque;
+  const gather_lanes::GatherArrays a = gather_lane_arrays(cs, s.centroid, s.force, s.torque);
   int longest = 0;
   for (int i = 0; i < blocks; ++i) {
     const int length = cs.gather_offset[i + 1] - cs.gather_offset[i];
@@ -98,13 +114,13 @@ TEST(GatherLanes, SameBitsAsThePortableSum) {
 // a block with itself.
 TEST(GatherLanes, TwoBlocksInTurnGiveEachBlocksBits) {
   if (!lanes_available()) GTEST_SKIP() << "no AVX2 on this machine: only the portable path runs";
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
   constexpr int blocks = 24;
-  ContactSet cs = random_contacts(rng, blocks);
-  std::vector<Vec3> centroid(blocks), force(blocks), torque(blocks);
-  for (Vec3& x : centroid) x = Vec3(u(rng), u(rng), u(rng)) * 3.0;
-  const gather_lanes::GatherArrays a = gather_lane_arrays(cs, centroid, force, torque);
+  LaneScene s = lane_scene(11, blocks);
+  const ContactSet& cs = s.cs;
+  const std::vector<Vec3>& centroid = s.centroid;
+  std::vector<Vec3>& force = s.force;
+  std::vector<Vec3>& torque = s.torque;
+  const gather_lanes::GatherArrays a = gather_lane_arrays(cs, s.centroid, s.force, s.torque);
   int unequal = 0;
   for (int i = 0; i < blocks; ++i) {
     for (int j = 0; j < blocks; ++j) {
