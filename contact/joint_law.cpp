@@ -73,9 +73,13 @@ inline void open_joint(const JointLaw& law, Subcontacts& sub, std::size_t s, dou
 // point are known: normal n (unit, from the reference block), overlap u_n,
 // relative velocity of the incident block at the point, the joint's
 // rotation over the last step.
+// `beta`: the dashpots' β applied here (the law's, or its explicit part
+// under the split scheme); `dashpot`, when not null, receives which of them
+// act (DashpotState).
 [[gnu::always_inline]] inline void subcontact_law(const JointLaw& law, Subcontacts& sub, std::size_t s,
                                                   const Vec3& n, double un, const Vec3& vrel, const Mat3& spin,
-                                                  double dt) {
+                                                  double dt, double beta, std::uint8_t* dashpot) {
+  if (dashpot) dashpot[s] = 0;
   const double vn = vrel.dot(n);
   const Vec3 vs = vrel - vn * n;
   const double A = sub.area[s];
@@ -136,8 +140,9 @@ inline void open_joint(const JointLaw& law, Subcontacts& sub, std::size_t s, dou
   double fn_total = fn_el;
   Vec3 fs_damp = Vec3::Zero();
   if (un > 0) {
-    fn_total += law.beta * law.kn * A * (-vn);
-    if (!slipping) fs_damp = -(law.beta * law.ks * A) * vs;
+    fn_total += beta * law.kn * A * (-vn);
+    if (!slipping) fs_damp = -(beta * law.ks * A) * vs;
+    if (dashpot) dashpot[s] = static_cast<std::uint8_t>(kNormalDashpot | (slipping ? 0 : kShearDashpot));
   }
   if (sub.bonded[s] == 0 && fn_total < 0) fn_total = 0;  // no tension
   const double fn_damp = fn_total - fn_el;
@@ -166,7 +171,8 @@ void compute_joint_forces(const JointLaw& law, const BlockState& st, Subcontacts
                       (st.velocity[r] + st.angular_velocity[r].cross(p - xr));
     sub.point[s] = p;
     sub.overlap[s] = un;
-    subcontact_law(law, sub, s, n, un, vrel, joint_spin(st.angular_velocity[r], st.angular_velocity[c], n, dt), dt);
+    subcontact_law(law, sub, s, n, un, vrel, joint_spin(st.angular_velocity[r], st.angular_velocity[c], n, dt), dt,
+                   law.beta, nullptr);
   }
 }
 
@@ -270,10 +276,13 @@ inline void rotation_series(double t0, double t1, double t2, double a2, double* 
 template <bool kLanes, class LawOf>
 [[gnu::always_inline]] inline void pair_forces(const LawOf& law_of, const BlockState& st,
                                                const std::vector<ContactPair>& pairs, Subcontacts& sub, double dt,
-                                               std::size_t pair_begin, std::size_t pair_end,
+                                               std::size_t pair_begin, std::size_t pair_end, const SplitPart& split,
                                                [[maybe_unused]] lanes::PairLawKernel kernel = nullptr) {
   [[maybe_unused]] lanes::SubcontactArrays arrays;
-  if constexpr (kLanes) arrays = lane_arrays(sub);
+  if constexpr (kLanes) {
+    arrays = lane_arrays(sub);
+    arrays.dashpot = split.dashpot;
+  }
   for (std::size_t q = pair_begin; q < pair_end; ++q) {
     const ContactPair& cp = pairs[q];
     if (cp.count == 0) continue;
@@ -285,7 +294,8 @@ template <bool kLanes, class LawOf>
     if constexpr (kLanes) {
       lanes::PairFrame f;
       pair_frame(st, r, c, sub.ref_normal_local[s0], dt, f);
-      const lanes::LawConstants k{law.kn, law.ks, law.tan_phi, law.cohesion, law.tensile_strength, law.beta, dt};
+      const lanes::LawConstants k{law.kn, law.ks, law.tan_phi, law.cohesion, law.tensile_strength,
+                                  law.beta * split.explicit_part, dt};
       kernel(f, k, arrays, s0, static_cast<std::size_t>(cp.count));
       continue;
     }
@@ -306,7 +316,7 @@ template <bool kLanes, class LawOf>
       const Vec3 vrel = dv + wc.cross(arm_c) - wr.cross(arm_c + xcr);
       sub.point[s] = p;
       sub.overlap[s] = un;
-      subcontact_law(law, sub, s, n, un, vrel, spin, dt);
+      subcontact_law(law, sub, s, n, un, vrel, spin, dt, law.beta * split.explicit_part, split.dashpot);
     }
   }
 }
@@ -314,35 +324,134 @@ template <bool kLanes, class LawOf>
 template <class LawOf>
 void pair_forces_on_path(const LawOf& law_of, const BlockState& st, const std::vector<ContactPair>& pairs,
                          Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
-                         CodePath path) {
+                         CodePath path, const SplitPart& split) {
 #ifdef POLYDEM_LANES_AVX2
   if (use_lanes(path)) {
-    pair_forces<true>(law_of, st, pairs, sub, dt, pair_begin, pair_end,
+    pair_forces<true>(law_of, st, pairs, sub, dt, pair_begin, pair_end, split,
                       use_wide_lanes(path) ? &lanes::pair_law_wide : &lanes::pair_law);
     return;
   }
 #endif
-  pair_forces<false>(law_of, st, pairs, sub, dt, pair_begin, pair_end);
+  pair_forces<false>(law_of, st, pairs, sub, dt, pair_begin, pair_end, split);
 }
 
 }  // namespace
 
 void compute_pair_forces(const JointLaw& law, const BlockState& st, const std::vector<ContactPair>& pairs,
                          Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
-                         CodePath path) {
+                         CodePath path, const SplitPart& split) {
   pair_forces_on_path([&law](int, int) -> const JointLaw& { return law; }, st, pairs, sub, dt, pair_begin,
-                      pair_end, path);
+                      pair_end, path, split);
 }
 
 void compute_pair_forces(const JointLaws& laws, const BlockState& st, const std::vector<ContactPair>& pairs,
                          Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
-                         CodePath path) {
+                         CodePath path, const SplitPart& split) {
   if (laws.single()) {
-    compute_pair_forces(laws.laws[0], st, pairs, sub, dt, pair_begin, pair_end, path);
+    compute_pair_forces(laws.laws[0], st, pairs, sub, dt, pair_begin, pair_end, path, split);
     return;
   }
   pair_forces_on_path([&laws](int a, int b) -> const JointLaw& { return laws.between(a, b); }, st, pairs, sub, dt,
-                      pair_begin, pair_end, path);
+                      pair_begin, pair_end, path, split);
+}
+
+namespace {
+
+// The RestFrame of the pair (r reference, c incident, `nl` the reference
+// face's normal in r's frame): the normal in pair_frame's order.
+void rest_frame(const BlockState& st, const std::vector<Vec3>& velocity_next, const std::vector<Vec3>& omega_next,
+                int r, int c, const Vec3& nl, double cn, double cs, lanes::RestFrame& f) {
+  const double* Rr = st.rotation[r].data();
+  const double l0 = nl.x(), l1 = nl.y(), l2 = nl.z();
+  f.n[0] = (Rr[0] * l0 + Rr[3] * l1) + Rr[6] * l2;
+  f.n[1] = (Rr[1] * l0 + Rr[4] * l1) + Rr[7] * l2;
+  f.n[2] = Rr[2] * l0 + (Rr[5] * l1 + Rr[8] * l2);
+  const double* Rc = st.rotation[c].data();
+  for (int i = 0; i < 9; ++i) f.Rc[i] = Rc[i];
+  for (int i = 0; i < 3; ++i) {
+    f.xcr[i] = st.position[c][i] - st.position[r][i];
+    f.dv[i] = velocity_next[c][i] - velocity_next[r][i];
+    f.wc[i] = omega_next[c][i];
+    f.wr[i] = omega_next[r][i];
+  }
+  f.cn = cn;
+  f.cs = cs;
+}
+
+// The rest pass for one pair's subcontacts, one at a time: the lanes'
+// operations in their order (arm = Rc·p_local as mat_vec, the relative
+// velocity and the dot product as the law's).
+void pair_rest_portable(const lanes::RestFrame& f, const lanes::RestArrays& a, std::size_t s0, std::size_t count) {
+  const double* R = f.Rc;
+  const double n0 = f.n[0], n1 = f.n[1], n2 = f.n[2];
+  for (std::size_t s = s0; s < s0 + count; ++s) {
+    double* out = a.rest + 3 * s;
+    const std::uint8_t state = a.dashpot[s];
+    if (state == 0) {
+      out[0] = out[1] = out[2] = 0.0;
+      continue;
+    }
+    const double px = a.ipx[s], py = a.ipy[s], pz = a.ipz[s];
+    const double ax = (R[0] * px + R[3] * py) + R[6] * pz;
+    const double ay = (R[1] * px + R[4] * py) + R[7] * pz;
+    const double az = R[2] * px + (R[5] * py + R[8] * pz);
+    const double qx = ax + f.xcr[0], qy = ay + f.xcr[1], qz = az + f.xcr[2];
+    const double* wc = f.wc;
+    const double* wr = f.wr;
+    const double vx = (f.dv[0] + (wc[1] * az - wc[2] * ay)) - (wr[1] * qz - wr[2] * qy);
+    const double vy = (f.dv[1] + (wc[2] * ax - wc[0] * az)) - (wr[2] * qx - wr[0] * qz);
+    const double vz = (f.dv[2] + (wc[0] * ay - wc[1] * ax)) - (wr[0] * qy - wr[1] * qx);
+    const double vn = (vx * n0 + vy * n1) + vz * n2;
+    const double A = a.area[s];
+    double fn = (f.cn * A) * (-vn);
+    if (a.bonded[s] == 0) fn = std::max(fn, -a.normal_force[s]);  // never pulls an unbonded joint together
+    double fx = fn * n0, fy = fn * n1, fz = fn * n2;
+    if (state & kShearDashpot) {
+      const double k = f.cs * A;
+      fx = fx - k * (vx - vn * n0);
+      fy = fy - k * (vy - vn * n1);
+      fz = fz - k * (vz - vn * n2);
+    }
+    out[0] = fx;
+    out[1] = fy;
+    out[2] = fz;
+    a.normal_force[s] = a.normal_force[s] + fn;
+  }
+}
+
+}  // namespace
+
+void apply_dashpot_rest(const JointLaws& laws, double theta, const BlockState& st,
+                        const std::vector<Vec3>& velocity_next, const std::vector<Vec3>& omega_next,
+                        const std::vector<ContactPair>& pairs, const std::uint8_t* dashpot, Subcontacts& sub,
+                        std::vector<Vec3>& rest, std::size_t pair_begin, std::size_t pair_end, CodePath path) {
+  lanes::RestArrays a;
+  a.ipx = sub.inc_point_local.x.data();
+  a.ipy = sub.inc_point_local.y.data();
+  a.ipz = sub.inc_point_local.z.data();
+  a.area = sub.area.data();
+  a.bonded = sub.bonded.data();
+  a.dashpot = dashpot;
+  a.normal_force = sub.normal_force.data();
+  a.rest = reinterpret_cast<double*>(rest.data());
+  lanes::PairRestKernel kernel = &pair_rest_portable;
+#ifdef POLYDEM_LANES_AVX2
+  if (use_lanes(path)) kernel = use_wide_lanes(path) ? &lanes::pair_rest_wide : &lanes::pair_rest;
+#else
+  (void)path;
+#endif
+  for (std::size_t q = pair_begin; q < pair_end; ++q) {
+    const ContactPair& cp = pairs[q];
+    if (cp.count == 0) continue;
+    const int r = cp.ref_block;
+    const int c = cp.ref_block == cp.a ? cp.b : cp.a;
+    const JointLaw& law = laws.between(r, c);
+    const std::size_t s0 = static_cast<std::size_t>(cp.first);
+    lanes::RestFrame f;
+    rest_frame(st, velocity_next, omega_next, r, c, sub.ref_normal_local[s0], (theta * law.beta) * law.kn,
+               (theta * law.beta) * law.ks, f);
+    kernel(f, a, s0, static_cast<std::size_t>(cp.count));
+  }
 }
 
 void settle_damping_work(const BlockState& st, Subcontacts& sub, double dt) {

@@ -47,6 +47,9 @@
 #include "core/blocks.hpp"
 #include "core/scene_spec.hpp"
 
+#include <cstdint>
+#include <vector>
+
 namespace polydem {
 
 struct JointLaw {
@@ -96,6 +99,18 @@ JointLaws make_joint_laws(const Blocks& blocks, const JointSpec& default_joint,
 // only if some pair falls to it). One law: that law's spec itself, unchanged.
 JointSpec stiffest_joint(const JointLaws& laws);
 
+// The split damping scheme (integrators/split_damping.hpp): the joint law
+// applies the part `explicit_part` = 1 − θ of every dashpot, and writes each
+// subcontact's DashpotState into `dashpot` (when not null) for the pass that
+// applies the rest after the velocity update (apply_dashpot_rest). The
+// default is the explicit scheme: the whole dashpot, nothing written, the
+// same bits as before the scheme existed.
+enum DashpotState : std::uint8_t { kNormalDashpot = 1, kShearDashpot = 2 };
+struct SplitPart {
+  double explicit_part = 1.0;
+  std::uint8_t* dashpot = nullptr;  // one per subcontact
+};
+
 // Forces of subcontacts [begin, end) into their slots (sub.force/point/...).
 void compute_joint_forces(const JointLaw& law, const BlockState& state, Subcontacts& sub, double dt,
                           std::size_t begin, std::size_t end);
@@ -106,13 +121,30 @@ void compute_joint_forces(const JointLaw& law, const BlockState& state, Subconta
 // subcontact at a time; the same bits.
 void compute_pair_forces(const JointLaw& law, const BlockState& state, const std::vector<ContactPair>& pairs,
                          Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
-                         CodePath path = CodePath::automatic);
+                         CodePath path = CodePath::automatic, const SplitPart& split = {});
 
 // The same with each pair's own law (JointLaws::between); with one law,
 // exactly the one-law loop.
 void compute_pair_forces(const JointLaws& laws, const BlockState& state, const std::vector<ContactPair>& pairs,
                          Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
-                         CodePath path = CodePath::automatic);
+                         CodePath path = CodePath::automatic, const SplitPart& split = {});
+
+// The split scheme's second part, pairs [pair_begin, pair_end): each
+// subcontact whose DashpotState says its dashpots act takes the rest θ of
+// them from the relative velocity of `velocity_next`, `omega_next` (every
+// block's velocities after the step's forces, before the blocks move) at its
+// point, normal and shear as in the law, the normal force still never
+// pulling an unbonded joint together. The force goes into `rest` (one per
+// subcontact, zero where nothing acts), which the blocks gather onto the
+// law's, and its normal part into the subcontact's normal force. Its work
+// is booked block by block (Simulation: the rest's force and moment at the
+// blocks' centred velocities, the same sum as at the subcontacts'). `path`
+// as the law's: the AVX2 lanes or one subcontact at a time, the same bits.
+void apply_dashpot_rest(const JointLaws& laws, double theta, const BlockState& state,
+                        const std::vector<Vec3>& velocity_next, const std::vector<Vec3>& omega_next,
+                        const std::vector<ContactPair>& pairs, const std::uint8_t* dashpot, Subcontacts& sub,
+                        std::vector<Vec3>& rest, std::size_t pair_begin, std::size_t pair_end,
+                        CodePath path = CodePath::automatic);
 
 // Books the second half of the last step's dashpot work of every
 // subcontact with the relative velocity at its point now (the state's

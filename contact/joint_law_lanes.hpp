@@ -63,6 +63,9 @@ struct SubcontactArrays {
   double* normal_force;
   double* point;  // Vec3 array: x y z per subcontact
   double* force;  // Vec3 array
+  // The split damping scheme's per-subcontact dashpot state (DashpotState
+  // bits, joint_law.hpp), written only when not null.
+  std::uint8_t* dashpot = nullptr;
 };
 
 // The law for subcontacts s0 .. s0 + count − 1 of one pair. Only call when
@@ -73,6 +76,30 @@ void pair_law(const PairFrame& f, const LawConstants& law, const SubcontactArray
 
 using PairLawKernel = void (*)(const PairFrame&, const LawConstants&, const SubcontactArrays&, std::size_t,
                                std::size_t);
+
+// The split damping scheme's second pass for one pair (joint_law.hpp
+// apply_dashpot_rest): what the pair's subcontacts share, with the blocks'
+// predicted velocities, and the arrays it reads and writes.
+struct RestFrame {
+  double n[3];       // the common plane's unit normal
+  double Rc[9];      // the incident block's rotation
+  double xcr[3];     // x_inc − x_ref
+  double dv[3];      // v_inc − v_ref, predicted
+  double wc[3];      // the incident block's predicted angular velocity
+  double wr[3];      // the reference block's
+  double cn, cs;     // θ·β·kn, θ·β·ks
+};
+struct RestArrays {
+  const double *ipx, *ipy, *ipz;  // inc_point_local
+  const double* area;
+  const std::uint8_t* bonded;
+  const std::uint8_t* dashpot;  // DashpotState
+  double* normal_force;
+  double* rest;  // Vec3 array: the rest force per subcontact
+};
+void pair_rest(const RestFrame& f, const RestArrays& a, std::size_t s0, std::size_t count);
+void pair_rest_wide(const RestFrame& f, const RestArrays& a, std::size_t s0, std::size_t count);
+using PairRestKernel = void (*)(const RestFrame&, const RestArrays&, std::size_t, std::size_t);
 
 // The same kernel compiled for AVX-512VL (its 32 vector registers; the
 // same 256-bit lanes and the same bits). Only call when

@@ -8,4 +8,5 @@
 // with -ffp-contract=off like every file (contact/CMakeLists.txt): AVX-512
 // has fused multiply-adds, which would change the bits.
 #define POLYDEM_PAIR_LAW pair_law_wide
+#define POLYDEM_PAIR_REST pair_rest_wide
 #include "contact/joint_law_lanes_kernel.inc"

@@ -44,19 +44,29 @@ struct CriticalStep {
   double critical = 0;   // s, without safety factor
   double chosen = 0;     // s
   int governing_block = -1;
+  // DampingScheme::split: the part θ of each dashpot applied after the
+  // velocity update (split_damping.hpp); 0 with the explicit scheme.
+  double split_fraction = 0;
 };
 
-CriticalStep critical_time_step(const Blocks& blocks, const JointSpec& joint, double safety_factor);
+// `scheme`: the explicit dashpots' limit above, or the split scheme's
+// W(ξ)/ω (split_damping.hpp), which allows up to the springs' 2/ω. Every
+// function below takes it the same way.
+CriticalStep critical_time_step(const Blocks& blocks, const JointSpec& joint, double safety_factor,
+                                DampingScheme scheme = DampingScheme::explicit_lagged);
 
 // The step for a highest frequency ω (rad/s) found some other way (e.g.
 // joint_modes.hpp): ξ = β·ω/2 with `joint`'s β, the limit and the chosen step
 // as above; governing_block −1.
-CriticalStep critical_step_for(double omega, const JointSpec& joint, double safety_factor);
+CriticalStep critical_step_for(double omega, const JointSpec& joint, double safety_factor,
+                               DampingScheme scheme = DampingScheme::explicit_lagged);
 
 // Its inverse: the highest frequency (rad/s) a chosen step `dt` allows with
 // `joint`'s β and the safety factor. dt = sf·(2/ω)(√(1+ξ²) − ξ), ξ = βω/2
-// gives ω = 2/√(c(c + 2β)), c = dt/sf.
-double highest_frequency_for_step(double dt, const JointSpec& joint, double safety_factor);
+// gives ω = 2/√(c(c + 2β)), c = dt/sf. The split scheme's by bisection
+// (the highest ω whose step allows dt, to 1e-13).
+double highest_frequency_for_step(double dt, const JointSpec& joint, double safety_factor,
+                                  DampingScheme scheme = DampingScheme::explicit_lagged);
 
 // Each free block's ω_b of the same all-faces bound (rad/s, without the √2
 // between free blocks; 0 for blocks that are not free). critical_time_step's
@@ -86,14 +96,16 @@ std::vector<double> block_frequencies(const Blocks& blocks, const JointSpec& joi
 // block whose weighted stiffness is highest.
 CriticalStep critical_time_step_from_contacts(const Blocks& blocks, const ContactSet& contacts, const JointSpec& joint,
                                               double safety_factor, double below = 0, int threads = 1,
-                                              StepBound bound = StepBound::block);
+                                              StepBound bound = StepBound::block,
+                                              DampingScheme scheme = DampingScheme::explicit_lagged);
 
 // The same with each joint's own law (kn, ks of its pair of groups) and the
 // damping β of `stiffest` (stiffest_joint: the largest β that can act). With
 // one law, exactly the call above with that law's spec.
 CriticalStep critical_time_step_from_contacts(const Blocks& blocks, const ContactSet& contacts, const JointLaws& laws,
                                               const JointSpec& stiffest, double safety_factor, double below = 0,
-                                              int threads = 1, StepBound bound = StepBound::block);
+                                              int threads = 1, StepBound bound = StepBound::block,
+                                              DampingScheme scheme = DampingScheme::explicit_lagged);
 
 // Each free block's ω_b on the joints it has now (the subcontacts of the
 // last detection, each law's kn and ks; 0 for blocks without joints). A

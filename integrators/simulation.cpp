@@ -2,6 +2,7 @@
 
 #include "contact/gather.hpp"
 #include "core/loads.hpp"
+#include "integrators/split_damping.hpp"
 #include "integrators/thread_split.hpp"
 
 #include <omp.h>
@@ -96,6 +97,7 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec
   detector_.set_threads(governor_.now);
   detect_contacts();
   dt_prev_ = dt_;
+  update_split_fraction();
   start_half_step_back();
   last_good_ = blocks_.state;
 }
@@ -143,16 +145,36 @@ DetectionTimes Simulation::detect_contacts() {
   settle_damping_work(blocks_.state, contacts_.sub, dt_);
   const DetectionTimes times =
       detector_.detect(blocks_, contacts_, bond_initial_ && contacts_.detections == 0, laws_);
+  if (sim_.damping_scheme == DampingScheme::split) {  // per-subcontact scratch of the second pass
+    dashpot_state_.resize(contacts_.sub.size());
+    dashpot_rest_.resize(contacts_.sub.size());
+  }
   if (!adaptive_dt_) return times;
   const CriticalStep c =
       critical_time_step_from_contacts(blocks_, contacts_, laws_, step_joint_, sim_.safety_factor, dt_,
-                                       detector_.threads(), sim_.time_step_bound);
+                                       detector_.threads(), sim_.time_step_bound, sim_.damping_scheme);
   if (c.chosen > 0 && c.chosen < dt_) {
     dt_ = c.chosen;
     ++dt_reductions_;
     step_source_ = c;  // the estimate that set the step now
+    update_split_fraction();
   }
   return times;
+}
+
+void Simulation::update_split_fraction() {
+  split_fraction_ = 0;
+  if (sim_.damping_scheme != DampingScheme::split) return;
+  const std::size_t n = static_cast<std::size_t>(blocks_.count);
+  rest_work_.resize(n, 0.0);
+  rest_pending_.resize(n, 0.0);
+  if (!(step_joint_.damping > 0)) return;  // nothing to split: the explicit step, one pass
+  const double omega = highest_frequency_for_step(dt_, step_joint_, sim_.safety_factor, DampingScheme::split);
+  split_fraction_ = split_damping(0.5 * step_joint_.damping * omega).fraction;
+  velocity_next_.resize(n, Vec3::Zero());
+  omega_next_.resize(n, Vec3::Zero());
+  rest_force_.resize(n, Vec3::Zero());
+  rest_torque_.resize(n, Vec3::Zero());
 }
 
 bool Simulation::large_enough_for_threads() const {
@@ -205,7 +227,21 @@ void Simulation::step() {
     }
     const int begin = block_split(contacts_.pairs, blocks_.count, nt, t);  // thread_split.hpp
     const int end = block_split(contacts_.pairs, blocks_.count, nt, t + 1);
-    gather_and_advance(loads, begin, end);
+    if (split_fraction_ > 0) {
+      // The split damping scheme (split_damping.hpp): the law's forces
+      // gathered and each block's velocities predicted; the rest of the
+      // dashpots from them, pair by pair; then the rest gathered onto the
+      // blocks and the update.
+      gather_and_predict(loads, begin, end);
+#pragma omp barrier
+      const auto [pb, pe] = thread_range(contacts_.pairs.size(), static_cast<std::size_t>(nt),
+                                         static_cast<std::size_t>(t));
+      apply_dashpot_rest(laws_, split_fraction_, blocks_.state, velocity_next_, omega_next_, contacts_.pairs,
+                         dashpot_state_.data(), contacts_.sub, dashpot_rest_, pb, pe, code_path_);
+#pragma omp barrier
+    }
+    gather_and_advance(loads, begin, end, split_fraction_ > 0);
+    if (split_fraction_ > 0) book_rest_work(begin, end, false);
     // The next step's half-margin test, this thread's part: over the blocks
     // it has just moved, while it holds them (no second pass over every
     // block, on one thread, at the next step's start).
@@ -214,6 +250,7 @@ void Simulation::step() {
     detector_.add_travels(blocks_, begin, end, travel_ref_, dt_, part);
   }
   move_kinematic_blocks();
+  if (split_fraction_ > 0) book_rest_work(0, blocks_.count, true);
   settle_travel_test(region_threads);
   time_ += dt_;
   dt_prev_ = dt_;
@@ -251,7 +288,9 @@ void Simulation::compute_joint_forces_parallel() {
   // contiguous range of pairs (a static partition).
   const auto [begin, end] = thread_range(contacts_.pairs.size(), static_cast<std::size_t>(omp_get_num_threads()),
                                          static_cast<std::size_t>(omp_get_thread_num()));
-  compute_pair_forces(laws_, blocks_.state, contacts_.pairs, contacts_.sub, dt_, begin, end, code_path_);
+  SplitPart split;
+  if (split_fraction_ > 0) split = {1.0 - split_fraction_, dashpot_state_.data()};
+  compute_pair_forces(laws_, blocks_.state, contacts_.pairs, contacts_.sub, dt_, begin, end, code_path_, split);
 }
 
 void Simulation::gather_block(int i) {
@@ -284,6 +323,81 @@ void Simulation::gather_two_blocks(int i, int end) {
   if (two) gather_block(i + 1);
 }
 
+// The split scheme's rest of the dashpots gathered onto block i's joint
+// force and moment (the law's already there): the same fixed-order sum over
+// the rest slots, then added.
+// Blocks i and i + 1 (when below end), as gather_two_blocks.
+void Simulation::gather_rest(int i, int end) {
+  auto& st = blocks_.state;
+  const int last = std::min(i + 2, end);
+#ifdef POLYDEM_LANES_AVX2
+  if (use_lanes(code_path_)) {
+    const gather_lanes::GatherArrays a =
+        gather_lane_arrays(contacts_, dashpot_rest_.data(), st.position, rest_force_, rest_torque_);
+    if (last - i == 2)
+      gather_lanes::gather_two(a, i, i + 1);
+    else
+      gather_lanes::gather_block(a, i);
+  } else
+#endif
+  {
+    for (int b = i; b < last; ++b)
+      gather_block_force(contacts_, dashpot_rest_.data(), b, st.position[b], rest_force_[b], rest_torque_[b]);
+  }
+  for (int b = i; b < last; ++b) {
+    st.contact_force[b] += rest_force_[b];
+    st.contact_torque[b] += rest_torque_[b];
+  }
+}
+
+// The work of the rest of the dashpots, block by block: its force and
+// moment times the block's velocities (summed over a joint's two blocks, the
+// rest force times the relative velocity at the point), at the centred
+// velocity as the law's dashpot work (joint_law.hpp): half with the
+// velocities before the update, booked now, and half with those after it,
+// booked at the next step (rest_pending_), when the ledger's kinetic energy
+// has taken that half of the impulse. Free blocks in the threads, kinematic
+// ones after they have moved.
+void Simulation::book_rest_work(int begin, int end, bool kinematic) {
+  const auto& motion = blocks_.props.motion;
+  const auto& st = blocks_.state;
+  const double half = 0.5 * dt_;
+  for (int i = begin; i < end; ++i) {
+    if ((motion[i] == BlockMotion::free) == kinematic) continue;
+    const Vec3& v = st.velocity[i];
+    const Vec3& w = st.angular_velocity[i];
+    const Vec3 v_before = 2.0 * velocity_mid_[i] - v, w_before = 2.0 * omega_mid_[i] - w;
+    rest_work_[i] += rest_pending_[i] + half * (rest_force_[i].dot(v_before) + rest_torque_[i].dot(w_before));
+    rest_pending_[i] = half * (rest_force_[i].dot(v) + rest_torque_[i].dot(w));
+  }
+}
+
+void Simulation::gather_and_predict(const StepLoads& loads, int begin, int end) {
+  auto& st = blocks_.state;
+  const auto& pr = blocks_.props;
+  const double dv_dt = 0.5 * (dt_prev_ + dt_);
+  for (int i0 = begin; i0 < end; i0 += 2) {
+    gather_two_blocks(i0, end);
+    for (int i = i0; i < std::min(i0 + 2, end); ++i) {
+      if (pr.motion[i] != BlockMotion::free) {
+        kinematic_velocity_next(i, velocity_next_[i], omega_next_[i]);
+        continue;
+      }
+      Vec3 force, torque;
+      double inv_m;
+      const Vec3* inv_I;
+      if (local_damping_ > 0)
+        block_load<true>(i, loads, force, torque, inv_m, inv_I);
+      else
+        block_load<false>(i, loads, force, torque, inv_m, inv_I);
+      velocity_next_[i] = st.velocity[i] + (dv_dt * inv_m) * force;
+      const Vec3 L = st.angular_momentum[i] + dv_dt * torque;
+      const Mat3& R = st.rotation[i];
+      omega_next_[i] = R * inv_I->cwiseProduct(R.transpose() * L);
+    }
+  }
+}
+
 void Simulation::gather_block_forces() {
   const int n = blocks_.count;
 #pragma omp for schedule(static)
@@ -295,14 +409,12 @@ void Simulation::gather_block_forces() {
 // reduced by Cundall's local damping against the velocities at t − dt/2;
 // without it the update is the plain one, at no cost.
 template <bool kLocalDamping>
-void Simulation::advance_block(int i, const StepLoads& loads) {
-  auto& st = blocks_.state;
+[[gnu::always_inline]] inline void Simulation::block_load(int i, const StepLoads& loads, Vec3& force, Vec3& torque,
+                                                          double& inv_m, const Vec3*& inv_I) const {
+  const auto& st = blocks_.state;
   const auto& pr = blocks_.props;
-  const double dt = dt_;
-  const double dv_dt = 0.5 * (dt_prev_ + dt_);  // span of the velocity update
-  const Vec3& a_ground = loads.a_ground;
-  Vec3 force = external_force(pr, i, loads.gravity, a_ground) + st.contact_force[i];
-  Vec3 torque = st.contact_torque[i];
+  force = external_force(pr, i, loads.gravity, loads.a_ground) + st.contact_force[i];
+  torque = st.contact_torque[i];
   const bool loaded = !loaded_.empty() && loaded_[i] && !static_stage_;
   if (loaded) {  // the point loads: the sum's last term
     force += load_force_[i];
@@ -312,14 +424,28 @@ void Simulation::advance_block(int i, const StepLoads& loads) {
     force = locally_damped(force, st.velocity[i], local_damping_);
     torque = locally_damped(torque, st.angular_velocity[i], local_damping_);
   }
-  double inv_m = pr.inv_mass[i];
-  const Vec3* inv_I_p = &pr.inv_principal_inertia[i];
+  inv_m = pr.inv_mass[i];
+  inv_I = &pr.inv_principal_inertia[i];
   if constexpr (kLocalDamping) {
     if (!scaled_inv_mass_.empty()) {  // density scaling (the static stage)
       inv_m = scaled_inv_mass_[i];
-      inv_I_p = &scaled_inv_inertia_[i];
+      inv_I = &scaled_inv_inertia_[i];
     }
   }
+}
+
+template <bool kLocalDamping>
+void Simulation::advance_block(int i, const StepLoads& loads) {
+  auto& st = blocks_.state;
+  const auto& pr = blocks_.props;
+  const double dt = dt_;
+  const double dv_dt = 0.5 * (dt_prev_ + dt_);  // span of the velocity update
+  const Vec3& a_ground = loads.a_ground;
+  Vec3 force, torque;
+  double inv_m;
+  const Vec3* inv_I_p;
+  block_load<kLocalDamping>(i, loads, force, torque, inv_m, inv_I_p);
+  const bool loaded = !loaded_.empty() && loaded_[i] && !static_stage_;
   const Vec3& inv_I = *inv_I_p;
   const Vec3 v_old = st.velocity[i];
   const Vec3 v_new = v_old + (dv_dt * inv_m) * force;
@@ -376,12 +502,21 @@ Simulation::StepLoads Simulation::step_loads() const {
 // Gather and update fused in one loop over the blocks [begin, end) of the
 // calling thread: a block's update needs only its own gathered force, so
 // one barrier less per step (the region's end is the barrier).
-void Simulation::gather_and_advance(const StepLoads& loads, int begin, int end) {
+void Simulation::gather_and_advance(const StepLoads& loads, int begin, int end, bool rest) {
   const auto& motion = blocks_.props.motion;
+  // The blocks two by two, their forces gathered: the law's, or under the
+  // split scheme the rest of the dashpots onto the law's.
+  auto gather = [&](int i0) {
+    if (!rest) {
+      gather_two_blocks(i0, end);
+      return;
+    }
+    gather_rest(i0, end);
+  };
   // The blocks two by two: both gathered, then each updated.
   if (local_damping_ > 0) {
     for (int i0 = begin; i0 < end; i0 += 2) {
-      gather_two_blocks(i0, end);
+      gather(i0);
       for (int i = i0; i < std::min(i0 + 2, end); ++i)
         if (motion[i] == BlockMotion::free) advance_block<true>(i, loads);
     }
@@ -405,7 +540,7 @@ void Simulation::gather_and_advance(const StepLoads& loads, int begin, int end) 
     int four[4];
     int waiting = 0;
     for (int i0 = begin; i0 < end; i0 += 2) {
-      gather_two_blocks(i0, end);
+      gather(i0);
       for (int i = i0; i < std::min(i0 + 2, end); ++i) {
         if (motion[i] != BlockMotion::free) continue;
         if (any_loaded && loaded_[i]) {
@@ -424,7 +559,7 @@ void Simulation::gather_and_advance(const StepLoads& loads, int begin, int end) 
   }
 #endif
   for (int i0 = begin; i0 < end; i0 += 2) {
-    gather_two_blocks(i0, end);
+    gather(i0);
     for (int i = i0; i < std::min(i0 + 2, end); ++i)
       if (motion[i] == BlockMotion::free) advance_block<false>(i, loads);
   }
@@ -481,7 +616,8 @@ void Simulation::begin_static_stage(double local_damping, const Vec3& load, bool
   // to one frequency count every joint twice: scale them to ω/√2 of the
   // highest ω the step allows (blocks above it become heavier).
   if (sim_.time_step_bound == StepBound::joint)
-    top = std::min(top, highest_frequency_for_step(dt_, step_joint_, sim_.safety_factor) / std::sqrt(2.0));
+    top = std::min(top, highest_frequency_for_step(dt_, step_joint_, sim_.safety_factor, sim_.damping_scheme) /
+                            std::sqrt(2.0));
   scaled_inv_mass_ = blocks_.props.inv_mass;
   scaled_inv_inertia_ = blocks_.props.inv_principal_inertia;
   if (!(top > 0)) return;
@@ -517,6 +653,8 @@ void Simulation::end_static_stage() {
   steps_ = 0;
   dt_prev_ = dt_;
   load_work_.assign(load_work_.size(), 0.0);
+  rest_work_.assign(rest_work_.size(), 0.0);
+  rest_pending_.assign(rest_pending_.size(), 0.0);
   contacts_.retired_slip_energy = contacts_.retired_damping_energy = 0;
   contacts_.dropped_shear_energy = 0;
   contacts_.resampled_normal_energy = 0;
@@ -532,12 +670,29 @@ void Simulation::end_static_stage() {
   profile_ = StepProfile{.threads_given = profile_.threads_given};
 }
 
+void Simulation::kinematic_velocity_next(int i, Vec3& v, Vec3& w) const {
+  const auto& st = blocks_.state;
+  const int k = prescription_of_.empty() ? -1 : prescription_of_[i];
+  if (k >= 0) {
+    const Prescription& p = loads_.prescribed[static_cast<std::size_t>(k)];
+    v = Vec3::Zero();
+    if (!static_stage_) {
+      v = !p.displacement_table.empty() ? Vec3((table_value(p.displacement_table, time_ + dt_) -
+                                                table_value(p.displacement_table, time_)) / dt_)
+                                        : p.velocity_at(time_ + 0.5 * dt_);
+    }
+    w = static_stage_ ? Vec3(Vec3::Zero()) : p.angular_velocity;
+    return;
+  }
+  const bool moving =
+      !static_stage_ && motion_.any_active() && motion_.applied_as == GroundMotionApplication::kinematic;
+  v = moving ? motion_.velocity_vector(time_ + 0.5 * dt_) : st.velocity[i];
+  w = st.angular_velocity[i];
+}
+
 void Simulation::move_kinematic_blocks() {
   if (blocks_.kinematic_blocks.empty()) return;
   auto& st = blocks_.state;
-  const bool moving =
-      !static_stage_ && motion_.any_active() && motion_.applied_as == GroundMotionApplication::kinematic;
-  const Vec3 v_next = moving ? motion_.velocity_vector(time_ + 0.5 * dt_) : Vec3(Vec3::Zero());
   for (int i : blocks_.kinematic_blocks) {
     const int k = prescription_of_.empty() ? -1 : prescription_of_[i];
     if (k >= 0) {
@@ -545,7 +700,8 @@ void Simulation::move_kinematic_blocks() {
       continue;
     }
     const Vec3 v_old = st.velocity[i];
-    const Vec3 v_new = moving ? v_next : v_old;
+    Vec3 v_new, w_unused;
+    kinematic_velocity_next(i, v_new, w_unused);
     velocity_mid_[i] = 0.5 * (v_old + v_new);
     position_prev_[i] = st.position[i];
     // The base does work on the blocks through the joints: −F_joint·v.
@@ -563,13 +719,8 @@ void Simulation::move_prescribed_block(int i, const Prescription& p) {
   auto& st = blocks_.state;
   const Vec3 v_old = st.velocity[i], w_old = st.angular_velocity[i];
   const bool by_displacement = !p.displacement_table.empty();
-  Vec3 v_new = Vec3::Zero();
-  if (!static_stage_) {
-    v_new = by_displacement ? Vec3((table_value(p.displacement_table, time_ + dt_) -
-                                    table_value(p.displacement_table, time_)) / dt_)
-                            : p.velocity_at(time_ + 0.5 * dt_);
-  }
-  const Vec3 w_new = static_stage_ ? Vec3(Vec3::Zero()) : p.angular_velocity;
+  Vec3 v_new, w_new;
+  kinematic_velocity_next(i, v_new, w_new);
   velocity_mid_[i] = 0.5 * (v_old + v_new);
   omega_mid_[i] = 0.5 * (w_old + w_new);
   position_prev_[i] = st.position[i];
@@ -723,6 +874,10 @@ void Simulation::save_state(ByteWriter& w) const {
     w.put(h.force);
     w.put(h.torque);
   }
+  if (sim_.damping_scheme == DampingScheme::split) {  // the explicit scheme's files as before
+    w.put(rest_work_);
+    w.put(rest_pending_);
+  }
 }
 
 void Simulation::load_state(ByteReader& r) {
@@ -761,6 +916,13 @@ void Simulation::load_state(ByteReader& r) {
   for (PrescribedHistory& h : prescribed_history_) {
     r.get(h.force);
     r.get(h.torque);
+  }
+  update_split_fraction();  // θ is the step's (dt_ restored above)
+  if (sim_.damping_scheme == DampingScheme::split) {
+    dashpot_state_.resize(contacts_.sub.size());
+    dashpot_rest_.resize(contacts_.sub.size());
+    r.get_sized(rest_work_, n, "rest_work");
+    r.get_sized(rest_pending_, n, "rest_pending");
   }
 }
 
@@ -805,6 +967,7 @@ EnergyLedger Simulation::energies() const {
     e.slip += contacts_.sub.slip_energy[s];
     e.damping += contacts_.sub.damping_energy[s];
   }
+  for (double w : rest_work_) e.damping -= w;  // the split scheme's rest of the dashpots
   e.dropped_shear = contacts_.dropped_shear_energy;
   e.resampled_normal = contacts_.resampled_normal_energy;
   for (double w : load_work_) e.load_work += w;

@@ -135,6 +135,8 @@ class Simulation {
   // The estimate from the joints that last lowered the step (frequency,
   // damping ratio, governing block); governing_block < 0 if none did.
   const CriticalStep& time_step_source() const { return step_source_; }
+  // The split damping scheme's θ for the current step (0: explicit).
+  double split_fraction() const { return split_fraction_; }
   long steps() const { return steps_; }
   const StepProfile& profile() const { return profile_; }
 
@@ -229,7 +231,25 @@ class Simulation {
     bool rising;        // g(t) ≠ g: count m·(g(t) − g) as load work
   };
   StepLoads step_loads() const;
-  void gather_and_advance(const StepLoads& loads, int begin, int end);
+  // `rest`: the blocks' joint forces are already gathered (the split scheme's
+  // first pass); gather the rest of the dashpots onto them before the update.
+  void gather_and_advance(const StepLoads& loads, int begin, int end, bool rest = false);
+  // The split damping scheme (split_damping.hpp), blocks [begin, end):
+  // gather the joint law's forces and predict each block's velocities after
+  // the step (velocity_next_, omega_next_); kinematic blocks their own.
+  void gather_and_predict(const StepLoads& loads, int begin, int end);
+  void gather_rest(int i, int end);
+  void book_rest_work(int begin, int end, bool kinematic);
+  // Block i's force and moment at the step's time, and the inverse mass and
+  // principal inertia its update uses (the static stage's local damping and
+  // density scaling included).
+  template <bool kLocalDamping>
+  void block_load(int i, const StepLoads& loads, Vec3& force, Vec3& torque, double& inv_m, const Vec3*& inv_I) const;
+  // A kinematic block's velocity and angular velocity over the step ahead
+  // (t to t + dt): the ground's, its prescription's, or held.
+  void kinematic_velocity_next(int i, Vec3& v, Vec3& w) const;
+  // θ for the step dt_ (0 with the explicit scheme or without damping).
+  void update_split_fraction();
   void settle_travel_test(int threads);
   block_lanes::BlockArrays block_lane_arrays();
   template <bool kLocalDamping>
@@ -268,6 +288,15 @@ class Simulation {
   double dt_prev_;  // the step before: leapfrog with a changing step
   int dt_reductions_ = 0;
   CriticalStep step_source_;
+  // The split damping scheme: θ (0: the explicit scheme, and none of the
+  // arrays below is sized or touched), each subcontact's DashpotState and
+  // rest force, each block's predicted velocities and gathered rest.
+  double split_fraction_ = 0;
+  std::vector<std::uint8_t> dashpot_state_;
+  std::vector<Vec3> dashpot_rest_;
+  std::vector<Vec3> velocity_next_, omega_next_, rest_force_, rest_torque_;
+  std::vector<double> rest_work_;     // per block, J (the ledger's: −Σ is dissipation)
+  std::vector<double> rest_pending_;  // per block, J: the last step's second half, booked at the next
   double time_ = 0;
   long steps_ = 0;
   // Per-block ledger terms and mid-step kinematics (for the energy ledger).

@@ -42,7 +42,8 @@ using namespace deck_reader;
 
 constexpr std::string_view kSimulationKeys[] = {
     "end_time",          "time_step",       "safety_factor", "gravity",    "contact_margin", "threads", "adaptive_threads",
-    "overlap_tolerance", "settle_velocity", "settle_time",   "gravity_rise_time", "time_step_bound"};
+    "overlap_tolerance", "settle_velocity", "settle_time",   "gravity_rise_time", "time_step_bound",
+    "damping_scheme"};
 constexpr std::string_view kJointKeys[] = {"normal_stiffness", "shear_stiffness",  "friction_angle",
                                            "cohesion",         "tensile_strength", "damping", "between"};
 constexpr std::string_view kGroupKeys[] = {"name", "density"};
@@ -108,6 +109,9 @@ SimulationSpec read_simulation(const Deck& deck) {
     r.fail("safety_factor", "must be in (0, 1] (got " + format_number(s.safety_factor) + ")");
   s.time_step_bound = r.choice<StepBound>("time_step_bound", {{"block", StepBound::block}, {"joint", StepBound::joint}},
                                           s.time_step_bound);
+  s.damping_scheme = r.choice<DampingScheme>(
+      "damping_scheme", {{"explicit", DampingScheme::explicit_lagged}, {"split", DampingScheme::split}},
+      s.damping_scheme);
   s.gravity = r.vec3("gravity").value_or(s.gravity);
   s.contact_margin = r.number("contact_margin", s.contact_margin, Range::non_negative);
   if (const auto t = r.integer("threads")) {

@@ -171,6 +171,8 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   s.set("time_step_set_by", r.time_step_set_by);
   s.set("time_step_bound", spec.simulation.time_step_bound == StepBound::joint ? "joint" : "block");
   s.set("time_step_block", r.time_step_block);
+  s.set("damping_scheme", spec.simulation.damping_scheme == DampingScheme::split ? "split" : "explicit");
+  s.set("damping_split_fraction", r.damping_split_fraction);
   s.set("contact_margin_m", r.margin);
   s.set("blocks", r.blocks);
   s.set("free_blocks", r.free_blocks);

@@ -159,6 +159,7 @@ void finish_report(RunReport& rep, const Simulation& sim, Recorder& recorder, As
   rep.steps = sim.steps();
   rep.time_step = sim.dt();
   rep.time_step_reductions = sim.time_step_reductions();
+  rep.damping_split_fraction = sim.split_fraction();
   if (sim.time_step_source().governing_block >= 0) {
     rep.critical = sim.time_step_source();
     rep.time_step_set_by = "joints at a detection";

@@ -74,6 +74,8 @@ struct RunReport {
   double time_step = 0;          // s, at the end of the run
   double initial_time_step = 0;  // s, at the start
   int time_step_reductions = 0;
+  // The split damping scheme's θ at the end (0: the explicit scheme).
+  double damping_split_fraction = 0;
   // The estimate that set the step: the all-faces bound before the first
   // detection, or the joints' estimate that last lowered it (frequency,
   // damping ratio ξ at that frequency, governing block); with the deck's own

@@ -24,7 +24,8 @@ RunSetup choose_margin_and_step(const SceneSpec& spec, const Blocks& blocks) {
   // Time step: automatic, or the deck's if it is smaller.
   // The stiffest law that can act ([[joint]] `between`); one law: [joint].
   const JointLaws laws = make_joint_laws(blocks, spec.joint, spec.joint_pairs);
-  s.critical = critical_time_step(blocks, stiffest_joint(laws), spec.simulation.safety_factor);
+  s.critical = critical_time_step(blocks, stiffest_joint(laws), spec.simulation.safety_factor,
+                                  spec.simulation.damping_scheme);
   double dt = s.critical.chosen;
   if (spec.simulation.time_step > 0) {
     if (s.critical.chosen > 0 && spec.simulation.time_step > s.critical.chosen) {

@@ -216,3 +216,68 @@ TEST(JointLawLanes, PairRangesSplitAnywhereGiveTheSameBits) {
 
 }  // namespace
 }  // namespace polydem
+
+namespace polydem {
+namespace {
+
+// The split damping scheme's two parts on both paths: the law with part
+// 1 − θ of each dashpot, writing each subcontact's DashpotState, and the
+// rest pass (apply_dashpot_rest) from predicted velocities, on the same
+// random scenes: every array either writes, bit for bit, with the rest's
+// clamp (an unbonded joint's normal force held at zero), bonded joints,
+// shear dashpots on and off (slipping) and subcontacts with no dashpot
+// (open) all reached. A wrong state bit, association or lane mask fails it.
+TEST(JointLawLanes, TheSplitSchemesPartsGiveTheSameBits) {
+  if (!lanes_available()) GTEST_SKIP() << "no AVX2 on this machine or build";
+  std::mt19937_64 rng(33);
+  JointLaws laws;
+  laws.laws[0].kn = 1e10, laws.laws[0].ks = 4e9, laws.laws[0].tan_phi = std::tan(0.6), laws.laws[0].beta = 2.1e-3;
+  laws.laws[0].cohesion = 1e5, laws.laws[0].tensile_strength = 5e4;
+  const double theta = 0.32, dt = 1e-5;
+  int none = 0, normal_only = 0, both = 0, clamped = 0, bonded_acting = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    Scene s = random_scene(rng, 12);
+    std::vector<Vec3> v_next(s.st.velocity.size()), w_next(s.st.velocity.size());
+    for (std::size_t i = 0; i < v_next.size(); ++i) {
+      v_next[i] = s.st.velocity[i] + random_vec(rng, 0.5);
+      w_next[i] = s.st.angular_velocity[i] + random_vec(rng, 2.0);
+    }
+    std::vector<Subcontacts> results;
+    std::vector<std::vector<std::uint8_t>> states;
+    std::vector<std::vector<Vec3>> rests;
+    for (const CodePath path : {CodePath::portable, CodePath::lanes, CodePath::lanes_avx2}) {
+      Subcontacts sub = s.sub;
+      std::vector<std::uint8_t> state(sub.size(), 9);
+      std::vector<Vec3> rest(sub.size(), Vec3::Constant(7.0));
+      compute_pair_forces(laws, s.st, s.pairs, sub, dt, 0, s.pairs.size(), path, SplitPart{1.0 - theta, state.data()});
+      const std::vector<double> law_normal = sub.normal_force;
+      apply_dashpot_rest(laws, theta, s.st, v_next, w_next, s.pairs, state.data(), sub, rest, 0, s.pairs.size(),
+                         path);
+      if (path == CodePath::portable) {
+        for (std::size_t k = 0; k < sub.size(); ++k) {
+          none += state[k] == 0;
+          normal_only += state[k] == kNormalDashpot;
+          both += state[k] == (kNormalDashpot | kShearDashpot);
+          clamped += state[k] != 0 && sub.normal_force[k] == 0 && law_normal[k] > 0;
+          bonded_acting += state[k] != 0 && sub.bonded[k] != 0;
+        }
+      }
+      results.push_back(sub);
+      states.push_back(state);
+      rests.push_back(rest);
+    }
+    for (std::size_t p = 1; p < results.size(); ++p) {
+      expect_same_bits(results[p], results[0], trial);
+      EXPECT_EQ(states[p], states[0]) << trial;
+      EXPECT_TRUE(same_bits(rests[p], rests[0])) << trial;
+    }
+  }
+  EXPECT_GT(none, 100);
+  EXPECT_GT(normal_only, 20);
+  EXPECT_GT(both, 100);
+  EXPECT_GT(clamped, 5);
+  EXPECT_GT(bonded_acting, 10);
+}
+
+}  // namespace
+}  // namespace polydem
