@@ -34,15 +34,10 @@ void build_gather_lists(int n, ContactSet& contacts, std::vector<int>& cnt) {
 // and the scalar part of a Vec3 (9 % less time in the gather and update,
 // docs/benchmarks.md).
 void gather_block_force(const ContactSet& contacts, int i, const Vec3& x, Vec3& force, Vec3& torque) {
-  gather_block_force(contacts, contacts.sub.force.data(), i, x, force, torque);
-}
-
-void gather_block_force(const ContactSet& contacts, const Vec3* slots, int i, const Vec3& x, Vec3& force,
-                        Vec3& torque) {
   const int* idx = contacts.gather_sub.data();
   const double* sign = contacts.gather_sign.data();
   static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 arrays are read as x y z per element");
-  const double* F = reinterpret_cast<const double*>(slots);
+  const double* F = reinterpret_cast<const double*>(contacts.sub.force.data());
   const double* P = reinterpret_cast<const double*>(contacts.sub.point.data());
   const double x0 = x.x(), x1 = x.y(), x2 = x.z();
   double f0 = 0, f1 = 0, f2 = 0, m0 = 0, m1 = 0, m2 = 0;
@@ -65,18 +60,12 @@ void gather_block_force(const ContactSet& contacts, const Vec3* slots, int i, co
 
 gather_lanes::GatherArrays gather_lane_arrays(const ContactSet& contacts, const std::vector<Vec3>& centroid,
                                               std::vector<Vec3>& force, std::vector<Vec3>& torque) {
-  return gather_lane_arrays(contacts, contacts.sub.force.data(), centroid, force, torque);
-}
-
-gather_lanes::GatherArrays gather_lane_arrays(const ContactSet& contacts, const Vec3* slots,
-                                              const std::vector<Vec3>& centroid, std::vector<Vec3>& force,
-                                              std::vector<Vec3>& torque) {
   static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 arrays are read as x y z per element");
   gather_lanes::GatherArrays a;
   a.offset = contacts.gather_offset.data();
   a.entry = contacts.gather_sub.data();
   a.sign = contacts.gather_sign.data();
-  a.force = reinterpret_cast<const double*>(slots);
+  a.force = reinterpret_cast<const double*>(contacts.sub.force.data());
   a.point = reinterpret_cast<const double*>(contacts.sub.point.data());
   a.centroid = reinterpret_cast<const double*>(centroid.data());
   a.contact_force = reinterpret_cast<double*>(force.data());

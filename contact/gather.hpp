@@ -27,17 +27,9 @@ void build_gather_lists(int blocks, ContactSet& contacts, std::vector<int>& coun
 // points.
 void gather_block_force(const ContactSet& contacts, int i, const Vec3& centroid, Vec3& force, Vec3& torque);
 
-// The same sum over other slots, one per subcontact (the split damping
-// scheme's rest of the dashpots, contact/joint_law.hpp apply_dashpot_rest).
-void gather_block_force(const ContactSet& contacts, const Vec3* slots, int i, const Vec3& centroid, Vec3& force,
-                        Vec3& torque);
-
 // The arrays gather_lanes::gather_block reads and writes: `contacts`' lists
 // and slots, the blocks' centroids, and their contact force and moment.
 gather_lanes::GatherArrays gather_lane_arrays(const ContactSet& contacts, const std::vector<Vec3>& centroid,
                                               std::vector<Vec3>& force, std::vector<Vec3>& torque);
-gather_lanes::GatherArrays gather_lane_arrays(const ContactSet& contacts, const Vec3* slots,
-                                              const std::vector<Vec3>& centroid, std::vector<Vec3>& force,
-                                              std::vector<Vec3>& torque);
 
 }  // namespace polydem

@@ -380,17 +380,17 @@ void rest_frame(const BlockState& st, const std::vector<Vec3>& velocity_next, co
 
 // The rest pass for one pair's subcontacts, one at a time: the lanes'
 // operations in their order (arm = Rc·p_local as mat_vec, the relative
-// velocity and the dot product as the law's).
-void pair_rest_portable(const lanes::RestFrame& f, const lanes::RestArrays& a, std::size_t s0, std::size_t count) {
+// velocity and the dot product as the law's; subcontact j of the pair summed
+// into "lane" j mod 4, the lanes then (l0 + l1) + (l2 + l3)).
+void pair_rest_portable(const lanes::RestFrame& f, const lanes::RestArrays& a, std::size_t s0, std::size_t count,
+                        lanes::PairRest& out) {
   const double* R = f.Rc;
   const double n0 = f.n[0], n1 = f.n[1], n2 = f.n[2];
-  for (std::size_t s = s0; s < s0 + count; ++s) {
-    double* out = a.rest + 3 * s;
+  double sum[6][4] = {};  // force x y z, moment x y z; per lane
+  for (std::size_t j = 0; j < count; ++j) {
+    const std::size_t s = s0 + j;
     const std::uint8_t state = a.dashpot[s];
-    if (state == 0) {
-      out[0] = out[1] = out[2] = 0.0;
-      continue;
-    }
+    if (state == 0) continue;
     const double px = a.ipx[s], py = a.ipy[s], pz = a.ipz[s];
     const double ax = (R[0] * px + R[3] * py) + R[6] * pz;
     const double ay = (R[1] * px + R[4] * py) + R[7] * pz;
@@ -412,11 +412,26 @@ void pair_rest_portable(const lanes::RestFrame& f, const lanes::RestArrays& a, s
       fy = fy - k * (vy - vn * n1);
       fz = fz - k * (vz - vn * n2);
     }
-    out[0] = fx;
-    out[1] = fy;
-    out[2] = fz;
     a.normal_force[s] = a.normal_force[s] + fn;
+    const std::size_t l = j % 4;
+    sum[0][l] = sum[0][l] + fx;
+    sum[1][l] = sum[1][l] + fy;
+    sum[2][l] = sum[2][l] + fz;
+    sum[3][l] = sum[3][l] + (ay * fz - az * fy);
+    sum[4][l] = sum[4][l] + (az * fx - ax * fz);
+    sum[5][l] = sum[5][l] + (ax * fy - ay * fx);
   }
+  double total[6];
+  for (int c = 0; c < 6; ++c) total[c] = (sum[c][0] + sum[c][1]) + (sum[c][2] + sum[c][3]);
+  const double* d = f.xcr;
+  for (int c = 0; c < 3; ++c) {
+    out.force[c] = total[c];
+    out.moment[c] = total[3 + c];
+  }
+  const double* F = out.force;
+  out.moment_ref[0] = -(out.moment[0] + (d[1] * F[2] - d[2] * F[1]));
+  out.moment_ref[1] = -(out.moment[1] + (d[2] * F[0] - d[0] * F[2]));
+  out.moment_ref[2] = -(out.moment[2] + (d[0] * F[1] - d[1] * F[0]));
 }
 
 }  // namespace
@@ -424,7 +439,8 @@ void pair_rest_portable(const lanes::RestFrame& f, const lanes::RestArrays& a, s
 void apply_dashpot_rest(const JointLaws& laws, double theta, const BlockState& st,
                         const std::vector<Vec3>& velocity_next, const std::vector<Vec3>& omega_next,
                         const std::vector<ContactPair>& pairs, const std::uint8_t* dashpot, Subcontacts& sub,
-                        std::vector<Vec3>& rest, std::size_t pair_begin, std::size_t pair_end, CodePath path) {
+                        std::vector<lanes::PairRest>& rest, std::size_t pair_begin, std::size_t pair_end,
+                        CodePath path) {
   lanes::RestArrays a;
   a.ipx = sub.inc_point_local.x.data();
   a.ipy = sub.inc_point_local.y.data();
@@ -433,7 +449,6 @@ void apply_dashpot_rest(const JointLaws& laws, double theta, const BlockState& s
   a.bonded = sub.bonded.data();
   a.dashpot = dashpot;
   a.normal_force = sub.normal_force.data();
-  a.rest = reinterpret_cast<double*>(rest.data());
   lanes::PairRestKernel kernel = &pair_rest_portable;
 #ifdef POLYDEM_LANES_AVX2
   if (use_lanes(path)) kernel = use_wide_lanes(path) ? &lanes::pair_rest_wide : &lanes::pair_rest;
@@ -442,7 +457,10 @@ void apply_dashpot_rest(const JointLaws& laws, double theta, const BlockState& s
 #endif
   for (std::size_t q = pair_begin; q < pair_end; ++q) {
     const ContactPair& cp = pairs[q];
-    if (cp.count == 0) continue;
+    if (cp.count == 0) {
+      rest[q] = lanes::PairRest{};
+      continue;
+    }
     const int r = cp.ref_block;
     const int c = cp.ref_block == cp.a ? cp.b : cp.a;
     const JointLaw& law = laws.between(r, c);
@@ -450,7 +468,7 @@ void apply_dashpot_rest(const JointLaws& laws, double theta, const BlockState& s
     lanes::RestFrame f;
     rest_frame(st, velocity_next, omega_next, r, c, sub.ref_normal_local[s0], (theta * law.beta) * law.kn,
                (theta * law.beta) * law.ks, f);
-    kernel(f, a, s0, static_cast<std::size_t>(cp.count));
+    kernel(f, a, s0, static_cast<std::size_t>(cp.count), rest[q]);
   }
 }
 

@@ -42,6 +42,7 @@
 // a ξ = 2 impact; docs/contact.md).
 #pragma once
 
+#include "contact/joint_law_lanes.hpp"
 #include "contact/subcontacts.hpp"
 #include "core/code_path.hpp"
 #include "core/blocks.hpp"
@@ -134,16 +135,18 @@ void compute_pair_forces(const JointLaws& laws, const BlockState& state, const s
 // them from the relative velocity of `velocity_next`, `omega_next` (every
 // block's velocities after the step's forces, before the blocks move) at its
 // point, normal and shear as in the law, the normal force still never
-// pulling an unbonded joint together. The force goes into `rest` (one per
-// subcontact, zero where nothing acts), which the blocks gather onto the
-// law's, and its normal part into the subcontact's normal force. Its work
-// is booked block by block (Simulation: the rest's force and moment at the
-// blocks' centred velocities, the same sum as at the subcontacts'). `path`
-// as the law's: the AVX2 lanes or one subcontact at a time, the same bits.
+// pulling an unbonded joint together. Each normal part goes into its
+// subcontact's normal force; `rest` (one per pair) receives the pair's sum:
+// the rest force on the incident block and its moment about each block's
+// centroid, which the blocks gather pair by pair onto the law's force (a
+// quarter of the entries of a gather by subcontact). Its work is booked
+// block by block (Simulation: the rest's force and moment at the blocks'
+// centred velocities, the same sum as at the subcontacts'). `path` as the
+// law's: the AVX2 lanes or one subcontact at a time, the same bits.
 void apply_dashpot_rest(const JointLaws& laws, double theta, const BlockState& state,
                         const std::vector<Vec3>& velocity_next, const std::vector<Vec3>& omega_next,
                         const std::vector<ContactPair>& pairs, const std::uint8_t* dashpot, Subcontacts& sub,
-                        std::vector<Vec3>& rest, std::size_t pair_begin, std::size_t pair_end,
+                        std::vector<lanes::PairRest>& rest, std::size_t pair_begin, std::size_t pair_end,
                         CodePath path = CodePath::automatic);
 
 // Books the second half of the last step's dashpot work of every

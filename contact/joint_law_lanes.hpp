@@ -79,7 +79,10 @@ using PairLawKernel = void (*)(const PairFrame&, const LawConstants&, const Subc
 
 // The split damping scheme's second pass for one pair (joint_law.hpp
 // apply_dashpot_rest): what the pair's subcontacts share, with the blocks'
-// predicted velocities, and the arrays it reads and writes.
+// predicted velocities, and the arrays it reads and writes. Its result is
+// the pair's: the rest force on the incident block and its moment about
+// each block's centroid, each summed over the pair's subcontacts in a fixed
+// order (lane k takes subcontacts k, k + 4, …; then (l0 + l1) + (l2 + l3)).
 struct RestFrame {
   double n[3];       // the common plane's unit normal
   double Rc[9];      // the incident block's rotation
@@ -95,11 +98,15 @@ struct RestArrays {
   const std::uint8_t* bonded;
   const std::uint8_t* dashpot;  // DashpotState
   double* normal_force;
-  double* rest;  // Vec3 array: the rest force per subcontact
 };
-void pair_rest(const RestFrame& f, const RestArrays& a, std::size_t s0, std::size_t count);
-void pair_rest_wide(const RestFrame& f, const RestArrays& a, std::size_t s0, std::size_t count);
-using PairRestKernel = void (*)(const RestFrame&, const RestArrays&, std::size_t, std::size_t);
+// Out: force[3] on the incident block, moment[3] about its centroid,
+// moment_ref[3] of the reaction about the reference block's centroid.
+struct PairRest {
+  double force[3], moment[3], moment_ref[3];
+};
+void pair_rest(const RestFrame& f, const RestArrays& a, std::size_t s0, std::size_t count, PairRest& out);
+void pair_rest_wide(const RestFrame& f, const RestArrays& a, std::size_t s0, std::size_t count, PairRest& out);
+using PairRestKernel = void (*)(const RestFrame&, const RestArrays&, std::size_t, std::size_t, PairRest&);
 
 // The same kernel compiled for AVX-512VL (its 32 vector registers; the
 // same 256-bit lanes and the same bits). Only call when

@@ -145,10 +145,7 @@ DetectionTimes Simulation::detect_contacts() {
   settle_damping_work(blocks_.state, contacts_.sub, dt_);
   const DetectionTimes times =
       detector_.detect(blocks_, contacts_, bond_initial_ && contacts_.detections == 0, laws_);
-  if (sim_.damping_scheme == DampingScheme::split) {  // per-subcontact scratch of the second pass
-    dashpot_state_.resize(contacts_.sub.size());
-    dashpot_rest_.resize(contacts_.sub.size());
-  }
+  if (sim_.damping_scheme == DampingScheme::split) size_split_arrays();
   if (!adaptive_dt_) return times;
   const CriticalStep c =
       critical_time_step_from_contacts(blocks_, contacts_, laws_, step_joint_, sim_.safety_factor, dt_,
@@ -326,28 +323,56 @@ void Simulation::gather_two_blocks(int i, int end) {
 // The split scheme's rest of the dashpots gathered onto block i's joint
 // force and moment (the law's already there): the same fixed-order sum over
 // the rest slots, then added.
-// Blocks i and i + 1 (when below end), as gather_two_blocks.
-void Simulation::gather_rest(int i, int end) {
+// The split scheme's per-subcontact and per-pair scratch, and each block's
+// pairs (in increasing order, each entry 2·pair + 1 where the block is the
+// pair's reference): sized and listed after each detection.
+void Simulation::size_split_arrays() {
+  dashpot_state_.resize(contacts_.sub.size());
+  dashpot_rest_.resize(contacts_.pairs.size());
+  const int n = blocks_.count;
+  rest_offset_.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (const ContactPair& cp : contacts_.pairs) {
+    ++rest_offset_[static_cast<std::size_t>(cp.a) + 1];
+    ++rest_offset_[static_cast<std::size_t>(cp.b) + 1];
+  }
+  for (int i = 0; i < n; ++i) rest_offset_[i + 1] += rest_offset_[i];
+  rest_entry_.resize(static_cast<std::size_t>(rest_offset_[n]));
+  std::vector<int> next(rest_offset_.begin(), rest_offset_.end() - 1);
+  for (std::size_t q = 0; q < contacts_.pairs.size(); ++q) {
+    const ContactPair& cp = contacts_.pairs[q];
+    for (const int b : {cp.a, cp.b})
+      rest_entry_[static_cast<std::size_t>(next[b]++)] = 2 * static_cast<int>(q) + (b == cp.ref_block ? 1 : 0);
+  }
+}
+
+// The split scheme's rest of the dashpots onto block i's joint force and
+// moment (the law's already there): its pairs' sums in a fixed order.
+void Simulation::gather_rest(int i) {
   auto& st = blocks_.state;
-  const int last = std::min(i + 2, end);
-#ifdef POLYDEM_LANES_AVX2
-  if (use_lanes(code_path_)) {
-    const gather_lanes::GatherArrays a =
-        gather_lane_arrays(contacts_, dashpot_rest_.data(), st.position, rest_force_, rest_torque_);
-    if (last - i == 2)
-      gather_lanes::gather_two(a, i, i + 1);
-    else
-      gather_lanes::gather_block(a, i);
-  } else
-#endif
-  {
-    for (int b = i; b < last; ++b)
-      gather_block_force(contacts_, dashpot_rest_.data(), b, st.position[b], rest_force_[b], rest_torque_[b]);
+  double f0 = 0, f1 = 0, f2 = 0, m0 = 0, m1 = 0, m2 = 0;
+  for (int k = rest_offset_[i]; k < rest_offset_[i + 1]; ++k) {
+    const int e = rest_entry_[k];
+    const lanes::PairRest& p = dashpot_rest_[static_cast<std::size_t>(e >> 1)];
+    if (e & 1) {  // the reference block: the reaction
+      f0 -= p.force[0];
+      f1 -= p.force[1];
+      f2 -= p.force[2];
+      m0 += p.moment_ref[0];
+      m1 += p.moment_ref[1];
+      m2 += p.moment_ref[2];
+    } else {
+      f0 += p.force[0];
+      f1 += p.force[1];
+      f2 += p.force[2];
+      m0 += p.moment[0];
+      m1 += p.moment[1];
+      m2 += p.moment[2];
+    }
   }
-  for (int b = i; b < last; ++b) {
-    st.contact_force[b] += rest_force_[b];
-    st.contact_torque[b] += rest_torque_[b];
-  }
+  rest_force_[i] = Vec3(f0, f1, f2);
+  rest_torque_[i] = Vec3(m0, m1, m2);
+  st.contact_force[i] += rest_force_[i];
+  st.contact_torque[i] += rest_torque_[i];
 }
 
 // The work of the rest of the dashpots, block by block: its force and
@@ -511,7 +536,8 @@ void Simulation::gather_and_advance(const StepLoads& loads, int begin, int end, 
       gather_two_blocks(i0, end);
       return;
     }
-    gather_rest(i0, end);
+    gather_rest(i0);
+    if (i0 + 1 < end) gather_rest(i0 + 1);
   };
   // The blocks two by two: both gathered, then each updated.
   if (local_damping_ > 0) {
@@ -919,8 +945,7 @@ void Simulation::load_state(ByteReader& r) {
   }
   update_split_fraction();  // θ is the step's (dt_ restored above)
   if (sim_.damping_scheme == DampingScheme::split) {
-    dashpot_state_.resize(contacts_.sub.size());
-    dashpot_rest_.resize(contacts_.sub.size());
+    size_split_arrays();
     r.get_sized(rest_work_, n, "rest_work");
     r.get_sized(rest_pending_, n, "rest_pending");
   }

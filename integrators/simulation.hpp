@@ -7,6 +7,12 @@
 //     3. gather: each block sums its slots in fixed order   (parallel)
 //     4. central differences for free blocks                (parallel)
 //        and each thread's part of the next step's test     (parallel)
+//     With simulation.damping_scheme = "split" (split_damping.hpp) the law
+//     applies 1 − θ of each dashpot and stage 3 also predicts each block's
+//     velocities after the step; then
+//     3a. the rest θ of the dashpots from them, pair by pair  (parallel)
+//     3b. each block gathers the rest onto its force          (parallel)
+//     before stage 4 (two barriers more, one pass over the subcontacts).
 //     5. kinematic base blocks follow the ground velocity; the test's
 //        parts merged (contact/detection.hpp TravelBound)
 //     6. every 256 steps, the guard checks the state
@@ -238,7 +244,8 @@ class Simulation {
   // gather the joint law's forces and predict each block's velocities after
   // the step (velocity_next_, omega_next_); kinematic blocks their own.
   void gather_and_predict(const StepLoads& loads, int begin, int end);
-  void gather_rest(int i, int end);
+  void gather_rest(int i);
+  void size_split_arrays();
   void book_rest_work(int begin, int end, bool kinematic);
   // Block i's force and moment at the step's time, and the inverse mass and
   // principal inertia its update uses (the static stage's local damping and
@@ -290,10 +297,11 @@ class Simulation {
   CriticalStep step_source_;
   // The split damping scheme: θ (0: the explicit scheme, and none of the
   // arrays below is sized or touched), each subcontact's DashpotState and
-  // rest force, each block's predicted velocities and gathered rest.
+  // rest per pair, each block's predicted velocities and gathered rest.
   double split_fraction_ = 0;
   std::vector<std::uint8_t> dashpot_state_;
-  std::vector<Vec3> dashpot_rest_;
+  std::vector<lanes::PairRest> dashpot_rest_;    // per pair
+  std::vector<int> rest_offset_, rest_entry_;     // each block's pairs (size_split_arrays)
   std::vector<Vec3> velocity_next_, omega_next_, rest_force_, rest_torque_;
   std::vector<double> rest_work_;     // per block, J (the ledger's: −Σ is dissipation)
   std::vector<double> rest_pending_;  // per block, J: the last step's second half, booked at the next

@@ -159,6 +159,19 @@ def main():
         if block < 1.98:
             failures.append(f"damping_stability.py: block-implicit limit {block} below the springs' 2")
 
+    # The split scheme at the engine's step on a few networks, proportional
+    # damping and not: stable just below it, and none stable only far below.
+    proc = subprocess.run([PYTHON, os.path.join(scripts, "damping_stability.py"), "--split", "--trials", "4"],
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    print(proc.stdout)
+    rows = [line.split() for line in proc.stdout.splitlines()[1:] if line.strip()]
+    if proc.returncode != 0 or len(rows) != 12:
+        failures.append(f"damping_stability.py --split: exit {proc.returncode}, {len(rows)} rows")
+    for r in rows:
+        radius, ratio = float(r[-2]), float(r[-1])
+        if radius > 1 + 1e-6 or ratio < 0.999:
+            failures.append(f"damping_stability.py --split: {' '.join(r)}: unstable below the engine's step")
+
     if failures:
         print("FAILED:\n  " + "\n  ".join(failures))
         sys.exit(1)
