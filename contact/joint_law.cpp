@@ -366,8 +366,7 @@ void rest_frame(const BlockState& st, const std::vector<Vec3>& velocity_next, co
   f.n[0] = (Rr[0] * l0 + Rr[3] * l1) + Rr[6] * l2;
   f.n[1] = (Rr[1] * l0 + Rr[4] * l1) + Rr[7] * l2;
   f.n[2] = Rr[2] * l0 + (Rr[5] * l1 + Rr[8] * l2);
-  const double* Rc = st.rotation[c].data();
-  for (int i = 0; i < 9; ++i) f.Rc[i] = Rc[i];
+  f.Rc = st.rotation[c].data();
   for (int i = 0; i < 3; ++i) {
     f.xcr[i] = st.position[c][i] - st.position[r][i];
     f.dv[i] = velocity_next[c][i] - velocity_next[r][i];

@@ -85,7 +85,7 @@ using PairLawKernel = void (*)(const PairFrame&, const LawConstants&, const Subc
 // order (lane k takes subcontacts k, k + 4, …; then (l0 + l1) + (l2 + l3)).
 struct RestFrame {
   double n[3];       // the common plane's unit normal
-  double Rc[9];      // the incident block's rotation
+  const double* Rc;  // the incident block's rotation (the state's)
   double xcr[3];     // x_inc − x_ref
   double dv[3];      // v_inc − v_ref, predicted
   double wc[3];      // the incident block's predicted angular velocity
@@ -104,6 +104,7 @@ struct RestArrays {
 struct PairRest {
   double force[3], moment[3], moment_ref[3];
 };
+static_assert(sizeof(PairRest) == 9 * sizeof(double), "the kernel stores force and moment x as four doubles");
 void pair_rest(const RestFrame& f, const RestArrays& a, std::size_t s0, std::size_t count, PairRest& out);
 void pair_rest_wide(const RestFrame& f, const RestArrays& a, std::size_t s0, std::size_t count, PairRest& out);
 using PairRestKernel = void (*)(const RestFrame&, const RestArrays&, std::size_t, std::size_t, PairRest&);
