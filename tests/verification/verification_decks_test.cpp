@@ -13,6 +13,18 @@ namespace {
 
 std::string deck(const std::string& name) { return std::string(POLYDEM_SOURCE_DIR) + "/examples/verification/" + name; }
 
+// Every deck of examples/verification/, and a test's name from a deck's.
+constexpr const char* kDecks[] = {"resting_block.toml", "slope_slide.toml", "slope_stick.toml",
+                                  "rocking_onset.toml", "free_rocking.toml", "energy_conservation.toml",
+                                  "stack_of_ten.toml", "dry_stone_wall.toml", "slope_equilibrium.toml",
+                                  "pulse_rocking_body_force.toml", "pulse_rocking_kinematic.toml",
+                                  "arch_self_weight.toml", "column_rocking.toml", "cut_wall.toml",
+                                  "imported_wall.toml", "dry_base_slide.toml", "three_components.toml"};
+std::string deck_test_name(const ::testing::TestParamInfo<const char*>& info) {
+  const std::string n = info.param;
+  return n.substr(0, n.find('.'));
+}
+
 class VerificationDeck : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(VerificationDeck, ChecksPass) {
@@ -29,17 +41,7 @@ TEST_P(VerificationDeck, ChecksPass) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Decks, VerificationDeck,
-                         ::testing::Values("resting_block.toml", "slope_slide.toml", "slope_stick.toml",
-                                           "rocking_onset.toml", "free_rocking.toml", "energy_conservation.toml",
-                                           "stack_of_ten.toml", "dry_stone_wall.toml", "slope_equilibrium.toml",
-                                           "pulse_rocking_body_force.toml", "pulse_rocking_kinematic.toml",
-                                           "arch_self_weight.toml", "column_rocking.toml",
-                                           "cut_wall.toml", "imported_wall.toml",
-                                           "dry_base_slide.toml", "three_components.toml"),
-                         [](const auto& info) {
-                           std::string n = info.param;
-                           return n.substr(0, n.find('.'));
-                         });
+                         ::testing::ValuesIn(kDecks), deck_test_name);
 
 // The same decks and checks under the split damping scheme
 // (simulation.damping_scheme = "split", docs/deck.md): every analytical
@@ -61,17 +63,7 @@ TEST_P(VerificationDeckSplitDamping, ChecksPass) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Decks, VerificationDeckSplitDamping,
-                         ::testing::Values("resting_block.toml", "slope_slide.toml", "slope_stick.toml",
-                                           "rocking_onset.toml", "free_rocking.toml", "energy_conservation.toml",
-                                           "stack_of_ten.toml", "dry_stone_wall.toml", "slope_equilibrium.toml",
-                                           "pulse_rocking_body_force.toml", "pulse_rocking_kinematic.toml",
-                                           "arch_self_weight.toml", "column_rocking.toml",
-                                           "cut_wall.toml", "imported_wall.toml",
-                                           "dry_base_slide.toml", "three_components.toml"),
-                         [](const auto& info) {
-                           std::string n = info.param;
-                           return n.substr(0, n.find('.'));
-                         });
+                         ::testing::ValuesIn(kDecks), deck_test_name);
 
 // A check that cannot fail is no check: a slope steeper than friction must
 // fail the `stick` check, and a wrong expected value must fail.
