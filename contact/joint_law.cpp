@@ -389,7 +389,10 @@ void pair_rest_portable(const lanes::RestFrame& f, const lanes::RestArrays& a, s
   for (std::size_t j = 0; j < count; ++j) {
     const std::size_t s = s0 + j;
     const std::uint8_t state = a.dashpot[s];
-    if (state == 0) continue;
+    if (state == 0) {
+      a.rx[s] = a.ry[s] = a.rz[s] = 0.0;
+      continue;
+    }
     const double px = a.ipx[s], py = a.ipy[s], pz = a.ipz[s];
     const double ax = (R[0] * px + R[3] * py) + R[6] * pz;
     const double ay = (R[1] * px + R[4] * py) + R[7] * pz;
@@ -412,6 +415,9 @@ void pair_rest_portable(const lanes::RestFrame& f, const lanes::RestArrays& a, s
       fz = fz - k * (vz - vn * n2);
     }
     a.normal_force[s] = a.normal_force[s] + fn;
+    a.rx[s] = fx;
+    a.ry[s] = fy;
+    a.rz[s] = fz;
     const std::size_t l = j % 4;
     sum[0][l] = sum[0][l] + fx;
     sum[1][l] = sum[1][l] + fy;
@@ -438,9 +444,12 @@ void pair_rest_portable(const lanes::RestFrame& f, const lanes::RestArrays& a, s
 void apply_dashpot_rest(const JointLaws& laws, double theta, const BlockState& st,
                         const std::vector<Vec3>& velocity_next, const std::vector<Vec3>& omega_next,
                         const std::vector<ContactPair>& pairs, const std::uint8_t* dashpot, Subcontacts& sub,
-                        std::vector<lanes::PairRest>& rest, std::size_t pair_begin, std::size_t pair_end,
-                        CodePath path) {
+                        std::vector<lanes::PairRest>& rest, Vec3Array& rest_force, std::size_t pair_begin,
+                        std::size_t pair_end, CodePath path) {
   lanes::RestArrays a;
+  a.rx = rest_force.x.data();
+  a.ry = rest_force.y.data();
+  a.rz = rest_force.z.data();
   a.ipx = sub.inc_point_local.x.data();
   a.ipy = sub.inc_point_local.y.data();
   a.ipz = sub.inc_point_local.z.data();

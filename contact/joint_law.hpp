@@ -136,7 +136,9 @@ void compute_pair_forces(const JointLaws& laws, const BlockState& state, const s
 // block's velocities after the step's forces, before the blocks move) at its
 // point, normal and shear as in the law, the normal force still never
 // pulling an unbonded joint together. Each normal part goes into its
-// subcontact's normal force; `rest` (one per pair) receives the pair's sum:
+// subcontact's normal force, each force into `rest_force` (one per
+// subcontact, zero where no dashpot acts: what a record of the joint's
+// force adds to the law's); `rest` (one per pair) receives the pair's sum:
 // the rest force on the incident block and its moment about each block's
 // centroid, which the blocks gather pair by pair onto the law's force (a
 // quarter of the entries of a gather by subcontact). Its work is booked
@@ -146,8 +148,8 @@ void compute_pair_forces(const JointLaws& laws, const BlockState& state, const s
 void apply_dashpot_rest(const JointLaws& laws, double theta, const BlockState& state,
                         const std::vector<Vec3>& velocity_next, const std::vector<Vec3>& omega_next,
                         const std::vector<ContactPair>& pairs, const std::uint8_t* dashpot, Subcontacts& sub,
-                        std::vector<lanes::PairRest>& rest, std::size_t pair_begin, std::size_t pair_end,
-                        CodePath path = CodePath::automatic);
+                        std::vector<lanes::PairRest>& rest, Vec3Array& rest_force, std::size_t pair_begin,
+                        std::size_t pair_end, CodePath path = CodePath::automatic);
 
 // Books the second half of the last step's dashpot work of every
 // subcontact with the relative velocity at its point now (the state's

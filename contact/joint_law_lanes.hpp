@@ -98,6 +98,7 @@ struct RestArrays {
   const std::uint8_t* bonded;
   const std::uint8_t* dashpot;  // DashpotState
   double* normal_force;
+  double *rx, *ry, *rz;  // the rest force per subcontact (0 where no dashpot acts), for the records
 };
 // Out: force[3] on the incident block, moment[3] about its centroid,
 // moment_ref[3] of the reaction about the reference block's centroid.

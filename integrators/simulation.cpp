@@ -234,7 +234,7 @@ void Simulation::step() {
       const auto [pb, pe] = thread_range(contacts_.pairs.size(), static_cast<std::size_t>(nt),
                                          static_cast<std::size_t>(t));
       apply_dashpot_rest(laws_, split_fraction_, blocks_.state, velocity_next_, omega_next_, contacts_.pairs,
-                         dashpot_state_.data(), contacts_.sub, dashpot_rest_, pb, pe, code_path_);
+                         dashpot_state_.data(), contacts_.sub, dashpot_rest_, rest_force_sub_, pb, pe, code_path_);
 #pragma omp barrier
     }
     gather_and_advance(loads, begin, end, split_fraction_ > 0);
@@ -320,14 +320,12 @@ void Simulation::gather_two_blocks(int i, int end) {
   if (two) gather_block(i + 1);
 }
 
-// The split scheme's rest of the dashpots gathered onto block i's joint
-// force and moment (the law's already there): the same fixed-order sum over
-// the rest slots, then added.
 // The split scheme's per-subcontact and per-pair scratch, and each block's
 // pairs (in increasing order, each entry 2·pair + 1 where the block is the
 // pair's reference): sized and listed after each detection.
 void Simulation::size_split_arrays() {
   dashpot_state_.resize(contacts_.sub.size());
+  rest_force_sub_.resize(contacts_.sub.size());
   dashpot_rest_.resize(contacts_.pairs.size());
   const int n = blocks_.count;
   rest_offset_.assign(static_cast<std::size_t>(n) + 1, 0);
@@ -404,7 +402,12 @@ void Simulation::gather_and_predict(const StepLoads& loads, int begin, int end) 
   for (int i0 = begin; i0 < end; i0 += 2) {
     gather_two_blocks(i0, end);
     for (int i = i0; i < std::min(i0 + 2, end); ++i) {
-      if (pr.motion[i] != BlockMotion::free) {
+      if (pr.motion[i] == BlockMotion::fixed) {  // never moves (whatever the ground does)
+        velocity_next_[i] = st.velocity[i];
+        omega_next_[i] = st.angular_velocity[i];
+        continue;
+      }
+      if (pr.motion[i] == BlockMotion::kinematic) {
         kinematic_velocity_next(i, velocity_next_[i], omega_next_[i]);
         continue;
       }

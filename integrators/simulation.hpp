@@ -143,6 +143,11 @@ class Simulation {
   const CriticalStep& time_step_source() const { return step_source_; }
   // The split damping scheme's θ for the current step (0: explicit).
   double split_fraction() const { return split_fraction_; }
+  // Subcontact s's whole joint force on the incident block at the last step:
+  // the law's slot, plus under the split scheme the rest of its dashpots.
+  Vec3 subcontact_force(std::size_t s) const {
+    return split_fraction_ > 0 ? Vec3(contacts_.sub.force[s] + rest_force_sub_[s]) : contacts_.sub.force[s];
+  }
   long steps() const { return steps_; }
   const StepProfile& profile() const { return profile_; }
 
@@ -301,6 +306,7 @@ class Simulation {
   double split_fraction_ = 0;
   std::vector<std::uint8_t> dashpot_state_;
   std::vector<lanes::PairRest> dashpot_rest_;    // per pair
+  Vec3Array rest_force_sub_;                      // per subcontact (subcontact_force)
   std::vector<int> rest_offset_, rest_entry_;     // each block's pairs (size_split_arrays)
   std::vector<Vec3> velocity_next_, omega_next_, rest_force_, rest_torque_;
   std::vector<double> rest_work_;     // per block, J (the ledger's: −Σ is dissipation)

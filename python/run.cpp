@@ -233,7 +233,9 @@ class Run {
     d["reference_block"] = ref;
     d["incident_block"] = inc;
     d["point"] = copy_vec3s(s.point);
-    d["force"] = copy_vec3s(s.force);
+    std::vector<Vec3> force(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i) force[i] = sim().subcontact_force(i);  // the split scheme's rest too
+    d["force"] = copy_vec3s(force);
     d["shear_force"] = copy_vec3s(s.shear_force);
     d["normal_force"] = normal;
     d["overlap"] = overlap;

@@ -247,6 +247,7 @@ TEST(JointLawLanes, TheSplitSchemesPartsGiveTheSameBits) {
     std::vector<Subcontacts> results;
     std::vector<std::vector<std::uint8_t>> states;
     std::vector<std::vector<lanes::PairRest>> rests;
+    std::vector<Vec3Array> rest_forces;
     for (const CodePath path : {CodePath::portable, CodePath::lanes, CodePath::lanes_avx2}) {
       Subcontacts sub = s.sub;
       std::vector<std::uint8_t> state(sub.size(), 9);
@@ -254,8 +255,10 @@ TEST(JointLawLanes, TheSplitSchemesPartsGiveTheSameBits) {
       for (lanes::PairRest& p : rest) std::fill(&p.force[0], &p.force[0] + 9, 7.0);  // a slot not written shows
       compute_pair_forces(laws, s.st, s.pairs, sub, dt, 0, s.pairs.size(), path, SplitPart{1.0 - theta, state.data()});
       const std::vector<double> law_normal = sub.normal_force;
-      apply_dashpot_rest(laws, theta, s.st, v_next, w_next, s.pairs, state.data(), sub, rest, 0, s.pairs.size(),
-                         path);
+      Vec3Array rest_force;
+      rest_force.assign(sub.size(), Vec3::Constant(7.0));
+      apply_dashpot_rest(laws, theta, s.st, v_next, w_next, s.pairs, state.data(), sub, rest, rest_force, 0,
+                         s.pairs.size(), path);
       if (path == CodePath::portable) {
         for (std::size_t k = 0; k < sub.size(); ++k) {
           none += state[k] == 0;
@@ -268,11 +271,13 @@ TEST(JointLawLanes, TheSplitSchemesPartsGiveTheSameBits) {
       results.push_back(sub);
       states.push_back(state);
       rests.push_back(rest);
+      rest_forces.push_back(rest_force);
     }
     for (std::size_t p = 1; p < results.size(); ++p) {
       expect_same_bits(results[p], results[0], trial);
       EXPECT_EQ(states[p], states[0]) << trial;
       EXPECT_EQ(std::memcmp(rests[p].data(), rests[0].data(), rests[0].size() * sizeof(lanes::PairRest)), 0) << trial;
+      EXPECT_TRUE(same_bits(rest_forces[p], rest_forces[0])) << trial;
     }
   }
   EXPECT_GT(none, 100);

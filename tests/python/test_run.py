@@ -138,3 +138,28 @@ def test_energies_are_the_whole_ledger():
     terms = ("kinetic", "gravitational", "strain", "slip", "damping", "dropped_shear", "resampled_normal")
     total = sum(e[k] for k in terms) - e["load_work"]
     assert total == pytest.approx(e["balance"], abs=1e-9 * (1.0 + sum(abs(e[k]) for k in terms)))
+
+
+def test_split_damping_contacts_hold_the_whole_joint_force():
+    # Under simulation.damping_scheme = "split" the blocks feel the law's
+    # forces and the rest of the dashpots; each subcontact's recorded force
+    # is both, so the pillar's subcontacts sum to its contact force. A stiff
+    # dashpot and an impact make the rest a large part of it.
+    scene = (polydem.Scene(end_time=0.05, damping_scheme="split")
+             .joint(normal_stiffness=98e9, friction_angle=30.0, damping=1e-4)
+             .add_box("base", size=(2, 2, 0.5), center=(0, 0, -0.25), motion="fixed")
+             .add_box("pillar", size=(0.5, 0.5, 2), center=(0, 0, 1), density=2600.0, velocity=(0, 0, -0.05)))
+    run = polydem.Run(scene)
+    p = run.block("pillar")
+    weight = run.masses[p] * 9.81
+    while run.steps < 100 and run.contact_forces[p, 2] < 5 * weight:  # into the impact
+        run.step(1)
+    c = run.contacts()
+    total = np.zeros(3)
+    for k in range(len(c["normal_force"])):
+        if c["incident_block"][k] == p:
+            total += c["force"][k]
+        elif c["reference_block"][k] == p:
+            total -= c["force"][k]
+    assert run.contact_forces[p, 2] > 5 * weight  # the impact: the dashpots at work
+    assert np.allclose(total, run.contact_forces[p], rtol=1e-9, atol=1e-9 * weight)
