@@ -5,6 +5,8 @@
 #include "io/summary.hpp"
 #include "run/run_scene.hpp"
 
+#include "restart_check.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -826,25 +828,8 @@ TEST(GroupsDeterminism, OneAndTwoThreadsGiveTheSameBits) {
 // pusher moving, their ledger's last-step forces) ends bit for bit as the
 // run that was not stopped.
 TEST(GroupsDeterminism, ARestartContinuesBitwise) {
-  const SceneSpec spec = parse_deck(group_wall_deck() + "[output]\ncheckpoint_interval = 0.004\n", "group_wall.toml");
-  std::string first;
-  RunControl keep;
-  keep.checkpoint = [&](const std::string& state) {
-    if (first.empty()) first = state;
-  };
-  const RunReport whole = run_scene(spec, keep);
-  ASSERT_FALSE(first.empty());
-  RunControl again;
-  again.restart = &first;
-  const RunReport resumed = run_scene(spec, again);
-  EXPECT_EQ(whole.steps, resumed.steps);
-  EXPECT_EQ(std::memcmp(whole.final_position.data(), resumed.final_position.data(),
-                        whole.final_position.size() * sizeof(Vec3)),
-            0);
-  EXPECT_EQ(std::memcmp(whole.final_velocity.data(), resumed.final_velocity.data(),
-                        whole.final_velocity.size() * sizeof(Vec3)),
-            0);
-  EXPECT_EQ(std::memcmp(&whole.energy, &resumed.energy, sizeof(EnergyLedger)), 0);
+  expect_restart_continues_bitwise(
+      parse_deck(group_wall_deck() + "[output]\ncheckpoint_interval = 0.004\n", "group_wall.toml"));
 }
 
 }  // namespace
