@@ -231,6 +231,15 @@ inline void rotation_series(double t0, double t1, double t2, double a2, double* 
 // the packed and the scalar part of a Vec3, which cost a fifth of a step.
 // A joint turning beyond rotation_matrix's series takes rotation_matrix
 // itself, with the same θ.
+// The pair's common normal in the world, R_ref·nl, in Eigen's association
+// (the lanes' and the portable paths' one computation of it).
+[[gnu::always_inline]] inline void world_normal(const double* Rr, const Vec3& nl, double* n) {
+  const double l0 = nl.x(), l1 = nl.y(), l2 = nl.z();
+  n[0] = (Rr[0] * l0 + Rr[3] * l1) + Rr[6] * l2;
+  n[1] = (Rr[1] * l0 + Rr[4] * l1) + Rr[7] * l2;
+  n[2] = Rr[2] * l0 + (Rr[5] * l1 + Rr[8] * l2);
+}
+
 [[gnu::always_inline]] inline void pair_frame(const BlockState& st, int r, int c, const Vec3& nl, double dt,
                                               lanes::PairFrame& f) {
   const double* Rr = st.rotation[r].data();
@@ -240,10 +249,9 @@ inline void rotation_series(double t0, double t1, double t2, double a2, double* 
   const double* vc = st.velocity[c].data();
   const double* wr = st.angular_velocity[r].data();
   const double* wc = st.angular_velocity[c].data();
-  const double l0 = nl.x(), l1 = nl.y(), l2 = nl.z();
-  const double n0 = (Rr[0] * l0 + Rr[3] * l1) + Rr[6] * l2;
-  const double n1 = (Rr[1] * l0 + Rr[4] * l1) + Rr[7] * l2;
-  const double n2 = Rr[2] * l0 + (Rr[5] * l1 + Rr[8] * l2);
+  double nw[3];
+  world_normal(Rr, nl, nw);
+  const double n0 = nw[0], n1 = nw[1], n2 = nw[2];
   // joint_spin: θ = dt·(w_ref + (½·(w_inc − w_ref)·n)·n)
   const double h = 0.5 * (((wc[0] - wr[0]) * n0 + (wc[1] - wr[1]) * n1) + (wc[2] - wr[2]) * n2);
   const double t0 = dt * (wr[0] + h * n0), t1 = dt * (wr[1] + h * n1), t2 = dt * (wr[2] + h * n2);
@@ -358,14 +366,10 @@ void compute_pair_forces(const JointLaws& laws, const BlockState& st, const std:
 namespace {
 
 // The RestFrame of the pair (r reference, c incident, `nl` the reference
-// face's normal in r's frame): the normal in pair_frame's order.
+// face's normal in r's frame): the normal as pair_frame's.
 void rest_frame(const BlockState& st, const std::vector<Vec3>& velocity_next, const std::vector<Vec3>& omega_next,
                 int r, int c, const Vec3& nl, double cn, double cs, lanes::RestFrame& f) {
-  const double* Rr = st.rotation[r].data();
-  const double l0 = nl.x(), l1 = nl.y(), l2 = nl.z();
-  f.n[0] = (Rr[0] * l0 + Rr[3] * l1) + Rr[6] * l2;
-  f.n[1] = (Rr[1] * l0 + Rr[4] * l1) + Rr[7] * l2;
-  f.n[2] = Rr[2] * l0 + (Rr[5] * l1 + Rr[8] * l2);
+  world_normal(st.rotation[r].data(), nl, f.n);
   f.Rc = st.rotation[c].data();
   for (int i = 0; i < 3; ++i) {
     f.xcr[i] = st.position[c][i] - st.position[r][i];

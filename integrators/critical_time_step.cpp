@@ -58,9 +58,7 @@ void finish(CriticalStep& out, const JointSpec& joint, double safety_factor, Dam
   const double xi = 0.5 * joint.damping * out.omega_max;
   out.damping_ratio = xi;
   if (scheme == DampingScheme::split) {
-    const SplitDamping s = split_damping(xi);
-    out.split_fraction = s.fraction;
-    out.critical = s.limit / out.omega_max;
+    out.critical = split_damping(xi).limit / out.omega_max;
   } else {
     out.critical = (2.0 / out.omega_max) * (std::sqrt(1.0 + xi * xi) - xi);
   }

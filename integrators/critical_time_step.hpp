@@ -44,9 +44,6 @@ struct CriticalStep {
   double critical = 0;   // s, without safety factor
   double chosen = 0;     // s
   int governing_block = -1;
-  // DampingScheme::split: the part θ of each dashpot applied after the
-  // velocity update (split_damping.hpp); 0 with the explicit scheme.
-  double split_fraction = 0;
 };
 
 // `scheme`: the explicit dashpots' limit above, or the split scheme's

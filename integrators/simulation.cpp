@@ -238,7 +238,9 @@ void Simulation::step() {
 #pragma omp barrier
     }
     gather_and_advance(loads, begin, end, split_fraction_ > 0);
-    if (split_fraction_ > 0) book_rest_work(begin, end, false);
+    if (split_fraction_ > 0)
+      for (int i = begin; i < end; ++i)
+        if (blocks_.props.motion[i] == BlockMotion::free) book_rest_work(i);
     // The next step's half-margin test, this thread's part: over the blocks
     // it has just moved, while it holds them (no second pass over every
     // block, on one thread, at the next step's start).
@@ -247,7 +249,8 @@ void Simulation::step() {
     detector_.add_travels(blocks_, begin, end, travel_ref_, dt_, part);
   }
   move_kinematic_blocks();
-  if (split_fraction_ > 0) book_rest_work(0, blocks_.count, true);
+  if (split_fraction_ > 0)
+    for (int i : blocks_.kinematic_blocks) book_rest_work(i);
   settle_travel_test(region_threads);
   time_ += dt_;
   dt_prev_ = dt_;
@@ -380,19 +383,15 @@ void Simulation::gather_rest(int i) {
 // velocities before the update, booked now, and half with those after it,
 // booked at the next step (rest_pending_), when the ledger's kinetic energy
 // has taken that half of the impulse. Free blocks in the threads, kinematic
-// ones after they have moved.
-void Simulation::book_rest_work(int begin, int end, bool kinematic) {
-  const auto& motion = blocks_.props.motion;
+// ones after they have moved (fixed blocks never move: no work).
+void Simulation::book_rest_work(int i) {
   const auto& st = blocks_.state;
   const double half = 0.5 * dt_;
-  for (int i = begin; i < end; ++i) {
-    if ((motion[i] == BlockMotion::free) == kinematic) continue;
-    const Vec3& v = st.velocity[i];
-    const Vec3& w = st.angular_velocity[i];
-    const Vec3 v_before = 2.0 * velocity_mid_[i] - v, w_before = 2.0 * omega_mid_[i] - w;
-    rest_work_[i] += rest_pending_[i] + half * (rest_force_[i].dot(v_before) + rest_torque_[i].dot(w_before));
-    rest_pending_[i] = half * (rest_force_[i].dot(v) + rest_torque_[i].dot(w));
-  }
+  const Vec3& v = st.velocity[i];
+  const Vec3& w = st.angular_velocity[i];
+  const Vec3 v_before = 2.0 * velocity_mid_[i] - v, w_before = 2.0 * omega_mid_[i] - w;
+  rest_work_[i] += rest_pending_[i] + half * (rest_force_[i].dot(v_before) + rest_torque_[i].dot(w_before));
+  rest_pending_[i] = half * (rest_force_[i].dot(v) + rest_torque_[i].dot(w));
 }
 
 void Simulation::gather_and_predict(const StepLoads& loads, int begin, int end) {

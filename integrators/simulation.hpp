@@ -251,7 +251,7 @@ class Simulation {
   void gather_and_predict(const StepLoads& loads, int begin, int end);
   void gather_rest(int i);
   void size_split_arrays();
-  void book_rest_work(int begin, int end, bool kinematic);
+  void book_rest_work(int i);
   // Block i's force and moment at the step's time, and the inverse mass and
   // principal inertia its update uses (the static stage's local damping and
   // density scaling included).

@@ -4,7 +4,14 @@
 // quadratic formula (complex when the discriminant is negative).
 #include "integrators/split_damping.hpp"
 
+#include "contact/subcontacts.hpp"
+#include "integrators/critical_time_step.hpp"
+#include "integrators/joint_modes.hpp"
+#include "integrators/simulation.hpp"
+
 #include <gtest/gtest.h>
+
+#include <cstdio>
 
 #include <algorithm>
 #include <cmath>
@@ -106,13 +113,6 @@ TEST(SplitDamping, TheSpiresStep) {
 // stays positive (min u + β·u̇ = 12.7 µm, computed beside). The stone's
 // highest mode on the joint is its rocking with sliding (joint_modes:
 // 1436 rad/s, Ξ = β·ω_max/2 = 1.36), which sets the step.
-#include "contact/subcontacts.hpp"
-#include "integrators/critical_time_step.hpp"
-#include "integrators/joint_modes.hpp"
-#include "integrators/simulation.hpp"
-
-#include <cstdio>
-
 namespace {
 
 constexpr double kBounceXi = 0.83, kBounceV0 = 0.01, kBounceKn = 1e9;
