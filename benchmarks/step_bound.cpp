@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
       RunSetup setup;
       const std::unique_ptr<Simulation> sim = build_simulation(spec, setup);
       const JointLaws& laws = sim->joint_laws();
-      const JointSpec& beta = sim->step_joint();
+      const double beta = sim->step_law().beta;
       const double sf = spec.simulation.safety_factor;
       const auto t0 = std::chrono::steady_clock::now();
       const JointModes m = joint_modes(sim->blocks(), sim->contacts(), laws);

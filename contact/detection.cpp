@@ -258,16 +258,11 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
   // 4. Subcontacts in candidate order (sorted by block pair), with the
   // history of the detection before, carried by position on the joint.
   build_subcontacts(b, im.candidates, im.patches, im.found, bond_new, contacts);
-  if (bond_new && !laws.single()) {  // only the joints whose law has a strength start bonded
-    for (std::size_t s = 0; s < contacts.sub.size(); ++s) {
-      const JointLaw& law = laws.between(contacts.sub.ref_block[s], contacts.sub.inc_block[s]);
-      if (!(law.cohesion > 0 || law.tensile_strength > 0)) contacts.sub.bonded[s] = 0;
-    }
+  if (bond_new) {  // only the joints whose law has a strength start bonded
+    for (std::size_t s = 0; s < contacts.sub.size(); ++s)
+      if (!laws.between(contacts.sub.ref_block[s], contacts.sub.inc_block[s]).bonds()) contacts.sub.bonded[s] = 0;
   }
-  carry_history(b, old, contacts, laws.laws[0].ks, margin_, im.carry, threads);
-  if (!laws.single())  // the shear energy not carried over, at each joint's own ks
-    contacts.dropped_shear_energy =
-        old.dropped_shear_energy + (shear_strain_energy(laws, old.sub) - shear_strain_energy(laws, contacts.sub));
+  carry_history(b, old, contacts, laws, margin_, im.carry, threads);
   // Re-sampling may lower a pair's normal strain at this pose but not raise
   // it (joint_law.hpp); what it changes is the re-sampling's, not motion's,
   // and goes to the ledger.

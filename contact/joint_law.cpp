@@ -157,25 +157,6 @@ inline void open_joint(const JointLaw& law, Subcontacts& sub, std::size_t s, dou
 
 }  // namespace
 
-void compute_joint_forces(const JointLaw& law, const BlockState& st, Subcontacts& sub, double dt,
-                          std::size_t begin, std::size_t end) {
-  for (std::size_t s = begin; s < end; ++s) {
-    const int r = sub.ref_block[s];
-    const int c = sub.inc_block[s];
-    const Vec3 n = st.rotation[r] * sub.ref_normal_local[s];
-    const Vec3& xr = st.position[r];
-    const Vec3& xc = st.position[c];
-    const Vec3 p = xc + st.rotation[c] * sub.inc_point_local[s];
-    const double un = sub.ref_offset_local[s] + n.dot(xr) - n.dot(p);
-    const Vec3 vrel = (st.velocity[c] + st.angular_velocity[c].cross(p - xc)) -
-                      (st.velocity[r] + st.angular_velocity[r].cross(p - xr));
-    sub.point[s] = p;
-    sub.overlap[s] = un;
-    subcontact_law(law, sub, s, n, un, vrel, joint_spin(st.angular_velocity[r], st.angular_velocity[c], n, dt), dt,
-                   law.beta, nullptr);
-  }
-}
-
 namespace {
 
 lanes::SubcontactArrays lane_arrays(Subcontacts& sub) {
@@ -277,12 +258,11 @@ inline void rotation_series(double t0, double t1, double t2, double a2, double* 
   for (int i = 0; i < 9; ++i) f.Rc[i] = Rc[i];
 }
 
-// The pair loop; `law_of(r, c)` gives the pair's law (a constant for one law,
-// which the compiler folds: the one-law loop is the loop it always was).
-// kLanes: the subcontacts in AVX2 lanes (joint_law_lanes.hpp) by `kernel`,
-// lanes::pair_law or lanes::pair_law_wide, the same bits.
-template <bool kLanes, class LawOf>
-[[gnu::always_inline]] inline void pair_forces(const LawOf& law_of, const BlockState& st,
+// The pair loop, each pair under its own law. kLanes: the subcontacts in
+// AVX2 lanes (joint_law_lanes.hpp) by `kernel`, lanes::pair_law or
+// lanes::pair_law_wide, the same bits.
+template <bool kLanes>
+[[gnu::always_inline]] inline void pair_forces(const JointLaws& laws, const BlockState& st,
                                                const std::vector<ContactPair>& pairs, Subcontacts& sub, double dt,
                                                std::size_t pair_begin, std::size_t pair_end, const SplitPart& split,
                                                [[maybe_unused]] lanes::PairLawKernel kernel = nullptr) {
@@ -296,7 +276,7 @@ template <bool kLanes, class LawOf>
     if (cp.count == 0) continue;
     const int r = cp.ref_block;
     const int c = cp.ref_block == cp.a ? cp.b : cp.a;
-    const JointLaw& law = law_of(r, c);
+    const JointLaw& law = laws.between(r, c);
     // Shared by the pair's subcontacts: the common plane and both motions.
     const std::size_t s0 = static_cast<std::size_t>(cp.first);
     if constexpr (kLanes) {
@@ -329,38 +309,19 @@ template <bool kLanes, class LawOf>
   }
 }
 
-template <class LawOf>
-void pair_forces_on_path(const LawOf& law_of, const BlockState& st, const std::vector<ContactPair>& pairs,
-                         Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
-                         CodePath path, const SplitPart& split) {
-#ifdef POLYDEM_LANES_AVX2
-  if (use_lanes(path)) {
-    pair_forces<true>(law_of, st, pairs, sub, dt, pair_begin, pair_end, split,
-                      use_wide_lanes(path) ? &lanes::pair_law_wide : &lanes::pair_law);
-    return;
-  }
-#endif
-  pair_forces<false>(law_of, st, pairs, sub, dt, pair_begin, pair_end, split);
-}
-
 }  // namespace
-
-void compute_pair_forces(const JointLaw& law, const BlockState& st, const std::vector<ContactPair>& pairs,
-                         Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
-                         CodePath path, const SplitPart& split) {
-  pair_forces_on_path([&law](int, int) -> const JointLaw& { return law; }, st, pairs, sub, dt, pair_begin,
-                      pair_end, path, split);
-}
 
 void compute_pair_forces(const JointLaws& laws, const BlockState& st, const std::vector<ContactPair>& pairs,
                          Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
                          CodePath path, const SplitPart& split) {
-  if (laws.single()) {
-    compute_pair_forces(laws.laws[0], st, pairs, sub, dt, pair_begin, pair_end, path, split);
+#ifdef POLYDEM_LANES_AVX2
+  if (use_lanes(path)) {
+    pair_forces<true>(laws, st, pairs, sub, dt, pair_begin, pair_end, split,
+                      use_wide_lanes(path) ? &lanes::pair_law_wide : &lanes::pair_law);
     return;
   }
-  pair_forces_on_path([&laws](int a, int b) -> const JointLaw& { return laws.between(a, b); }, st, pairs, sub, dt,
-                      pair_begin, pair_end, path, split);
+#endif
+  pair_forces<false>(laws, st, pairs, sub, dt, pair_begin, pair_end, split);
 }
 
 namespace {
@@ -510,13 +471,14 @@ double overlap_now(const BlockState& st, const Subcontacts& sub, std::size_t s) 
   return sub.ref_offset_local[s] + n.dot(st.position[r]) - n.dot(p);
 }
 
+}  // namespace
+
 // Σ ½·kn·A·u_n² over the subcontacts, in subcontact order. The overlaps
 // first (in parallel with `threads` > 1 on large sets), into the calling
 // thread's scratch (reused: no allocation once warmed up; named by
 // reference, since inside the region thread_local would name each thread's
 // own); then the sum in order: the same bits on any thread count.
-template <class LawOf>
-double normal_strain_energy_with(const LawOf& law_of, const BlockState& st, const Subcontacts& sub, int threads) {
+double normal_strain_energy_now(const JointLaws& laws, const BlockState& st, const Subcontacts& sub, int threads) {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(sub.size());
   thread_local std::vector<double> scratch;
   std::vector<double>& un = scratch;
@@ -526,37 +488,10 @@ double normal_strain_energy_with(const LawOf& law_of, const BlockState& st, cons
     un[static_cast<std::size_t>(s)] = overlap_now(st, sub, static_cast<std::size_t>(s));
   double e = 0;
   for (std::size_t s = 0; s < sub.size(); ++s) {
-    const JointLaw& law = law_of(s);
+    const JointLaw& law = laws.between(sub.ref_block[s], sub.inc_block[s]);
     if (un[s] > 0 || sub.bonded[s]) e += 0.5 * law.kn * sub.area[s] * un[s] * un[s];
   }
   return e;
-}
-
-template <class LawOf>
-double joint_strain_energy_with(const LawOf& law_of, const Subcontacts& sub) {
-  double e = 0;
-  for (std::size_t s = 0; s < sub.size(); ++s) {
-    const JointLaw& law = law_of(s);
-    const double A = sub.area[s];
-    if (A <= 0) continue;
-    const double un = sub.overlap[s];
-    if (un > 0 || sub.bonded[s]) e += 0.5 * law.kn * A * un * un;
-    if (law.ks > 0) e += 0.5 * sub.shear_force[s].squaredNorm() / (law.ks * A);
-  }
-  return e;
-}
-
-}  // namespace
-
-double normal_strain_energy_now(const JointLaw& law, const BlockState& st, const Subcontacts& sub, int threads) {
-  return normal_strain_energy_with([&law](std::size_t) -> const JointLaw& { return law; }, st, sub, threads);
-}
-
-double normal_strain_energy_now(const JointLaws& laws, const BlockState& st, const Subcontacts& sub, int threads) {
-  if (laws.single()) return normal_strain_energy_now(laws.laws[0], st, sub, threads);
-  return normal_strain_energy_with(
-      [&](std::size_t s) -> const JointLaw& { return laws.between(sub.ref_block[s], sub.inc_block[s]); }, st, sub,
-      threads);
 }
 
 void hold_normal_strain(const JointLaws& laws, const BlockState& st, const ContactSet& old, ContactSet& contacts,
@@ -626,14 +561,17 @@ void hold_normal_strain(const JointLaws& laws, const BlockState& st, const Conta
   }
 }
 
-double joint_strain_energy(const JointLaw& law, const Subcontacts& sub) {
-  return joint_strain_energy_with([&law](std::size_t) -> const JointLaw& { return law; }, sub);
-}
-
 double joint_strain_energy(const JointLaws& laws, const Subcontacts& sub) {
-  if (laws.single()) return joint_strain_energy(laws.laws[0], sub);
-  return joint_strain_energy_with(
-      [&](std::size_t s) -> const JointLaw& { return laws.between(sub.ref_block[s], sub.inc_block[s]); }, sub);
+  double e = 0;
+  for (std::size_t s = 0; s < sub.size(); ++s) {
+    const JointLaw& law = laws.between(sub.ref_block[s], sub.inc_block[s]);
+    const double A = sub.area[s];
+    if (A <= 0) continue;
+    const double un = sub.overlap[s];
+    if (un > 0 || sub.bonded[s]) e += 0.5 * law.kn * A * un * un;
+    if (law.ks > 0) e += 0.5 * sub.shear_force[s].squaredNorm() / (law.ks * A);
+  }
+  return e;
 }
 
 double shear_strain_energy(const JointLaws& laws, const Subcontacts& sub) {
@@ -646,15 +584,23 @@ double shear_strain_energy(const JointLaws& laws, const Subcontacts& sub) {
 }
 
 bool JointLaws::any_bonds() const {
-  for (std::size_t k = 0; k < laws.size(); ++k)
-    if (bonds(k)) return true;
+  for (const JointLaw& law : laws)
+    if (law.bonds()) return true;
   return false;
+}
+
+JointLaws uniform_joint_laws(const JointLaw& law, int blocks) {
+  JointLaws out;
+  out.laws = {law};
+  out.slots = 1;
+  out.pair_law = {0};
+  out.block_slot.assign(static_cast<std::size_t>(blocks), 0);
+  return out;
 }
 
 JointLaws make_joint_laws(const Blocks& blocks, const JointSpec& default_joint,
                           const std::vector<JointPairSpec>& pairs) {
-  JointLaws out(make_joint_law(default_joint));
-  out.specs = {default_joint};
+  JointLaws out = uniform_joint_laws(make_joint_law(default_joint), blocks.count);
   std::vector<std::pair<int, int>> present;  // group indices of the entries that act
   std::vector<const JointSpec*> specs;
   for (const JointPairSpec& p : pairs) {
@@ -669,19 +615,16 @@ JointLaws make_joint_laws(const Blocks& blocks, const JointSpec& default_joint,
   out.pair_law.assign(static_cast<std::size_t>(out.slots * out.slots), 0);
   for (std::size_t k = 0; k < present.size(); ++k) {
     out.laws.push_back(make_joint_law(*specs[k]));
-    out.specs.push_back(*specs[k]);
     const int sa = present[k].first + 1, sb = present[k].second + 1;
     const int law = static_cast<int>(out.laws.size()) - 1;
     out.pair_law[static_cast<std::size_t>(sa * out.slots + sb)] = law;
     out.pair_law[static_cast<std::size_t>(sb * out.slots + sa)] = law;
   }
-  out.block_slot.resize(static_cast<std::size_t>(blocks.count));
   for (int i = 0; i < blocks.count; ++i) out.block_slot[static_cast<std::size_t>(i)] = blocks.props.group[i] + 1;
   return out;
 }
 
-JointSpec stiffest_joint(const JointLaws& laws) {
-  if (laws.single()) return laws.specs.empty() ? JointSpec{} : laws.specs[0];
+JointLaw stiffest_law(const JointLaws& laws) {
   // The laws some pair of groups present among the blocks uses.
   std::vector<char> slot_present(static_cast<std::size_t>(laws.slots), 0);
   for (int sl : laws.block_slot) slot_present[static_cast<std::size_t>(sl)] = 1;
@@ -690,19 +633,19 @@ JointSpec stiffest_joint(const JointLaws& laws) {
     for (int b = 0; b < laws.slots; ++b)
       if (slot_present[static_cast<std::size_t>(a)] && slot_present[static_cast<std::size_t>(b)])
         acts[static_cast<std::size_t>(laws.pair_law[static_cast<std::size_t>(a * laws.slots + b)])] = 1;
-  JointSpec out;
+  JointLaw out;
   bool first = true;
-  for (std::size_t k = 0; k < laws.specs.size(); ++k) {
+  for (std::size_t k = 0; k < laws.laws.size(); ++k) {
     if (!acts[k]) continue;
-    const JointSpec& j = laws.specs[k];
+    const JointLaw& j = laws.laws[k];
     if (first) {
       out = j;
       first = false;
       continue;
     }
-    out.normal_stiffness = std::max(out.normal_stiffness, j.normal_stiffness);
-    out.shear_stiffness = std::max(out.shear_stiffness, j.shear_stiffness);
-    out.damping = std::max(out.damping, j.damping);
+    out.kn = std::max(out.kn, j.kn);
+    out.ks = std::max(out.ks, j.ks);
+    out.beta = std::max(out.beta, j.beta);
   }
   return out;
 }

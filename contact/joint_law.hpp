@@ -59,33 +59,30 @@ struct JointLaw {
   double cohesion = 0;          // Pa
   double tensile_strength = 0;  // Pa
   double beta = 0;              // s
+  // New joints of this law start bonded (cohesion or tension).
+  bool bonds() const { return cohesion > 0 || tensile_strength > 0; }
 };
 
 JointLaw make_joint_law(const JointSpec& spec);
 
-// The laws of a scene's joints by pair of groups ([[joint]] with `between`).
-// laws[0] is the default; a contact between blocks a and b takes
-// laws[pair_law[slot(a)·slots + slot(b)]], with slot 0 for blocks without a
-// group and 1 + the group's index otherwise. A scene with one law (every deck
-// without `between`) keeps laws = {default} and no table: the hot path then
-// runs exactly the one-law loop, the same bits at the same cost.
+// The laws of a scene's joints, a table by pair of block groups ([[joint]]
+// with `between`). laws[0] is the default ([joint]); a joint between blocks
+// a and b takes laws[pair_law[block_slot[a]·slots + block_slot[b]]], with
+// slot 0 for blocks without a group and 1 + the group's index otherwise. A
+// scene with one law is a table of one: one slot, every block in it. Built
+// once per run (make_joint_laws) and handed to everything that reads a
+// joint's stiffness or strength: the joint law, detection, the time step,
+// the checks.
 struct JointLaws {
   std::vector<JointLaw> laws;
-  std::vector<JointSpec> specs;  // what each law was made from (empty when built from a JointLaw)
   int slots = 1;
-  std::vector<int> block_slot;  // per block (empty with one law)
-  std::vector<int> pair_law;    // slots × slots, symmetric (empty with one law)
+  std::vector<int> block_slot;  // per block
+  std::vector<int> pair_law;    // slots × slots, symmetric
 
-  JointLaws() : laws(1) {}
-  JointLaws(const JointLaw& one) : laws{one} {}  // NOLINT: one law is a scene's laws
-  bool single() const { return laws.size() == 1; }
   const JointLaw& between(int a, int b) const {
-    if (single()) return laws[0];
     return laws[static_cast<std::size_t>(pair_law[static_cast<std::size_t>(block_slot[a] * slots + block_slot[b])])];
   }
-  // True when some law bonds new joints at the first detection (cohesion or
-  // tension), and whether law k does.
-  bool bonds(std::size_t k) const { return laws[k].cohesion > 0 || laws[k].tensile_strength > 0; }
+  // True when some law bonds new joints (JointLaw::bonds).
   bool any_bonds() const;
 };
 
@@ -95,10 +92,14 @@ struct JointLaws {
 JointLaws make_joint_laws(const Blocks& blocks, const JointSpec& default_joint,
                           const std::vector<JointPairSpec>& pairs);
 
+// Every joint among `blocks` blocks under one law.
+JointLaws uniform_joint_laws(const JointLaw& law, int blocks);
+
 // The stiffest law that can act, for the time step: the largest kn, ks and
 // damping β over the laws some pair of the blocks' groups uses (the default
-// only if some pair falls to it). One law: that law's spec itself, unchanged.
-JointSpec stiffest_joint(const JointLaws& laws);
+// only if some pair falls to it); its friction and strength are the first
+// acting law's.
+JointLaw stiffest_law(const JointLaws& laws);
 
 // The split damping scheme (integrators/split_damping.hpp): the joint law
 // applies the part `explicit_part` = 1 − θ of every dashpot, and writes each
@@ -112,20 +113,11 @@ struct SplitPart {
   std::uint8_t* dashpot = nullptr;  // one per subcontact
 };
 
-// Forces of subcontacts [begin, end) into their slots (sub.force/point/...).
-void compute_joint_forces(const JointLaw& law, const BlockState& state, Subcontacts& sub, double dt,
-                          std::size_t begin, std::size_t end);
-
-// The same for the subcontacts of pairs [pair_begin, pair_end): the hot path.
-// The pair's common plane and the two blocks' motion are loaded once.
-// `path` (core/code_path.hpp): the AVX2 lanes (joint_law_lanes.hpp) or one
-// subcontact at a time; the same bits.
-void compute_pair_forces(const JointLaw& law, const BlockState& state, const std::vector<ContactPair>& pairs,
-                         Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
-                         CodePath path = CodePath::automatic, const SplitPart& split = {});
-
-// The same with each pair's own law (JointLaws::between); with one law,
-// exactly the one-law loop.
+// The forces of the subcontacts of pairs [pair_begin, pair_end) into their
+// slots (sub.force, point, overlap, normal_force, ...), each pair under its
+// own law (JointLaws::between). The pair's common plane and the two blocks'
+// motion are loaded once. `path` (core/code_path.hpp): the AVX2 lanes
+// (joint_law_lanes.hpp) or one subcontact at a time; the same bits.
 void compute_pair_forces(const JointLaws& laws, const BlockState& state, const std::vector<ContactPair>& pairs,
                          Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
                          CodePath path = CodePath::automatic, const SplitPart& split = {});
@@ -160,8 +152,6 @@ void settle_damping_work(const BlockState& state, Subcontacts& sub, double dt);
 // Normal strain energy Σ ½·kn·A·u_n² of the subcontacts closed or bonded,
 // with u_n evaluated at the blocks' current pose (their body-fixed plane and
 // point), J. Detection compares it before and after it re-samples the joints.
-double normal_strain_energy_now(const JointLaw& law, const BlockState& state, const Subcontacts& sub,
-                                int threads = 1);
 double normal_strain_energy_now(const JointLaws& laws, const BlockState& state, const Subcontacts& sub,
                                 int threads = 1);
 
@@ -193,7 +183,6 @@ void hold_normal_strain(const JointLaws& laws, const BlockState& state, const Co
                         int threads = 1);
 
 // Elastic strain energy stored in the joints, J.
-double joint_strain_energy(const JointLaw& law, const Subcontacts& sub);
 double joint_strain_energy(const JointLaws& laws, const Subcontacts& sub);
 
 // Shear strain energy Σ |F_s|²/(2·ks·A) with each subcontact's own ks, J.

@@ -1,5 +1,7 @@
 #include "contact/subcontacts.hpp"
 
+#include "contact/joint_law.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -199,13 +201,6 @@ void build_subcontacts(const Blocks& b, const std::vector<std::pair<int, int>>& 
   }
 }
 
-double shear_strain_energy(const Subcontacts& sub, double ks) {
-  double e = 0;
-  if (ks <= 0) return e;
-  for (std::size_t s = 0; s < sub.size(); ++s)
-    if (sub.area[s] > 0) e += 0.5 * sub.shear_force[s].squaredNorm() / (ks * sub.area[s]);
-  return e;
-}
 
 // Carrying history by position.
 //
@@ -310,7 +305,7 @@ bool interpolate_stress(const PreviousPatch& pp, const CarryScratch& sc, const V
 
 }  // namespace
 
-void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& contacts, double ks, double margin,
+void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& contacts, const JointLaws& laws, double margin,
                    CarryScratch& scratch, int threads) {
   Subcontacts& sc = contacts.sub;
   const Subcontacts& os = old.sub;
@@ -400,7 +395,7 @@ void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& cont
     contacts.retired_damping_energy += os.damping_energy[o];
   }
   contacts.dropped_shear_energy =
-      old.dropped_shear_energy + (shear_strain_energy(os, ks) - shear_strain_energy(sc, ks));
+      old.dropped_shear_energy + (shear_strain_energy(laws, os) - shear_strain_energy(laws, sc));
   contacts.resampled_normal_energy = old.resampled_normal_energy;
 }
 

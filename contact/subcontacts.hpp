@@ -40,6 +40,8 @@
 
 namespace polydem {
 
+struct JointLaws;  // contact/joint_law.hpp
+
 struct ContactPair {
   int a = 0, b = 0;        // block indices, a < b
   int ref_block = 0;       // a or b: the block whose face is the common plane
@@ -174,10 +176,7 @@ struct CarryScratch {
 // `dropped_shear_energy`; the totals are taken over from `previous`. So the
 // ledger's balance is unchanged by a detection.
 // `threads` > 1: the pairs in parallel (the same bits).
-void carry_history(const Blocks& blocks, const ContactSet& previous, ContactSet& current, double shear_stiffness,
+void carry_history(const Blocks& blocks, const ContactSet& previous, ContactSet& current, const JointLaws& laws,
                    double margin, CarryScratch& scratch, int threads = 1);
-
-// Elastic shear energy Σ |F_s|²/(2·ks·A) of the subcontacts, J.
-double shear_strain_energy(const Subcontacts& sub, double shear_stiffness);
 
 }  // namespace polydem

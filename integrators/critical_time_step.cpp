@@ -53,9 +53,9 @@ void keep_highest(CriticalStep& out, int i, double omega_b_squared, double facto
   }
 }
 
-void finish(CriticalStep& out, const JointSpec& joint, double safety_factor, DampingScheme scheme) {
+void finish(CriticalStep& out, double beta, double safety_factor, DampingScheme scheme) {
   if (out.omega_max <= 0) return;
-  const double xi = 0.5 * joint.damping * out.omega_max;
+  const double xi = 0.5 * beta * out.omega_max;
   out.damping_ratio = xi;
   if (scheme == DampingScheme::split) {
     out.critical = split_damping(xi).limit / out.omega_max;
@@ -67,31 +67,31 @@ void finish(CriticalStep& out, const JointSpec& joint, double safety_factor, Dam
 
 }  // namespace
 
-CriticalStep critical_step_for(double omega, const JointSpec& joint, double safety_factor, DampingScheme scheme) {
+CriticalStep critical_step_for(double omega, double beta, double safety_factor, DampingScheme scheme) {
   CriticalStep c;
   c.omega_max = omega;
-  finish(c, joint, safety_factor, scheme);
+  finish(c, beta, safety_factor, scheme);
   return c;
 }
 
-double highest_frequency_for_step(double dt, const JointSpec& joint, double safety_factor, DampingScheme scheme) {
+double highest_frequency_for_step(double dt, double beta, double safety_factor, DampingScheme scheme) {
   const double c = dt / safety_factor;
-  const double explicit_omega = 2.0 / std::sqrt(c * (c + 2.0 * joint.damping));
-  if (scheme != DampingScheme::split || !(joint.damping > 0)) return explicit_omega;
+  const double explicit_omega = 2.0 / std::sqrt(c * (c + 2.0 * beta));
+  if (scheme != DampingScheme::split || !(beta > 0)) return explicit_omega;
   // Asked again and again for the run's step at each detection: the last
   // answer of this thread kept.
   thread_local double last_dt = -1, last_beta = -1, last_sf = -1, last_omega = 0;
-  if (dt == last_dt && joint.damping == last_beta && safety_factor == last_sf) return last_omega;
+  if (dt == last_dt && beta == last_beta && safety_factor == last_sf) return last_omega;
   // The split step W(βω/2)/ω falls as ω rises, from the explicit one's
   // (W ≥ the explicit limit) to at most the springs' 2/ω: bisect between
   // the two frequencies, keeping the side whose step allows dt.
   double lo = explicit_omega, hi = 2.0 / c;
   for (int it = 0; it < 100 && hi - lo > 1e-13 * hi; ++it) {
     const double mid = 0.5 * (lo + hi);
-    (split_damping(0.5 * joint.damping * mid).limit / mid >= c ? lo : hi) = mid;
+    (split_damping(0.5 * beta * mid).limit / mid >= c ? lo : hi) = mid;
   }
   last_dt = dt;
-  last_beta = joint.damping;
+  last_beta = beta;
   last_sf = safety_factor;
   last_omega = lo;
   return lo;
@@ -100,8 +100,8 @@ double highest_frequency_for_step(double dt, const JointSpec& joint, double safe
 namespace {
 
 // The step finish() would choose for ω (falls as ω rises).
-double chosen_for(double omega, const JointSpec& joint, double safety_factor, DampingScheme scheme) {
-  return critical_step_for(omega, joint, safety_factor, scheme).chosen;
+double chosen_for(double omega, double beta, double safety_factor, DampingScheme scheme) {
+  return critical_step_for(omega, beta, safety_factor, scheme).chosen;
 }
 
 // An upper bound of block i's ω_b² (block_omega_squared): the largest
@@ -143,7 +143,7 @@ namespace {
 // spire and the column).
 template <class StiffnessOf>
 CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const StiffnessOf& stiffness_of,
-                           const JointSpec& joint, double safety_factor, std::vector<double>* per_block = nullptr,
+                           double beta, double safety_factor, std::vector<double>* per_block = nullptr,
                            double below = 0, int threads = 1, StepBound bound = StepBound::block,
                            DampingScheme scheme = DampingScheme::explicit_lagged) {
   CriticalStep out;
@@ -185,13 +185,13 @@ CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const St
   // instead, the highest frequency whose step allows `below`, once per call
   // (the step falls as the frequency rises, so the same blocks are skipped).
   const double omega_allowed = below > 0 && scheme == DampingScheme::split
-                                   ? highest_frequency_for_step(below, joint, safety_factor, scheme)
+                                   ? highest_frequency_for_step(below, beta, safety_factor, scheme)
                                    : 0.0;
   auto skipped = [&](int i, const Mat6& K) {
     if (!(below > 0) || per_block) return false;
     const double omega = std::sqrt(factor * omega_squared_bound(b, i, K));
     if (scheme == DampingScheme::split) return omega <= omega_allowed;
-    return chosen_for(omega, joint, safety_factor, scheme) >= below;
+    return chosen_for(omega, beta, safety_factor, scheme) >= below;
   };
   // Each block's ω_b² into its slot (−1: no joint, or skipped), the blocks
   // in parallel with `threads` > 1; then the highest in block order: the
@@ -226,25 +226,15 @@ CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const St
     keep_highest(out, i, w2, factor);
     if (per_block) (*per_block)[i] = std::sqrt(w2);
   }
-  finish(out, joint, safety_factor, scheme);
+  finish(out, beta, safety_factor, scheme);
   return out;
 }
 
 }  // namespace
 
-CriticalStep critical_time_step_from_contacts(const Blocks& b, const ContactSet& contacts, const JointSpec& joint,
-                                              double safety_factor, double below, int threads, StepBound bound,
-                                              DampingScheme scheme) {
-  const std::pair<double, double> k{joint.normal_stiffness, joint.shear_stiffness};
-  return from_contacts(b, contacts, [&k](int) { return k; }, joint, safety_factor, nullptr, below, threads, bound,
-                       scheme);
-}
-
 CriticalStep critical_time_step_from_contacts(const Blocks& b, const ContactSet& contacts, const JointLaws& laws,
-                                              const JointSpec& stiffest, double safety_factor, double below,
-                                              int threads, StepBound bound, DampingScheme scheme) {
-  if (laws.single())
-    return critical_time_step_from_contacts(b, contacts, stiffest, safety_factor, below, threads, bound, scheme);
+                                              double beta, double safety_factor, double below, int threads,
+                                              StepBound bound, DampingScheme scheme) {
   const auto& sub = contacts.sub;
   return from_contacts(
       b, contacts,
@@ -252,7 +242,7 @@ CriticalStep critical_time_step_from_contacts(const Blocks& b, const ContactSet&
         const JointLaw& law = laws.between(sub.ref_block[s], sub.inc_block[s]);
         return std::pair<double, double>{law.kn, law.ks};
       },
-      stiffest, safety_factor, nullptr, below, threads, bound, scheme);
+      beta, safety_factor, nullptr, below, threads, bound, scheme);
 }
 
 namespace {
@@ -293,20 +283,20 @@ Mat6 all_faces_stiffness(const Blocks& b, int i, double kn, double ks) {
 
 }  // namespace
 
-CriticalStep critical_time_step(const Blocks& b, const JointSpec& joint, double safety_factor, DampingScheme scheme) {
+CriticalStep critical_time_step(const Blocks& b, const JointLaw& stiffest, double safety_factor, DampingScheme scheme) {
   CriticalStep out;
   for (int i : b.free_blocks) {
-    const Mat6 K = all_faces_stiffness(b, i, joint.normal_stiffness, joint.shear_stiffness);
+    const Mat6 K = all_faces_stiffness(b, i, stiffest.kn, stiffest.ks);
     keep_highest(out, i, block_omega_squared(b, i, K));
   }
-  finish(out, joint, safety_factor, scheme);
+  finish(out, stiffest.beta, safety_factor, scheme);
   return out;
 }
 
-std::vector<double> block_frequencies(const Blocks& b, const JointSpec& joint) {
+std::vector<double> block_frequencies(const Blocks& b, const JointLaw& stiffest) {
   std::vector<double> w(static_cast<std::size_t>(b.count), 0.0);
   for (int i : b.free_blocks)
-    w[i] = std::sqrt(block_omega_squared(b, i, all_faces_stiffness(b, i, joint.normal_stiffness, joint.shear_stiffness)));
+    w[i] = std::sqrt(block_omega_squared(b, i, all_faces_stiffness(b, i, stiffest.kn, stiffest.ks)));
   return w;
 }
 
@@ -316,10 +306,10 @@ std::vector<double> block_frequencies_from_contacts(const Blocks& b, const Conta
   from_contacts(
       b, contacts,
       [&](int s) {
-        const JointLaw& law = laws.single() ? laws.laws[0] : laws.between(sub.ref_block[s], sub.inc_block[s]);
+        const JointLaw& law = laws.between(sub.ref_block[s], sub.inc_block[s]);
         return std::pair<double, double>{law.kn, law.ks};
       },
-      JointSpec{}, 1.0, &w);
+      0.0, 1.0, &w);
   return w;
 }
 

@@ -49,20 +49,22 @@ struct CriticalStep {
 // `scheme`: the explicit dashpots' limit above, or the split scheme's
 // W(ξ)/ω (split_damping.hpp), which allows up to the springs' 2/ω. Every
 // function below takes it the same way.
-CriticalStep critical_time_step(const Blocks& blocks, const JointSpec& joint, double safety_factor,
+// `stiffest`: the stiffest law that can act (stiffest_law): its kn and ks
+// on every face, its β for the damping.
+CriticalStep critical_time_step(const Blocks& blocks, const JointLaw& stiffest, double safety_factor,
                                 DampingScheme scheme = DampingScheme::explicit_lagged);
 
 // The step for a highest frequency ω (rad/s) found some other way (e.g.
-// joint_modes.hpp): ξ = β·ω/2 with `joint`'s β, the limit and the chosen step
-// as above; governing_block −1.
-CriticalStep critical_step_for(double omega, const JointSpec& joint, double safety_factor,
+// joint_modes.hpp): ξ = β·ω/2 with the dashpots' β (s), the limit and the
+// chosen step as above; governing_block −1.
+CriticalStep critical_step_for(double omega, double beta, double safety_factor,
                                DampingScheme scheme = DampingScheme::explicit_lagged);
 
 // Its inverse: the highest frequency (rad/s) a chosen step `dt` allows with
-// `joint`'s β and the safety factor. dt = sf·(2/ω)(√(1+ξ²) − ξ), ξ = βω/2
+// the dashpots' β and the safety factor. dt = sf·(2/ω)(√(1+ξ²) − ξ), ξ = βω/2
 // gives ω = 2/√(c(c + 2β)), c = dt/sf. The split scheme's by bisection
 // (the highest ω whose step allows dt, to 1e-13).
-double highest_frequency_for_step(double dt, const JointSpec& joint, double safety_factor,
+double highest_frequency_for_step(double dt, double beta, double safety_factor,
                                   DampingScheme scheme = DampingScheme::explicit_lagged);
 
 // Each free block's ω_b of the same all-faces bound (rad/s, without the √2
@@ -70,7 +72,7 @@ double highest_frequency_for_step(double dt, const JointSpec& joint, double safe
 // omega_max is √2 times the largest. The static stage's density scaling
 // (Simulation::begin_static_stage) lowers every block's inertia until its ω_b
 // is that largest one.
-std::vector<double> block_frequencies(const Blocks& blocks, const JointSpec& joint);
+std::vector<double> block_frequencies(const Blocks& blocks, const JointLaw& stiffest);
 
 // The same bound from the joints a block actually has: the subcontacts of
 // the current detection (closed or still open within the margin, so every
@@ -91,17 +93,12 @@ std::vector<double> block_frequencies(const Blocks& blocks, const JointSpec& joi
 // `bound`: StepBound::block (√2·max ω_b, above) or StepBound::joint (each
 // joint shared by its blocks' stiffness, above); governing_block is the
 // block whose weighted stiffness is highest.
-CriticalStep critical_time_step_from_contacts(const Blocks& blocks, const ContactSet& contacts, const JointSpec& joint,
-                                              double safety_factor, double below = 0, int threads = 1,
-                                              StepBound bound = StepBound::block,
-                                              DampingScheme scheme = DampingScheme::explicit_lagged);
-
-// The same with each joint's own law (kn, ks of its pair of groups) and the
-// damping β of `stiffest` (stiffest_joint: the largest β that can act). With
-// one law, exactly the call above with that law's spec.
+//
+// Each joint with its own law's kn and ks (JointLaws::between); `beta`: the
+// dashpots' β the step is limited by (the stiffest law's, stiffest_law).
 CriticalStep critical_time_step_from_contacts(const Blocks& blocks, const ContactSet& contacts, const JointLaws& laws,
-                                              const JointSpec& stiffest, double safety_factor, double below = 0,
-                                              int threads = 1, StepBound bound = StepBound::block,
+                                              double beta, double safety_factor, double below = 0, int threads = 1,
+                                              StepBound bound = StepBound::block,
                                               DampingScheme scheme = DampingScheme::explicit_lagged);
 
 // Each free block's ω_b on the joints it has now (the subcontacts of the

@@ -45,14 +45,12 @@ double seconds(Clock::time_point from, Clock::time_point to) {
 
 }  // namespace
 
-Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec& joint, GroundMotion motion,
-                       double margin, double dt, bool adaptive_time_step,
-                       const std::vector<JointPairSpec>& joint_pairs, BlockLoads loads)
+Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, JointLaws laws, GroundMotion motion, double margin,
+                       double dt, bool adaptive_time_step, BlockLoads loads)
     : blocks_(std::move(blocks)),
       sim_(sim),
-      joint_(joint),
-      laws_(make_joint_laws(blocks_, joint, joint_pairs)),
-      step_joint_(stiffest_joint(laws_)),
+      laws_(std::move(laws)),
+      step_law_(stiffest_law(laws_)),
       motion_(std::move(motion)),
       detector_(blocks_, margin),
       bond_initial_(laws_.any_bonds()),
@@ -107,10 +105,7 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec
 // shear increment, gravity, the ground motion), so that free flight from a
 // given velocity is the exact parabola and not half a step late.
 void Simulation::start_half_step_back() {
-  if (laws_.single())
-    compute_joint_forces(laws_.laws[0], blocks_.state, contacts_.sub, 0.0, 0, contacts_.sub.size());
-  else
-    compute_pair_forces(laws_, blocks_.state, contacts_.pairs, contacts_.sub, 0.0, 0, contacts_.pairs.size());
+  compute_pair_forces(laws_, blocks_.state, contacts_.pairs, contacts_.sub, 0.0, 0, contacts_.pairs.size());
   gather_block_forces();
   if (!loaded_.empty()) compute_point_loads(0.0);
   auto& st = blocks_.state;
@@ -148,7 +143,7 @@ DetectionTimes Simulation::detect_contacts() {
   if (sim_.damping_scheme == DampingScheme::split) size_split_arrays();
   if (!adaptive_dt_) return times;
   const CriticalStep c =
-      critical_time_step_from_contacts(blocks_, contacts_, laws_, step_joint_, sim_.safety_factor, dt_,
+      critical_time_step_from_contacts(blocks_, contacts_, laws_, step_law_.beta, sim_.safety_factor, dt_,
                                        detector_.threads(), sim_.time_step_bound, sim_.damping_scheme);
   if (c.chosen > 0 && c.chosen < dt_) {
     dt_ = c.chosen;
@@ -165,9 +160,9 @@ void Simulation::update_split_fraction() {
   const std::size_t n = static_cast<std::size_t>(blocks_.count);
   rest_work_.resize(n, 0.0);
   rest_pending_.resize(n, 0.0);
-  if (!(step_joint_.damping > 0)) return;  // nothing to split: the explicit step, one pass
-  const double omega = highest_frequency_for_step(dt_, step_joint_, sim_.safety_factor, DampingScheme::split);
-  split_fraction_ = split_damping(0.5 * step_joint_.damping * omega).fraction;
+  if (!(step_law_.beta > 0)) return;  // nothing to split: the explicit step, one pass
+  const double omega = highest_frequency_for_step(dt_, step_law_.beta, sim_.safety_factor, DampingScheme::split);
+  split_fraction_ = split_damping(0.5 * step_law_.beta * omega).fraction;
   velocity_next_.resize(n, Vec3::Zero());
   omega_next_.resize(n, Vec3::Zero());
   rest_force_.resize(n, Vec3::Zero());
@@ -632,7 +627,7 @@ void Simulation::begin_static_stage(double local_damping, const Vec3& load, bool
   if (!density_scaling) return;
   // Each block's highest frequency, on all its faces or on the joints it
   // has now, whichever is higher; the step was chosen for the highest of all.
-  std::vector<double> w = block_frequencies(blocks_, step_joint_);
+  std::vector<double> w = block_frequencies(blocks_, step_law_);
   const std::vector<double> wc = block_frequencies_from_contacts(blocks_, contacts_, laws_);
   double top = 0;
   for (int i : blocks_.free_blocks) {
@@ -644,7 +639,7 @@ void Simulation::begin_static_stage(double local_damping, const Vec3& load, bool
   // to one frequency count every joint twice: scale them to ω/√2 of the
   // highest ω the step allows (blocks above it become heavier).
   if (sim_.time_step_bound == StepBound::joint)
-    top = std::min(top, highest_frequency_for_step(dt_, step_joint_, sim_.safety_factor, sim_.damping_scheme) /
+    top = std::min(top, highest_frequency_for_step(dt_, step_law_.beta, sim_.safety_factor, sim_.damping_scheme) /
                             std::sqrt(2.0));
   scaled_inv_mass_ = blocks_.props.inv_mass;
   scaled_inv_inertia_ = blocks_.props.inv_principal_inertia;

@@ -94,13 +94,11 @@ class Simulation {
   // adaptive_time_step: lower the step when a detection finds stiffer joints
   // (always on in runs; tests switch it off to drive a run unstable on
   // purpose and see the guard act).
-  // joint_pairs: the laws of [[joint]] `between` (each pair of groups its
-  // own; `joint` is the default); loads: point loads and prescribed motions
-  // (core/loads.hpp resolve_loads; the prescribed blocks must be kinematic).
-  // Without either the step is exactly the one it was without them.
-  Simulation(Blocks blocks, const SimulationSpec& sim, const JointSpec& joint, GroundMotion motion, double margin,
-             double dt, bool adaptive_time_step = true, const std::vector<JointPairSpec>& joint_pairs = {},
-             BlockLoads loads = {});
+  // laws: the joints' laws (make_joint_laws, built once at setup); loads:
+  // point loads and prescribed motions (core/loads.hpp resolve_loads; the
+  // prescribed blocks must be kinematic).
+  Simulation(Blocks blocks, const SimulationSpec& sim, JointLaws laws, GroundMotion motion, double margin, double dt,
+             bool adaptive_time_step = true, BlockLoads loads = {});
 
   // Steps with fewer subcontacts (and fewer free blocks than a sixteenth of
   // this) run on one thread, detections included. On a quiet machine two
@@ -154,10 +152,9 @@ class Simulation {
   const Blocks& blocks() const { return blocks_; }
   const ContactSet& contacts() const { return contacts_; }
   const GroundMotion& ground_motion() const { return motion_; }
-  const JointLaw& joint_law() const { return laws_.laws[0]; }  // the default law
   const JointLaws& joint_laws() const { return laws_; }
   // The stiffest law that can act: its β sets the time step's damping.
-  const JointSpec& step_joint() const { return step_joint_; }
+  const JointLaw& step_law() const { return step_law_; }
   // Block i moves as a [[prescribe]] says (not with the ground motion).
   bool is_prescribed(int i) const { return !prescription_of_.empty() && prescription_of_[i] >= 0; }
 
@@ -273,9 +270,8 @@ class Simulation {
 
   Blocks blocks_;
   SimulationSpec sim_;
-  JointSpec joint_;
   JointLaws laws_;
-  JointSpec step_joint_;  // the stiffest law that can act (the time step's)
+  JointLaw step_law_;  // the stiffest law that can act (the time step's)
   GroundMotion motion_;
   ContactDetector detector_;
   ContactSet contacts_;

@@ -102,24 +102,23 @@ Slope slope_of(const SceneSpec& s) {
   return sl;
 }
 
-// tan φ of the joint block i slides on: the one law of a scene, or, with laws
-// by pair of groups ([[joint]] between), the law between block i and the
-// first block it touches that is not free (its base).
-double sliding_tan_phi(const SceneSpec& s, const Simulation& sim, int i) {
+// The law of the joint block i stands on: the law between block i and the
+// first block it touches that is not free (its base), or the default law if
+// it touches none.
+const JointLaw& base_joint_law(const Simulation& sim, int i) {
   const JointLaws& laws = sim.joint_laws();
-  if (laws.single()) return std::tan(s.joint.friction_angle * std::numbers::pi / 180);
   for (const ContactPair& p : sim.contacts().pairs) {
     const int other = p.a == i ? p.b : p.b == i ? p.a : -1;
-    if (other >= 0 && !sim.blocks().is_free(other)) return laws.between(i, other).tan_phi;
+    if (other >= 0 && !sim.blocks().is_free(other)) return laws.between(i, other);
   }
-  return laws.laws[0].tan_phi;
+  return laws.laws[0];
 }
 
 class SlideAcceleration : public CheckMonitor {
  public:
   SlideAcceleration(const CheckSpec& c, const SceneSpec& s, const Simulation& sim)
       : c_(c), i_(block_index(s, c, sim)), slope_(slope_of(s)), g_(s.simulation.gravity.norm()),
-        tan_phi_(sliding_tan_phi(s, sim, i_)), half_(0.5 * s.simulation.end_time) {}
+        tan_phi_(base_joint_law(sim, i_).tan_phi), half_(0.5 * s.simulation.end_time) {}
   void observe(const Simulation& sim) override {
     const double t = sim.time() - sim.dt();  // time of the mid-step velocity
     const double v = sim.velocity_at_force_time(i_).dot(slope_.down);
@@ -240,7 +239,7 @@ class RockingOnset : public CheckMonitor {
     // The heel has opened when its gap exceeds a thousandth of the elastic
     // compression under the block's own weight.
     threshold_ = 1e-3 * sim.blocks().props.mass[i_] * g_ /
-                 (s.joint.normal_stiffness * face_area(sim.blocks().props.local_shape[i_], rg_.bottom_face));
+                 (base_joint_law(sim, i_).kn * face_area(sim.blocks().props.local_shape[i_], rg_.bottom_face));
   }
   void observe(const Simulation& sim) override {
     if (found_) return;

@@ -18,13 +18,12 @@ double automatic_margin(const Blocks& b) {
   return 0.02 * smallest;
 }
 
-RunSetup choose_margin_and_step(const SceneSpec& spec, const Blocks& blocks) {
+RunSetup choose_margin_and_step(const SceneSpec& spec, const Blocks& blocks, const JointLaws& laws) {
   RunSetup s;
   s.margin = spec.simulation.contact_margin > 0 ? spec.simulation.contact_margin : automatic_margin(blocks);
   // Time step: automatic, or the deck's if it is smaller.
   // The stiffest law that can act ([[joint]] `between`); one law: [joint].
-  const JointLaws laws = make_joint_laws(blocks, spec.joint, spec.joint_pairs);
-  s.critical = critical_time_step(blocks, stiffest_joint(laws), spec.simulation.safety_factor,
+  s.critical = critical_time_step(blocks, stiffest_law(laws), spec.simulation.safety_factor,
                                   spec.simulation.damping_scheme);
   double dt = s.critical.chosen;
   if (spec.simulation.time_step > 0) {
@@ -68,14 +67,15 @@ std::unique_ptr<Simulation> build_simulation(const SceneSpec& spec, RunSetup& se
   const std::vector<BlockSpec>& block_specs = spec.prescribed.empty() ? spec.blocks : specs;
   Blocks blocks = build_blocks(block_specs);
   BlockLoads loads = resolve_loads(blocks, block_specs, spec.loads, spec.prescribed);
-  setup = choose_margin_and_step(spec, blocks);
+  JointLaws laws = make_joint_laws(blocks, spec.joint, spec.joint_pairs);
+  setup = choose_margin_and_step(spec, blocks, laws);
   GroundMotion motion = spec.ground_motion.kind == GroundMotionKind::record
                             ? make_ground_motion(spec.ground_motion, spec.ground_motion.record_time,
                                                  spec.ground_motion.record_acceleration)
                             : make_ground_motion(spec.ground_motion);
   motion.extra = std::move(extra);
-  auto sim = std::make_unique<Simulation>(std::move(blocks), spec.simulation, spec.joint, std::move(motion),
-                                          setup.margin, setup.time_step, true, spec.joint_pairs, std::move(loads));
+  auto sim = std::make_unique<Simulation>(std::move(blocks), spec.simulation, std::move(laws), std::move(motion),
+                                          setup.margin, setup.time_step, true, std::move(loads));
   check_initial_overlaps(spec, *sim);
   return sim;
 }

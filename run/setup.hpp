@@ -29,9 +29,10 @@ struct RunSetup {
 // 2 % of the smallest free block's size (of any block when none is free).
 double automatic_margin(const Blocks& blocks);
 
-// The margin and the time step for these blocks. Throws SceneError
-// ("simulation.time_step") when the deck's step exceeds the stable one.
-RunSetup choose_margin_and_step(const SceneSpec& spec, const Blocks& blocks);
+// The margin and the time step for these blocks and their joints' laws.
+// Throws SceneError ("simulation.time_step") when the deck's step exceeds
+// the stable one.
+RunSetup choose_margin_and_step(const SceneSpec& spec, const Blocks& blocks, const JointLaws& laws);
 
 // Throws SceneError ("block", with the later block's deck line) when two
 // blocks overlap beyond the tolerance at the start.

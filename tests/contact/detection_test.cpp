@@ -49,7 +49,7 @@ TEST(ContactDetector, FindsTheRestingPatch) {
   ContactDetector det(b, kMargin);
   EXPECT_EQ(det.margin(), kMargin);
   ContactSet cs;
-  det.detect(b, cs, false, kLaw);
+  det.detect(b, cs, false, uniform_joint_laws(kLaw, b.count));
   EXPECT_EQ(cs.detections, 1);
   ASSERT_EQ(cs.pairs.size(), 1u);
   EXPECT_EQ(cs.pairs[0].a, 0);
@@ -75,18 +75,25 @@ TEST(ContactDetector, FindsTheRestingPatch) {
       const int s = cs.gather_sub[k];
       EXPECT_EQ(cs.gather_sign[k], cs.sub.inc_block[s] == i ? 1.0 : -1.0);
     }
-  // Bonded when asked (cohesion or tension at t = 0).
+  // Bonded when asked, under a law with a strength (cohesion or tension at
+  // t = 0); a law without one bonds nothing.
+  JointLaw strong = kLaw;
+  strong.cohesion = 1e5;
   ContactDetector det2(b, kMargin);
   ContactSet cs2;
-  det2.detect(b, cs2, true, kLaw);
+  det2.detect(b, cs2, true, uniform_joint_laws(strong, b.count));
   for (std::size_t s = 0; s < cs2.sub.size(); ++s) EXPECT_EQ(cs2.sub.bonded[s], 1);
+  ContactDetector det3(b, kMargin);
+  ContactSet cs3;
+  det3.detect(b, cs3, true, uniform_joint_laws(kLaw, b.count));
+  for (std::size_t s = 0; s < cs3.sub.size(); ++s) EXPECT_EQ(cs3.sub.bonded[s], 0);
 }
 
 TEST(ContactDetector, SubcontactsKeepTheirHistoryAcrossDetections) {
   Blocks b = resting_cube();
   ContactDetector det(b, kMargin);
   ContactSet cs;
-  det.detect(b, cs, true, kLaw);
+  det.detect(b, cs, true, uniform_joint_laws(kLaw, b.count));
   ASSERT_EQ(cs.sub.size(), 4u);
   // Give every subcontact its own history, remembered by key.
   std::map<std::uint64_t, Vec3> shear;
@@ -105,7 +112,7 @@ TEST(ContactDetector, SubcontactsKeepTheirHistoryAcrossDetections) {
   for (std::size_t s = 0; s < cs.sub.size(); ++s) bonded[cs.sub.key[s]] = cs.sub.bonded[s];
   // The cube slides a little (less than the margin, same features): detect again.
   translate(b, 1, Vec3(0.004, -0.003, 0));
-  det.detect(b, cs, false, kLaw);
+  det.detect(b, cs, false, uniform_joint_laws(kLaw, b.count));
   EXPECT_EQ(cs.detections, 2);
   ASSERT_EQ(cs.sub.size(), 4u);
   for (std::size_t s = 0; s < cs.sub.size(); ++s) {
@@ -123,14 +130,14 @@ TEST(ContactDetector, LostSubcontactsRetireTheirDissipation) {
   Blocks b = resting_cube();
   ContactDetector det(b, kMargin);
   ContactSet cs;
-  det.detect(b, cs, false, kLaw);
+  det.detect(b, cs, false, uniform_joint_laws(kLaw, b.count));
   ASSERT_EQ(cs.sub.size(), 4u);
   for (std::size_t s = 0; s < cs.sub.size(); ++s) {
     cs.sub.slip_energy[s] = 1.0 + s;      // 1+2+3+4 = 10 J
     cs.sub.damping_energy[s] = 0.5 * s;  // 0+0.5+1+1.5 = 3 J
   }
   translate(b, 1, Vec3(0, 0, 0.1));  // lifted beyond the margin
-  det.detect(b, cs, false, kLaw);
+  det.detect(b, cs, false, uniform_joint_laws(kLaw, b.count));
   EXPECT_TRUE(cs.pairs.empty());
   EXPECT_EQ(cs.sub.size(), 0u);
   EXPECT_EQ(cs.retired_slip_energy, 10.0);
@@ -141,7 +148,7 @@ TEST(ContactDetector, RedetectsOnlyAfterHalfTheMargin) {
   Blocks b = resting_cube();
   ContactDetector det(b, kMargin);
   ContactSet cs;
-  det.detect(b, cs, false, kLaw);
+  det.detect(b, cs, false, uniform_joint_laws(kLaw, b.count));
   EXPECT_FALSE(det.needs_detection(b));
   // Translation (the threshold is margin/2): 0.49·margin no, 0.51·margin yes.
   translate(b, 1, Vec3(0.49 * kMargin, 0, 0));
@@ -149,7 +156,7 @@ TEST(ContactDetector, RedetectsOnlyAfterHalfTheMargin) {
   translate(b, 1, Vec3(0.02 * kMargin, 0, 0));
   EXPECT_TRUE(det.needs_detection(b));
   // After detection the reference is the new position.
-  det.detect(b, cs, false, kLaw);
+  det.detect(b, cs, false, uniform_joint_laws(kLaw, b.count));
   EXPECT_FALSE(det.needs_detection(b));
   // Rotation counts as angle × bounding radius (√3/2 for the unit cube).
   const double radius = b.props.radius[1];
@@ -159,7 +166,7 @@ TEST(ContactDetector, RedetectsOnlyAfterHalfTheMargin) {
   turn(b, 1, 0.02 * kMargin / radius, Vec3::UnitZ());  // 0.51·margin in all
   EXPECT_TRUE(det.needs_detection(b));
   // Fixed blocks are ignored however far they are moved (they never move).
-  det.detect(b, cs, false, kLaw);
+  det.detect(b, cs, false, uniform_joint_laws(kLaw, b.count));
   translate(b, 0, Vec3(1, 0, 0));
   EXPECT_FALSE(det.needs_detection(b));
 }
@@ -174,15 +181,15 @@ TEST(ContactDetector, RedetectsOnTheRelativeApproachOfTwoBlocks) {
                            block_spec("right", make_box(Vec3(1, 1, 1), Vec3(0.51, 0, 0.5)), BlockMotion::free)});
   ContactDetector det(b, kMargin);
   ContactSet cs;
-  det.detect(b, cs, false, kLaw);
+  det.detect(b, cs, false, uniform_joint_laws(kLaw, b.count));
   translate(b, 0, Vec3(0.3 * kMargin, 0, 0));
   translate(b, 1, Vec3(-0.3 * kMargin, 0, 0));
   EXPECT_TRUE(det.needs_detection(b));
-  det.detect(b, cs, false, kLaw);
+  det.detect(b, cs, false, uniform_joint_laws(kLaw, b.count));
   translate(b, 0, Vec3(0.6 * kMargin, 0, 0));
   translate(b, 1, Vec3(0.6 * kMargin, 0, 0));
   EXPECT_FALSE(det.needs_detection(b));
-  det.detect(b, cs, false, kLaw);
+  det.detect(b, cs, false, uniform_joint_laws(kLaw, b.count));
   b.state.velocity[0] = Vec3(1.0, 0, 0);
   EXPECT_FALSE(det.needs_detection(b, 0.4 * kMargin));  // the step moves it 0.4·margin
   EXPECT_TRUE(det.needs_detection(b, 0.6 * kMargin));
@@ -193,7 +200,7 @@ TEST(ContactDetector, NeverPairsTwoBlocksThatCannotMove) {
                            block_spec("moving", make_box(Vec3(1, 1, 1), Vec3(0, 0, 0.5)), BlockMotion::kinematic)});
   ContactDetector det(b, kMargin);
   ContactSet cs;
-  det.detect(b, cs, false, kLaw);
+  det.detect(b, cs, false, uniform_joint_laws(kLaw, b.count));
   EXPECT_TRUE(cs.pairs.empty());
 }
 
@@ -218,7 +225,7 @@ TEST(ContactDetector, ShearStressIsContinuousAcrossReDetectionWhileStuck) {
   law.tan_phi = 1e3;  // stuck
   ContactDetector det(b, kMargin);
   ContactSet cs;
-  det.detect(b, cs, false, law);
+  det.detect(b, cs, false, uniform_joint_laws(law, b.count));
   const double dt = 1e-4, v = 0.5;  // m/s along x: 50 µm a step
   b.state.velocity[1] = Vec3(v, 0, 0);
   auto total = [&](double& area) {
@@ -237,7 +244,7 @@ TEST(ContactDetector, ShearStressIsContinuousAcrossReDetectionWhileStuck) {
     if (det.needs_detection(b, dt)) {
       double area_before = 0, area_after = 0;
       const Vec3 before = total(area_before);
-      det.detect(b, cs, false, law);
+      det.detect(b, cs, false, uniform_joint_laws(law, b.count));
       const Vec3 after = total(area_after);
       ++redetections;
       for (std::size_t s = 0; s < cs.sub.size(); ++s) crossings += (cs.sub.key[s] & 0x80000000u) ? 1 : 0;
@@ -247,7 +254,7 @@ TEST(ContactDetector, ShearStressIsContinuousAcrossReDetectionWhileStuck) {
       EXPECT_NEAR(after.norm() / area_after, expected, 1e-9 * expected) << "re-detection " << redetections;
       dropped_expected += 0.5 * law.ks * dragged * dragged * (area_before - area_after);
     }
-    compute_pair_forces(law, b.state, cs.pairs, cs.sub, dt, 0, cs.pairs.size());
+    compute_pair_forces(uniform_joint_laws(law, b.count), b.state, cs.pairs, cs.sub, dt, 0, cs.pairs.size());
     translate(b, 1, Vec3(v * dt, 0, 0));
   }
   std::printf("dragged 6 cm: %d re-detections, %d crossing subcontacts, worst stress jump %.2e of ks*d, dropped %.4g J "

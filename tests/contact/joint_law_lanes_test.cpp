@@ -57,6 +57,7 @@ struct Scene {
   std::vector<ContactPair> pairs;
   Subcontacts sub;
 };
+int blocks_of(const Scene& s) { return static_cast<int>(s.st.position.size()); }
 
 // `blocks` blocks at random poses and motions, pairs between neighbours with
 // 1..9 subcontacts each, overlaps of both signs, random stored forces.
@@ -148,9 +149,9 @@ TEST(JointLawLanes, SameBitsAsThePortableLoopOnEveryBranch) {
       // for it (CodePath::lanes takes it there).
       Subcontacts lanes = s.sub, avx2 = s.sub, portable = s.sub;
       for (const double dt : {1e-5, 0.0}) {
-        compute_pair_forces(law, s.st, s.pairs, lanes, dt, 0, s.pairs.size(), CodePath::lanes);
-        compute_pair_forces(law, s.st, s.pairs, avx2, dt, 0, s.pairs.size(), CodePath::lanes_avx2);
-        compute_pair_forces(law, s.st, s.pairs, portable, dt, 0, s.pairs.size(), CodePath::portable);
+        compute_pair_forces(uniform_joint_laws(law, blocks_of(s)), s.st, s.pairs, lanes, dt, 0, s.pairs.size(), CodePath::lanes);
+        compute_pair_forces(uniform_joint_laws(law, blocks_of(s)), s.st, s.pairs, avx2, dt, 0, s.pairs.size(), CodePath::lanes_avx2);
+        compute_pair_forces(uniform_joint_laws(law, blocks_of(s)), s.st, s.pairs, portable, dt, 0, s.pairs.size(), CodePath::portable);
         expect_same_bits(lanes, portable, trial);
         expect_same_bits(avx2, portable, trial);
       }
@@ -188,8 +189,8 @@ TEST(JointLawLanes, JointsTurningBeyondTheSeriesGiveTheSameBits) {
     }
     for (const CodePath path : {CodePath::lanes, CodePath::lanes_avx2}) {
       Subcontacts lanes = s.sub, portable = s.sub;
-      compute_pair_forces(law, s.st, s.pairs, lanes, dt, 0, s.pairs.size(), path);
-      compute_pair_forces(law, s.st, s.pairs, portable, dt, 0, s.pairs.size(), CodePath::portable);
+      compute_pair_forces(uniform_joint_laws(law, blocks_of(s)), s.st, s.pairs, lanes, dt, 0, s.pairs.size(), path);
+      compute_pair_forces(uniform_joint_laws(law, blocks_of(s)), s.st, s.pairs, portable, dt, 0, s.pairs.size(), CodePath::portable);
       expect_same_bits(lanes, portable, trial);
     }
   }
@@ -206,11 +207,11 @@ TEST(JointLawLanes, PairRangesSplitAnywhereGiveTheSameBits) {
   law.kn = 1e10, law.ks = 4e9, law.tan_phi = 0.7, law.beta = 2e-5;
   Scene s = random_scene(rng, 30);
   Subcontacts whole = s.sub;
-  compute_pair_forces(law, s.st, s.pairs, whole, 1e-5, 0, s.pairs.size(), CodePath::lanes);
+  compute_pair_forces(uniform_joint_laws(law, blocks_of(s)), s.st, s.pairs, whole, 1e-5, 0, s.pairs.size(), CodePath::lanes);
   for (std::size_t cut = 0; cut <= s.pairs.size(); cut += 7) {
     Subcontacts split = s.sub;
-    compute_pair_forces(law, s.st, s.pairs, split, 1e-5, cut, s.pairs.size(), CodePath::lanes);
-    compute_pair_forces(law, s.st, s.pairs, split, 1e-5, 0, cut, CodePath::lanes);
+    compute_pair_forces(uniform_joint_laws(law, blocks_of(s)), s.st, s.pairs, split, 1e-5, cut, s.pairs.size(), CodePath::lanes);
+    compute_pair_forces(uniform_joint_laws(law, blocks_of(s)), s.st, s.pairs, split, 1e-5, 0, cut, CodePath::lanes);
     expect_same_bits(whole, split, static_cast<int>(cut));
   }
 }
@@ -232,13 +233,14 @@ namespace {
 TEST(JointLawLanes, TheSplitSchemesPartsGiveTheSameBits) {
   if (!lanes_available()) GTEST_SKIP() << "no AVX2 on this machine or build";
   std::mt19937_64 rng(33);
-  JointLaws laws;
-  laws.laws[0].kn = 1e10, laws.laws[0].ks = 4e9, laws.laws[0].tan_phi = std::tan(0.6), laws.laws[0].beta = 2.1e-3;
-  laws.laws[0].cohesion = 1e5, laws.laws[0].tensile_strength = 5e4;
+  JointLaw law;
+  law.kn = 1e10, law.ks = 4e9, law.tan_phi = std::tan(0.6), law.beta = 2.1e-3;
+  law.cohesion = 1e5, law.tensile_strength = 5e4;
   const double theta = 0.32, dt = 1e-5;
   int none = 0, normal_only = 0, both = 0, clamped = 0, bonded_acting = 0;
   for (int trial = 0; trial < 60; ++trial) {
     Scene s = random_scene(rng, 12);
+    const JointLaws laws = uniform_joint_laws(law, blocks_of(s));
     std::vector<Vec3> v_next(s.st.velocity.size()), w_next(s.st.velocity.size());
     for (std::size_t i = 0; i < v_next.size(); ++i) {
       v_next[i] = s.st.velocity[i] + random_vec(rng, 0.5);

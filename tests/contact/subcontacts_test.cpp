@@ -21,6 +21,8 @@ namespace polydem {
 namespace {
 
 constexpr double kKs = 1e9;
+// The blocks' joints under one law of shear stiffness kKs.
+JointLaws ks_laws(const Blocks& b) { return uniform_joint_laws(JointLaw{1e10, kKs, 0.5, 0, 0, 0}, b.count); }
 constexpr double kMargin = 0.01;
 
 struct Point {
@@ -98,7 +100,7 @@ TEST(CarryHistory, FollowsThePositionNotTheKey) {
                             {0.5, -0.5, 0.225, 94}, {0.0, 0.0, 0.1, 95}};
   ContactSet current = one_pair(now);
   CarryScratch scratch;
-  carry_history(b, previous, current, kKs, kMargin, scratch);
+  carry_history(b, previous, current, ks_laws(b), kMargin, scratch);
   const int source[4] = {2, 3, 0, 1};
   Vec3 mean_stress = Vec3::Zero();
   for (int o = 0; o < 4; ++o) mean_stress += previous.sub.shear_force[o] / 0.25 / 4;
@@ -144,7 +146,7 @@ TEST(CarryHistory, ATwistIsCarriedOntoANewClipExactly) {
                                 {0.5, 0.0, 0.125, 7},       {0.0, 0.5, 0.125, 8}};
   ContactSet current = one_pair(octagon);
   CarryScratch scratch;
-  carry_history(b, previous, current, kKs, kMargin, scratch);
+  carry_history(b, previous, current, ks_laws(b), kMargin, scratch);
   double e_old = 0, e_new = 0;
   for (int s = 0; s < 4; ++s) e_old += energy(previous.sub.shear_force[s], 0.25);
   for (std::size_t s = 0; s < octagon.size(); ++s) {
@@ -171,7 +173,7 @@ TEST(CarryHistory, APointOffThePreviousPatchStartsWithoutHistory) {
   // 0.08 m off does not.
   ContactSet current = one_pair({{0.56, 0.0, 0.25, 1}, {-0.58, 0.0, 0.25, 2}});
   CarryScratch scratch;
-  carry_history(b, previous, current, kKs, kMargin, scratch);
+  carry_history(b, previous, current, ks_laws(b), kMargin, scratch);
   EXPECT_NEAR((current.sub.shear_force[0] - Vec3(0, 250, 0)).norm(), 0.0, 1e-9);
   EXPECT_EQ(current.sub.bonded[0], 1);
   EXPECT_EQ(current.sub.shear_force[1], Vec3::Zero());
@@ -191,7 +193,7 @@ TEST(CarryHistory, ACornerSplitIntoTwoCrossingsSharesItsDisplacement) {
   previous.sub.bonded[0] = 1;
   ContactSet current = one_pair({{0.495, 0.5, 0.125, 7}, {0.5, 0.495, 0.125, 8}});
   CarryScratch scratch;
-  carry_history(b, previous, current, kKs, kMargin, scratch);
+  carry_history(b, previous, current, ks_laws(b), kMargin, scratch);
   for (int s = 0; s < 2; ++s) {
     EXPECT_NEAR((current.sub.shear_force[s] - 0.5 * f).norm(), 0.0, 1e-12 * f.norm()) << s;
     EXPECT_EQ(current.sub.bonded[s], 1);
@@ -211,7 +213,7 @@ TEST(CarryHistory, InheritorsWithMoreAreaShareTheEnergyInsteadOfCopyingIt) {
   previous.sub.shear_force.set(0, f);
   ContactSet current = one_pair({{0.495, 0.5, 0.25, 7}, {0.5, 0.495, 0.25, 8}});
   CarryScratch scratch;
-  carry_history(b, previous, current, kKs, kMargin, scratch);
+  carry_history(b, previous, current, ks_laws(b), kMargin, scratch);
   const double e_new = energy(current.sub.shear_force[0], 0.25) + energy(current.sub.shear_force[1], 0.25);
   EXPECT_NEAR(e_new, energy(f, 0.25), 1e-12 * energy(f, 0.25));
   EXPECT_NEAR(current.sub.shear_force[0].y(), 1000 / std::sqrt(2.0), 1e-9);
@@ -231,7 +233,7 @@ TEST(CarryHistory, ShearOfAreaThatIsGoneIsBookedAsDropped) {
   // Corners 0, 2, 3 remain with a fifth of their area lost; corner 1 is gone.
   ContactSet current = one_pair({{-0.5, -0.5, 0.2, 1}, {0.5, 0.5, 0.2, 2}, {-0.5, 0.5, 0.2, 3}});
   CarryScratch scratch;
-  carry_history(b, previous, current, kKs, kMargin, scratch);
+  carry_history(b, previous, current, ks_laws(b), kMargin, scratch);
   for (int s = 0; s < 3; ++s) EXPECT_NEAR((current.sub.shear_force[s] - 0.8 * f).norm(), 0.0, 1e-9) << s;
   const double before = 4 * energy(f, 0.25);
   const double after = 3 * energy(0.8 * f, 0.2);
@@ -248,7 +250,7 @@ TEST(CarryHistory, AReferenceFaceThatChangesSidesTurnsTheForceOntoTheOtherBlock)
   previous.sub.shear_force.set(0, Vec3(10, 20, 0));
   ContactSet current = one_pair({{0.5, 0.5, 0.25, 1}}, 1);
   CarryScratch scratch;
-  carry_history(b, previous, current, kKs, kMargin, scratch);
+  carry_history(b, previous, current, ks_laws(b), kMargin, scratch);
   EXPECT_EQ(current.sub.shear_force[0], Vec3(-10, -20, 0));
 }
 
@@ -266,7 +268,7 @@ TEST(CarryHistory, AnotherPairDoesNotInheritAndAPairThatIsGoneDropsItsShear) {
   previous.sub.shear_force.set(0, Vec3(500, 0, 0));
   ContactSet current = one_pair({{0.5, 0.5, 0.25, 11}}, 0, 0, 2);
   CarryScratch scratch;
-  carry_history(b, previous, current, kKs, kMargin, scratch);
+  carry_history(b, previous, current, ks_laws(b), kMargin, scratch);
   EXPECT_EQ(current.sub.shear_force[0], Vec3::Zero());
   EXPECT_EQ(current.sub.slip_energy[0], 0.0);
   EXPECT_EQ(current.retired_slip_energy, 3.0);
@@ -281,7 +283,7 @@ TEST(CarryHistory, AnotherPairDoesNotInheritAndAPairThatIsGoneDropsItsShear) {
 constexpr double kKn = 1e10;
 
 double normal_energy(const Blocks& b, const ContactSet& cs) {
-  return normal_strain_energy_now(JointLaw{kKn, kKs, 0.5, 0, 0, 0}, b.state, cs.sub);
+  return normal_strain_energy_now(uniform_joint_laws(JointLaw{kKn, kKs, 0.5, 0, 0, 0}, b.count), b.state, cs.sub);
 }
 
 TEST(HoldNormalStrain, ASliverFoundDeepUnderAFullPolygonKeepsItsEnergy) {
@@ -296,7 +298,7 @@ TEST(HoldNormalStrain, ASliverFoundDeepUnderAFullPolygonKeepsItsEnergy) {
   const double e_old = normal_energy(b, previous);
   ASSERT_NEAR(e_old, 0.5 * kKn * 1e-4 * u * u, 1e-9 * e_old);
   ASSERT_NEAR(normal_energy(b, current), 1e4 * e_old, 1e-9 * 1e4 * e_old);  // 36 kJ from nowhere
-  hold_normal_strain(JointLaws(JointLaw{kKn, kKs, 0.5, 0, 0, 0}), b.state, previous, current);
+  hold_normal_strain(uniform_joint_laws(JointLaw{kKn, kKs, 0.5, 0, 0, 0}, b.count), b.state, previous, current);
   EXPECT_NEAR(normal_energy(b, current), e_old, 1e-12 * 1e4 * e_old);
   // One shift for the pair: (u − δ)²·1 m² = u²·1e-4 m², δ = 0.99·u.
   for (int s = 0; s < 4; ++s) {
@@ -322,7 +324,7 @@ TEST(HoldNormalStrain, ATiltedPatchPartlyOpenMatchesThePreviousEnergy) {
                                  {-0.5, 0.5, 0.2, 14}});
   const double e_old = normal_energy(b, previous), e_new = normal_energy(b, current);
   ASSERT_GT(e_new, 2 * e_old);
-  hold_normal_strain(JointLaws(JointLaw{kKn, kKs, 0.5, 0, 0, 0}), b.state, previous, current);
+  hold_normal_strain(uniform_joint_laws(JointLaw{kKn, kKs, 0.5, 0, 0, 0}, b.count), b.state, previous, current);
   EXPECT_NEAR(normal_energy(b, current), e_old, 1e-12 * e_new);
   EXPECT_LT(current.sub.ref_offset_local[0], 0.0);
   EXPECT_EQ(current.sub.ref_offset_local[0], current.sub.ref_offset_local[3]);
@@ -331,7 +333,7 @@ TEST(HoldNormalStrain, ATiltedPatchPartlyOpenMatchesThePreviousEnergy) {
 TEST(HoldNormalStrain, LoweringIsLeftAloneANewPairStartsAtZeroForceBondsAreKept) {
   Blocks b = two_blocks_at_rest();
   b.state.position[1] = Vec3(0, 0, -1e-3);
-  const JointLaws laws(JointLaw{kKn, kKs, 0.5, 0, 0, 0});
+  const JointLaws laws = uniform_joint_laws(JointLaw{kKn, kKs, 0.5, 0, 0, 0}, b.count);
   // Less strain than before: the ledger books it, the plane stays.
   ContactSet full = one_pair(square(1));
   ContactSet sliver = one_pair({{0.4, 0.4, 1e-4, 11}});
@@ -365,7 +367,7 @@ TEST(HoldNormalStrain, AReferenceFaceThatChangesSidesIsHeldAlike) {
   ContactSet current = one_pair(square(11), 1);
   const double e_old = normal_energy(b, previous), e_new = normal_energy(b, current);
   ASSERT_NEAR(e_new, 1e4 * e_old, 1e-9 * e_new);
-  hold_normal_strain(JointLaws(JointLaw{kKn, kKs, 0.5, 0, 0, 0}), b.state, previous, current);
+  hold_normal_strain(uniform_joint_laws(JointLaw{kKn, kKs, 0.5, 0, 0, 0}, b.count), b.state, previous, current);
   EXPECT_NEAR(normal_energy(b, current), e_old, 1e-12 * e_new);
   for (int s = 0; s < 4; ++s) EXPECT_NEAR(current.sub.crush[s], 0.99 * u, 1e-12) << s;
 }
@@ -385,7 +387,7 @@ TEST(HoldNormalStrain, ABondsTensionIsNotHandedOnAsCompression) {
   const double u_pressed = 0.5 * std::sin(tilt) - 1e-3;  // the corner at y = −0.5
   const double compression = 0.5 * kKn * 0.05 * u_pressed * u_pressed;
   ASSERT_GT(normal_energy(b, previous), 5 * compression);  // the bond's tension counts in the ledger
-  hold_normal_strain(JointLaws(JointLaw{kKn, kKs, 0.5, 0, 0, 0}), b.state, previous, current);
+  hold_normal_strain(uniform_joint_laws(JointLaw{kKn, kKs, 0.5, 0, 0, 0}, b.count), b.state, previous, current);
   EXPECT_NEAR(normal_energy(b, current), compression, 1e-12 * normal_energy(b, previous));
 }
 

@@ -6,6 +6,7 @@
 // The blocks start in static equilibrium on their joints (lowered by the
 // settlement m·g/(kn·A)), so no sudden load rings the joints.
 #include "integrators/simulation.hpp"
+#include "tests/support/simulation.hpp"
 
 #include <gtest/gtest.h>
 
@@ -76,8 +77,8 @@ TEST(ContactHistory, TwistedBlockSpringsBackThroughReDetection) {
   BlockSpec top = box("top", Vec3(1, 1, 1), Vec3(0, 0, 0.5 - settle));
   top.angular_velocity = Vec3(0, 0, 0.54);
   Blocks blocks = build_blocks({box("base", Vec3(1, 1, 1), Vec3(0, 0, -0.5), BlockMotion::fixed), top});
-  const double dt = critical_time_step(blocks, joint, sim.safety_factor).chosen;
-  Simulation s(std::move(blocks), sim, joint, GroundMotion{}, 0.02, dt);
+  const double dt = critical_time_step(blocks, make_joint_law(joint), sim.safety_factor).chosen;
+  Simulation s = one_law_simulation(std::move(blocks), sim, joint, GroundMotion{}, 0.02, dt);
   BalanceError balance;
   double lo = 0, hi = 0, twist_at_redetection = 0;
   int subcontacts_after = 0;
@@ -130,8 +131,8 @@ TEST(ContactHistory, LedgerClosesWhenASlidingBlockLeavesItsBase) {
   BlockSpec stone = box("stone", Vec3(1, 1, 0.5), Vec3(0, 0, 0.25 - settle));
   stone.velocity = Vec3(1.5, 0, 0);
   Blocks blocks = build_blocks({box("base", Vec3(2, 2, 0.5), Vec3(-0.5, 0, -0.25), BlockMotion::fixed), stone});
-  const double dt = critical_time_step(blocks, joint, sim.safety_factor).chosen;
-  Simulation s(std::move(blocks), sim, joint, GroundMotion{}, 0.01, dt);
+  const double dt = critical_time_step(blocks, make_joint_law(joint), sim.safety_factor).chosen;
+  Simulation s = one_law_simulation(std::move(blocks), sim, joint, GroundMotion{}, 0.01, dt);
   BalanceError balance;
   while (s.time() < 1.0) {
     s.step();

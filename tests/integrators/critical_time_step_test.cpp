@@ -25,6 +25,7 @@
 
 #include "integrators/simulation.hpp"
 #include "io/deck.hpp"
+#include "tests/support/simulation.hpp"
 
 #include <gtest/gtest.h>
 
@@ -64,7 +65,7 @@ TEST(CriticalTimeStep, UnitCubeMatchesTheHandFormula) {
   joint.damping = 0.0;
   const double L = 1.0, rho = 2600.0;
   const Blocks b = one_box(Vec3(L, L, L), rho);
-  const CriticalStep cs = critical_time_step(b, joint, 0.8);
+  const CriticalStep cs = critical_time_step(b, make_joint_law(joint), 0.8);
   const double kn = joint.normal_stiffness, ks = joint.shear_stiffness;
   // Translational: K = kn·2L² + ks·4L² per axis, m = ρL³.
   const double w_t2 = (2 * kn + 4 * ks) * L * L / (rho * L * L * L);
@@ -87,7 +88,7 @@ TEST(CriticalTimeStep, UnequalBoxMatchesTheHandFormula) {
   joint.damping = 0.0;
   for (const Vec3& size : {Vec3(1, 2, 3), Vec3(3, 0.5, 1), Vec3(0.2, 0.2, 2)}) {
     const Blocks b = one_box(size, 2000.0, Vec3(5, -2, 1));
-    const CriticalStep cs = critical_time_step(b, joint, 1.0);
+    const CriticalStep cs = critical_time_step(b, make_joint_law(joint), 1.0);
     const double omega = std::sqrt(2.0) * box_omega_b(size.x(), size.y(), size.z(), 2000.0, joint.normal_stiffness,
                                                       joint.shear_stiffness);
     EXPECT_NEAR(cs.omega_max, omega, 1e-12 * omega) << size.transpose();
@@ -102,7 +103,7 @@ TEST(CriticalTimeStep, DampingCorrection) {
   joint.damping = 2.1e-5;
   const double rho = 2600.0, L = 0.5;
   const Blocks b = one_box(Vec3(L, L, L), rho);
-  const CriticalStep cs = critical_time_step(b, joint, 0.7);
+  const CriticalStep cs = critical_time_step(b, make_joint_law(joint), 0.7);
   const double omega = std::sqrt(2.0 * 2.0 * (joint.normal_stiffness + 4 * joint.shear_stiffness) / (rho * L));
   const double xi = joint.damping * omega / 2.0;
   EXPECT_NEAR(cs.omega_max, omega, 1e-12 * omega);
@@ -113,9 +114,9 @@ TEST(CriticalTimeStep, DampingCorrection) {
   // Damping shortens the step.
   EXPECT_LT(cs.critical, 2.0 / omega);
   // The step gives back the frequency it was chosen for (with and without β).
-  EXPECT_NEAR(highest_frequency_for_step(cs.chosen, joint, 0.7), omega, 1e-12 * omega);
+  EXPECT_NEAR(highest_frequency_for_step(cs.chosen, joint.damping, 0.7), omega, 1e-12 * omega);
   joint.damping = 0;
-  EXPECT_NEAR(highest_frequency_for_step(critical_step_for(omega, joint, 0.7).chosen, joint, 0.7), omega, 1e-12 * omega);
+  EXPECT_NEAR(highest_frequency_for_step(critical_step_for(omega, joint.damping, 0.7).chosen, joint.damping, 0.7), omega, 1e-12 * omega);
 }
 
 TEST(CriticalTimeStep, SmallestFreeBlockGovernsAndFixedBlocksDoNot) {
@@ -130,14 +131,14 @@ TEST(CriticalTimeStep, SmallestFreeBlockGovernsAndFixedBlocksDoNot) {
   tiny_fixed.shape = make_box(Vec3(0.1, 0.1, 0.1), Vec3(-3, 0, 0));
   tiny_fixed.motion = BlockMotion::fixed;
   const Blocks b = build_blocks({big, small, tiny_fixed});
-  const CriticalStep cs = critical_time_step(b, joint, 1.0);
+  const CriticalStep cs = critical_time_step(b, make_joint_law(joint), 1.0);
   EXPECT_EQ(cs.governing_block, 1);
   // ω ∝ 1/√L for a cube: the half-size cube is √2 faster.
   const Blocks big_only = one_box(Vec3(1, 1, 1), 2600.0);
-  EXPECT_NEAR(cs.omega_max, std::sqrt(2.0) * critical_time_step(big_only, joint, 1.0).omega_max, 1e-9 * cs.omega_max);
+  EXPECT_NEAR(cs.omega_max, std::sqrt(2.0) * critical_time_step(big_only, make_joint_law(joint), 1.0).omega_max, 1e-9 * cs.omega_max);
   // No free block: no step to choose.
   const Blocks fixed_only = one_box(Vec3(1, 1, 1), 2600.0, Vec3::Zero(), BlockMotion::fixed);
-  const CriticalStep none = critical_time_step(fixed_only, joint, 1.0);
+  const CriticalStep none = critical_time_step(fixed_only, make_joint_law(joint), 1.0);
   EXPECT_EQ(none.omega_max, 0.0);
   EXPECT_EQ(none.chosen, 0.0);
   EXPECT_EQ(none.governing_block, -1);
@@ -149,20 +150,20 @@ TEST(CriticalTimeStep, SmallestFreeBlockGovernsAndFixedBlocksDoNot) {
 // the estimate is bit for bit the full one; when no, it says so.
 TEST(CriticalTimeStep, ASkippedBlockNeverChangesTheAnswerOnTheSpire) {
   const SceneSpec spec = read_deck(std::string(POLYDEM_SOURCE_DIR) + "/examples/spire/earthquake.toml");
-  Simulation sim(build_blocks(spec.blocks), spec.simulation, spec.joint, GroundMotion{}, 0.005, 1e-6);
-  const JointLaws laws(make_joint_law(spec.joint));
-  const CriticalStep full = critical_time_step_from_contacts(sim.blocks(), sim.contacts(), laws, spec.joint, 0.8);
+  Simulation sim = one_law_simulation(build_blocks(spec.blocks), spec.simulation, spec.joint, GroundMotion{}, 0.005, 1e-6);
+  const JointLaws& laws = sim.joint_laws();
+  const CriticalStep full = critical_time_step_from_contacts(sim.blocks(), sim.contacts(), laws, spec.joint.damping, 0.8);
   ASSERT_GT(full.chosen, 0.0);
   for (const double f : {1.0 + 1e-12, 1.01, 1.5, 10.0}) {  // some block needs a step below `below`
     const CriticalStep c =
-        critical_time_step_from_contacts(sim.blocks(), sim.contacts(), laws, spec.joint, 0.8, f * full.chosen);
+        critical_time_step_from_contacts(sim.blocks(), sim.contacts(), laws, spec.joint.damping, 0.8, f * full.chosen);
     EXPECT_EQ(c.chosen, full.chosen) << f;
     EXPECT_EQ(c.omega_max, full.omega_max) << f;
     EXPECT_EQ(c.governing_block, full.governing_block) << f;
   }
   for (const double f : {1.0, 0.99, 0.5}) {  // none does
     const CriticalStep c =
-        critical_time_step_from_contacts(sim.blocks(), sim.contacts(), laws, spec.joint, 0.8, f * full.chosen);
+        critical_time_step_from_contacts(sim.blocks(), sim.contacts(), laws, spec.joint.damping, 0.8, f * full.chosen);
     EXPECT_TRUE(c.chosen == 0.0 || c.chosen >= f * full.chosen) << f << " " << c.chosen;
   }
   // Per block: the bound is above the frequency (every block's own step
@@ -178,7 +179,7 @@ TEST(CriticalTimeStep, ASkippedBlockNeverChangesTheAnswerOnTheSpire) {
                        (std::sqrt(1 + std::pow(0.5 * joint.damping * std::sqrt(2.0) * w[i], 2)) -
                         0.5 * joint.damping * std::sqrt(2.0) * w[i]);
     const CriticalStep c =
-        critical_time_step_from_contacts(sim.blocks(), sim.contacts(), laws, spec.joint, 0.8, own * (1 + 1e-9));
+        critical_time_step_from_contacts(sim.blocks(), sim.contacts(), laws, spec.joint.damping, 0.8, own * (1 + 1e-9));
     EXPECT_GE(c.omega_max, std::sqrt(2.0) * w[i] * (1 - 1e-12)) << sim.blocks().props.name[i];
     ++checked;
   }

@@ -14,6 +14,7 @@
 // exceeds the integrator's ½·m·v₋·v₊ by m·(dt·a)²/8; 0.06 % at worst with
 // the latter (integrators/simulation.cpp, energies()).
 #include "integrators/simulation.hpp"
+#include "tests/support/simulation.hpp"
 
 #include <gtest/gtest.h>
 
@@ -49,8 +50,8 @@ ImpactLedger overdamped_impact(double step_fraction, double end_time = 0.05,
   joint.shear_stiffness = 0.4e9;
   joint.damping = 4.56e-3;
   Blocks blocks = build_blocks({base, stone});
-  const double dt = step_fraction * critical_time_step(blocks, joint, sim.safety_factor, scheme).chosen;
-  Simulation s(std::move(blocks), sim, joint, GroundMotion{}, 0.01, dt);
+  const double dt = step_fraction * critical_time_step(blocks, make_joint_law(joint), sim.safety_factor, scheme).chosen;
+  Simulation s = one_law_simulation(std::move(blocks), sim, joint, GroundMotion{}, 0.01, dt);
   ImpactLedger r;
   double balance0 = 0, reference = 0;
   bool first = true;

@@ -1,6 +1,7 @@
 // The guard stops a run that goes wrong, naming the cause, and keeps the
 // state of its last passed check.
 #include "integrators/simulation.hpp"
+#include "tests/support/simulation.hpp"
 
 #include <gtest/gtest.h>
 
@@ -24,11 +25,11 @@ TEST(Guard, StepAboveTheCriticalOneIsLoweredAutomatically) {
   JointSpec joint;
   joint.damping = 0;
   Blocks blocks = build_blocks(block_on_base());
-  const double critical = critical_time_step(blocks, joint, 1.0).critical;
-  Simulation s(std::move(blocks), sim, joint, GroundMotion{}, 0.02, 3.0 * critical);
+  const double critical = critical_time_step(blocks, make_joint_law(joint), 1.0).critical;
+  Simulation s = one_law_simulation(std::move(blocks), sim, joint, GroundMotion{}, 0.02, 3.0 * critical);
   // Lowered to the joints' own bound (one face in contact: less stiff than
   // the all-faces bound, so the new step may exceed `critical`).
-  const double from_joints = critical_time_step_from_contacts(s.blocks(), s.contacts(), joint, sim.safety_factor).chosen;
+  const double from_joints = critical_time_step_from_contacts(s.blocks(), s.contacts(), s.joint_laws(), joint.damping, sim.safety_factor).chosen;
   EXPECT_EQ(s.dt(), from_joints);
   EXPECT_LT(s.dt(), 3.0 * critical);
   EXPECT_EQ(s.time_step_reductions(), 1);
@@ -43,8 +44,8 @@ TEST(Guard, UnstableRunIsStoppedWithACause) {
   JointSpec joint;
   joint.damping = 0;
   Blocks blocks = build_blocks(block_on_base());
-  const double critical = critical_time_step(blocks, joint, 1.0).critical;
-  Simulation s(std::move(blocks), sim, joint, GroundMotion{}, 0.02, 6.0 * critical, /*adaptive_time_step=*/false);
+  const double critical = critical_time_step(blocks, make_joint_law(joint), 1.0).critical;
+  Simulation s = one_law_simulation(std::move(blocks), sim, joint, GroundMotion{}, 0.02, 6.0 * critical, /*adaptive_time_step=*/false);
   std::string message;
   try {
     for (int n = 0; n < 100000; ++n) s.step();
@@ -65,8 +66,8 @@ TEST(Guard, StableRunIsNotStopped) {
   SimulationSpec sim;
   JointSpec joint;
   Blocks blocks = build_blocks(block_on_base());
-  const double dt = critical_time_step(blocks, joint, 0.8).chosen;
-  Simulation s(std::move(blocks), sim, joint, GroundMotion{}, 0.02, dt);
+  const double dt = critical_time_step(blocks, make_joint_law(joint), 0.8).chosen;
+  Simulation s = one_law_simulation(std::move(blocks), sim, joint, GroundMotion{}, 0.02, dt);
   EXPECT_NO_THROW(for (int n = 0; n < 20000; ++n) s.step());
   EXPECT_EQ(s.last_good_step(), s.steps() - s.steps() % 256);
 }

@@ -15,6 +15,7 @@
 #include "integrators/critical_time_step.hpp"
 #include "integrators/simulation.hpp"
 #include "io/deck.hpp"
+#include "tests/support/simulation.hpp"
 
 #include <gtest/gtest.h>
 
@@ -44,7 +45,7 @@ JointSpec stiff_joint() {
 Simulation stack(int free_cubes) {
   std::vector<BlockSpec> specs{cube("base", -1.0, BlockMotion::fixed)};
   for (int i = 0; i < free_cubes; ++i) specs.push_back(cube(std::to_string(i), static_cast<double>(i)));
-  return Simulation(build_blocks(specs), SimulationSpec{}, stiff_joint(), GroundMotion{}, 0.01, 1e-6);
+  return one_law_simulation(build_blocks(specs), SimulationSpec{}, stiff_joint(), GroundMotion{}, 0.01, 1e-6);
 }
 
 // The relative distance from `w` to the nearest of `omega`.
@@ -56,13 +57,13 @@ double nearest(const std::vector<double>& omega, double w) {
 
 // The run's joint bound of the highest frequency (rad/s).
 double joint_bound(const Simulation& sim, const JointLaws& laws, const JointSpec& joint) {
-  return critical_time_step_from_contacts(sim.blocks(), sim.contacts(), laws, joint, 0.8, 0, 1, StepBound::joint)
+  return critical_time_step_from_contacts(sim.blocks(), sim.contacts(), laws, joint.damping, 0.8, 0, 1, StepBound::joint)
       .omega_max;
 }
 
 TEST(JointModes, OneCubeOnTheBaseVibratesAtItsOwnFrequency) {
   Simulation sim = stack(1);
-  const JointLaws laws(make_joint_law(stiff_joint()));
+  const JointLaws& laws = sim.joint_laws();
   const JointModes m = joint_modes(sim.blocks(), sim.contacts(), laws);
   const std::vector<double> own = block_frequencies_from_contacts(sim.blocks(), sim.contacts(), laws);
   ASSERT_EQ(m.omega.size(), 6u);
@@ -77,7 +78,7 @@ TEST(JointModes, OneCubeOnTheBaseVibratesAtItsOwnFrequency) {
 
 TEST(JointModes, TwoCubesStackedVibrateVerticallyAsTheChain) {
   Simulation sim = stack(2);
-  const JointLaws laws(make_joint_law(stiff_joint()));
+  const JointLaws& laws = sim.joint_laws();
   const JointModes m = joint_modes(sim.blocks(), sim.contacts(), laws);
   ASSERT_EQ(m.omega.size(), 12u);
   const double k_over_m = 1e10 * 1.0 / 2000.0;
@@ -103,13 +104,13 @@ TEST(JointModes, RigidMotionOfAFreeClusterStrainsNoJoint) {
   std::vector<BlockSpec> specs{cube("a", 0.0), cube("b", 0.0), cube("top", 1.0)};
   specs[0].shape = make_box(Vec3(1, 1, 1), Vec3(-0.5, 0, 0));
   specs[1].shape = make_box(Vec3(1, 1, 1), Vec3(0.5, 0, 0));
-  Simulation sim(build_blocks(specs), SimulationSpec{}, stiff_joint(), GroundMotion{}, 0.01, 1e-6);
+  Simulation sim = one_law_simulation(build_blocks(specs), SimulationSpec{}, stiff_joint(), GroundMotion{}, 0.01, 1e-6);
   ASSERT_EQ(sim.contacts().pairs.size(), 3u);
-  const JointModes m = joint_modes(sim.blocks(), sim.contacts(), JointLaws(make_joint_law(stiff_joint())));
+  const JointModes m = joint_modes(sim.blocks(), sim.contacts(), sim.joint_laws());
   ASSERT_EQ(m.omega.size(), 18u);
   for (int k = 0; k < 6; ++k) EXPECT_LT(m.omega[k], 1e-6 * m.omega_max) << k;
   EXPECT_GT(m.omega[6], 1e-2 * m.omega_max);
-  EXPECT_GE(joint_bound(sim, JointLaws(make_joint_law(stiff_joint())), stiff_joint()), m.omega_max * (1 - 1e-12));
+  EXPECT_GE(joint_bound(sim, sim.joint_laws(), stiff_joint()), m.omega_max * (1 - 1e-12));
 }
 
 // The spire at its first detection (examples/spire/earthquake.toml): the
@@ -119,10 +120,10 @@ TEST(JointModes, RigidMotionOfAFreeClusterStrainsNoJoint) {
 // joint bound, with Gershgorin ratios, 0.921).
 TEST(JointModes, TheSpiresStepBoundsLieAboveItsHighestFrequency) {
   const SceneSpec spec = read_deck(std::string(POLYDEM_SOURCE_DIR) + "/examples/spire/earthquake.toml");
-  Simulation sim(build_blocks(spec.blocks), spec.simulation, spec.joint, GroundMotion{}, 0.005, 1e-6);
-  const JointLaws laws(make_joint_law(spec.joint));
+  Simulation sim = one_law_simulation(build_blocks(spec.blocks), spec.simulation, spec.joint, GroundMotion{}, 0.005, 1e-6);
+  const JointLaws& laws = sim.joint_laws();
   const JointModes m = joint_modes(sim.blocks(), sim.contacts(), laws);
-  const CriticalStep run = critical_time_step_from_contacts(sim.blocks(), sim.contacts(), laws, spec.joint, 0.8);
+  const CriticalStep run = critical_time_step_from_contacts(sim.blocks(), sim.contacts(), laws, spec.joint.damping, 0.8);
   EXPECT_NEAR(m.block_bound / run.omega_max, 1.0, 1e-12);
   EXPECT_GT(m.block_bound, m.split_bound);
   EXPECT_GT(m.split_bound, m.omega_max);
@@ -145,8 +146,8 @@ TEST(JointModes, TheSpiresStepBoundsLieAboveItsHighestFrequency) {
 // (measured 2026-11-25), against 1.41 for the block bound.
 TEST(JointModes, TheColumnsJointBoundIsCloseAboveItsHighestFrequency) {
   const SceneSpec spec = read_deck(std::string(POLYDEM_SOURCE_DIR) + "/examples/structures/column.toml");
-  Simulation sim(build_blocks(spec.blocks), spec.simulation, spec.joint, GroundMotion{}, 0.005, 1e-6);
-  const JointLaws laws(make_joint_law(spec.joint));
+  Simulation sim = one_law_simulation(build_blocks(spec.blocks), spec.simulation, spec.joint, GroundMotion{}, 0.005, 1e-6);
+  const JointLaws& laws = sim.joint_laws();
   const JointModes m = joint_modes(sim.blocks(), sim.contacts(), laws);
   const double joint = joint_bound(sim, laws, spec.joint);
   EXPECT_GT(joint, m.omega_max);
@@ -158,8 +159,8 @@ TEST(JointModes, TheColumnsJointBoundIsCloseAboveItsHighestFrequency) {
 TEST(JointModes, RefusesSceneTooLargeForADenseSolve) {
   std::vector<BlockSpec> specs;
   for (int i = 0; i <= max_joint_mode_blocks; ++i) specs.push_back(cube(std::to_string(i), 2.0 * i));
-  Simulation sim(build_blocks(specs), SimulationSpec{}, stiff_joint(), GroundMotion{}, 0.01, 1e-6);
-  EXPECT_THROW(joint_modes(sim.blocks(), sim.contacts(), JointLaws(make_joint_law(stiff_joint()))),
+  Simulation sim = one_law_simulation(build_blocks(specs), SimulationSpec{}, stiff_joint(), GroundMotion{}, 0.01, 1e-6);
+  EXPECT_THROW(joint_modes(sim.blocks(), sim.contacts(), sim.joint_laws()),
                std::invalid_argument);
 }
 

@@ -6,6 +6,7 @@
 // velocity at t = 0 is v₋ + g·dt/2. Positions are checked to round-off:
 // n additions of O(|x|) numbers, n·ε·|x| ≲ 1e-12 m here.
 #include "integrators/simulation.hpp"
+#include "tests/support/simulation.hpp"
 
 #include <gtest/gtest.h>
 
@@ -42,7 +43,7 @@ TEST(Simulation, FreeFlightFollowsTheExactParabolaOfTheInitialVelocity) {
   SimulationSpec sim;
   sim.gravity = Vec3(0.3, 0, -9.81);
   const double dt = 1e-3;
-  Simulation s(build_blocks({box_spec("stone", Vec3(1, 1, 1), x0, v0)}), sim, JointSpec{}, GroundMotion{}, 0.02, dt);
+  Simulation s = one_law_simulation(build_blocks({box_spec("stone", Vec3(1, 1, 1), x0, v0)}), sim, JointSpec{}, GroundMotion{}, 0.02, dt);
   for (int n = 1; n <= 1000; ++n) {
     s.step();
     const double t = n * dt;
@@ -56,7 +57,7 @@ TEST(Simulation, FreeFlightFollowsTheExactParabolaOfTheInitialVelocity) {
 TEST(Simulation, TorqueFreeSpinAboutAPrincipalAxis) {
   const Vec3 w(0, 0, 5.0);  // rad/s about z: the 3 m axis of the 1 × 2 × 3 box, smallest moment
   const double dt = 1e-4;
-  Simulation s(build_blocks({box_spec("b", Vec3(1, 2, 3), Vec3(0, 0, 0), Vec3::Zero(), w)}), no_gravity(),
+  Simulation s = one_law_simulation(build_blocks({box_spec("b", Vec3(1, 2, 3), Vec3(0, 0, 0), Vec3::Zero(), w)}), no_gravity(),
                JointSpec{}, GroundMotion{}, 0.02, dt);
   const double m = 2000.0 * 6.0;
   const double Iz = m * (1 + 4) / 12.0;
@@ -125,7 +126,7 @@ double run_asymmetric_spin(double dt, double t_end, double* L_drift, double* ene
   };
   const double E0 = energy(blocks.state.orientation[0], L0);
   const Polyhedron local = blocks.props.local_shape[0];
-  Simulation s(std::move(blocks), no_gravity(), JointSpec{}, GroundMotion{}, 0.02, dt);
+  Simulation s = one_law_simulation(std::move(blocks), no_gravity(), JointSpec{}, GroundMotion{}, 0.02, dt);
   const int n = static_cast<int>(std::lround(t_end / dt));
   double worst_L = 0, worst_E = 0;
   for (int k = 0; k < n; ++k) {
@@ -174,7 +175,7 @@ TEST(Simulation, AsymmetricSpinConservesAngularMomentumWithTheFullInertiaTensor)
 TEST(Simulation, NonFiniteStateRaisesInstabilityErrorNamingTheStep) {
   Blocks blocks = build_blocks({box_spec("runaway", Vec3(1, 1, 1), Vec3(0, 0, 5))});
   blocks.state.velocity[0].x() = std::numeric_limits<double>::quiet_NaN();
-  Simulation s(std::move(blocks), SimulationSpec{}, JointSpec{}, GroundMotion{}, 0.02, 1e-3);
+  Simulation s = one_law_simulation(std::move(blocks), SimulationSpec{}, JointSpec{}, GroundMotion{}, 0.02, 1e-3);
   std::string message;
   long failed_at = -1;
   try {

@@ -32,7 +32,7 @@ std::string bytes_of(const ContactSet& c) {
 TEST(ParallelDetection, TwoThreadsGiveTheSameBitsOnTheSpire) {
   const SceneSpec spec = read_deck(std::string(POLYDEM_SOURCE_DIR) + "/examples/spire/earthquake.toml");
   Blocks blocks = build_blocks(spec.blocks);
-  const JointLaws laws(make_joint_law(spec.joint));
+  const JointLaws laws = make_joint_laws(blocks, spec.joint, {});
   const double margin = 0.005;
   ContactDetector one(blocks, margin), two(blocks, margin);
   one.set_threads(1);
@@ -70,14 +70,14 @@ TEST(ParallelDetection, TwoThreadsGiveTheSameBitsOnTheSpire) {
   EXPECT_NE(c1.resampled_normal_energy, 0.0);  // and the re-sampling strain to book
 
   // The step check: the full estimate, and one that skips blocks.
-  const CriticalStep full1 = critical_time_step_from_contacts(blocks, c1, laws, spec.joint, 0.8, 0, 1);
-  const CriticalStep full2 = critical_time_step_from_contacts(blocks, c1, laws, spec.joint, 0.8, 0, 2);
+  const CriticalStep full1 = critical_time_step_from_contacts(blocks, c1, laws, spec.joint.damping, 0.8, 0, 1);
+  const CriticalStep full2 = critical_time_step_from_contacts(blocks, c1, laws, spec.joint.damping, 0.8, 0, 2);
   EXPECT_EQ(full1.chosen, full2.chosen);
   EXPECT_EQ(full1.omega_max, full2.omega_max);
   EXPECT_EQ(full1.governing_block, full2.governing_block);
   for (const double f : {0.5, 1.0 + 1e-12, 2.0}) {
-    const CriticalStep a = critical_time_step_from_contacts(blocks, c1, laws, spec.joint, 0.8, f * full1.chosen, 1);
-    const CriticalStep b = critical_time_step_from_contacts(blocks, c1, laws, spec.joint, 0.8, f * full1.chosen, 2);
+    const CriticalStep a = critical_time_step_from_contacts(blocks, c1, laws, spec.joint.damping, 0.8, f * full1.chosen, 1);
+    const CriticalStep b = critical_time_step_from_contacts(blocks, c1, laws, spec.joint.damping, 0.8, f * full1.chosen, 2);
     EXPECT_EQ(a.chosen, b.chosen) << f;
     EXPECT_EQ(a.omega_max, b.omega_max) << f;
     EXPECT_EQ(a.governing_block, b.governing_block) << f;
@@ -112,7 +112,7 @@ TEST(DetectionCheck, TheBoundNeverChangesTheAnswer) {
   const double margin = 0.005;
   ContactDetector det(start, margin);
   ContactSet contacts;
-  det.detect(start, contacts, false, JointLaws(make_joint_law(spec.joint)));
+  det.detect(start, contacts, false, make_joint_laws(start, spec.joint, {}));
   std::mt19937_64 rng(11);
   int yes = 0, no = 0, tight_yes = 0;
   for (int trial = 0; trial < 400; ++trial) {
@@ -152,7 +152,7 @@ TEST(DetectionCheck, TheThreadsBoundNeverSettlesAStepTheTestWouldDetectAt) {
   const double margin = 0.005;
   ContactDetector det(start, margin);
   ContactSet contacts;
-  det.detect(start, contacts, false, JointLaws(make_joint_law(spec.joint)));
+  det.detect(start, contacts, false, make_joint_laws(start, spec.joint, {}));
   std::vector<int> kinematic;
   for (int i = 5; i < start.count; i += 61) {
     if (start.props.motion[i] != BlockMotion::free) continue;
@@ -221,7 +221,7 @@ TEST(DetectionCheck, TheThreadsBoundKeepsEveryTerm) {
   const double margin = 0.005, threshold = 0.5 * margin;
   ContactDetector det(start, margin);
   ContactSet contacts;
-  det.detect(start, contacts, false, JointLaws(make_joint_law(spec.joint)));
+  det.detect(start, contacts, false, make_joint_laws(start, spec.joint, {}));
   auto settled = [&](const Blocks& b, const Vec3& ref) {
     TravelBound t;
     det.add_travels(b, 0, b.count, ref, 0.0, t);
@@ -247,7 +247,7 @@ TEST(DetectionCheck, TheThreadsBoundKeepsEveryTerm) {
   const Blocks pair = build_blocks(one.blocks);
   ContactDetector det2(pair, margin);
   ContactSet c2;
-  det2.detect(pair, c2, false, JointLaws(make_joint_law(one.joint)));
+  det2.detect(pair, c2, false, make_joint_laws(pair, one.joint, {}));
   for (const double a : {1.5 * threshold, 0.3 * threshold}) {
     Blocks b = pair;
     b.state.position[1].x() += a;

@@ -8,6 +8,7 @@
 #include "integrators/critical_time_step.hpp"
 #include "integrators/joint_modes.hpp"
 #include "integrators/simulation.hpp"
+#include "tests/support/simulation.hpp"
 
 #include <gtest/gtest.h>
 
@@ -144,7 +145,7 @@ Bounce bounce_scene(const polydem::Vec3& velocity = polydem::Vec3(0, 0, -kBounce
   b.omega = std::sqrt(kBounceKn * 1.0 / b.blocks.props.mass[1]);
   b.joint.damping = 2.0 * kBounceXi / b.omega;
   // The highest frequency of the stone on the joint it has at the start.
-  Simulation probe(b.blocks, SimulationSpec{}, b.joint, GroundMotion{}, 0.01, 1e-6, false);
+  Simulation probe = one_law_simulation(b.blocks, SimulationSpec{}, b.joint, GroundMotion{}, 0.01, 1e-6, false);
   b.omega_max = joint_modes(probe.blocks(), probe.contacts(), probe.joint_laws()).omega_max;
   b.xi_max = 0.5 * b.joint.damping * b.omega_max;
   return b;
@@ -170,7 +171,7 @@ BounceRun run_bounce(const Bounce& b, polydem::DampingScheme scheme, double dt, 
   using namespace polydem;
   SimulationSpec sim;
   sim.damping_scheme = scheme;
-  Simulation s(b.blocks, sim, b.joint, GroundMotion{}, 0.01, dt, false);
+  Simulation s = one_law_simulation(b.blocks, sim, b.joint, GroundMotion{}, 0.01, dt, false);
   BounceRun r;
   r.split_fraction = s.split_fraction();
   const double m = s.blocks().props.mass[1];

@@ -4,6 +4,7 @@
 // Scene: a unit cube falling from 5 mm above a fixed base, within the 20 mm
 // margin, so that the steps detect contacts and build patches.
 #include "integrators/simulation.hpp"
+#include "tests/support/simulation.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,7 +23,7 @@ BlockSpec box_spec(const std::string& name, Vec3 size, Vec3 centre, BlockMotion 
 }
 
 Simulation dropped_cube() {
-  return Simulation(build_blocks({box_spec("base", Vec3(3, 3, 1), Vec3(0, 0, -0.5), BlockMotion::fixed),
+  return one_law_simulation(build_blocks({box_spec("base", Vec3(3, 3, 1), Vec3(0, 0, -0.5), BlockMotion::fixed),
                                   box_spec("cube", Vec3(1, 1, 1), Vec3(0, 0, 0.505), BlockMotion::free)}),
                     SimulationSpec{}, JointSpec{}, GroundMotion{}, 0.02, 1e-5);
 }
