@@ -13,6 +13,7 @@
 
 #include "contact/gather_lanes.hpp"
 #include "contact/subcontacts.hpp"
+#include "core/code_path.hpp"
 
 #include <vector>
 
@@ -22,14 +23,14 @@ namespace polydem {
 // blocks from contacts.sub. `count`: scratch reused across detections.
 void build_gather_lists(int blocks, ContactSet& contacts, std::vector<int>& count);
 
-// Sum over block i's gather list: the contact force on the block (N) and
-// its torque about `centroid` (N·m), from the subcontacts' force slots and
-// points.
-void gather_block_force(const ContactSet& contacts, int i, const Vec3& centroid, Vec3& force, Vec3& torque);
-
-// The arrays gather_lanes::gather_block reads and writes: `contacts`' lists
-// and slots, the blocks' centroids, and their contact force and moment.
+// The arrays the gather's kernels read and write: `contacts`' lists and
+// slots, the blocks' centroids, and their contact force and moment (the sum
+// over block i's gather list of the subcontacts' force slots, N, and of
+// their moments about the centroid, N·m).
 gather_lanes::GatherArrays gather_lane_arrays(const ContactSet& contacts, const std::vector<Vec3>& centroid,
                                               std::vector<Vec3>& force, std::vector<Vec3>& torque);
+
+// The gather's kernels of `path` on this machine (core/code_path.hpp).
+gather_lanes::GatherKernels gather_kernels(CodePath path);
 
 }  // namespace polydem

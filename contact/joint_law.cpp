@@ -49,111 +49,6 @@ inline Mat3 rotation_matrix(const Vec3& t) {
   return r;
 }
 
-// The joint's rotation over the last step (see the header): the reference
-// block's, with the twist about the normal n the mean of both blocks'.
-inline Mat3 joint_spin(const Vec3& w_ref, const Vec3& w_inc, const Vec3& n, double dt) {
-  return rotation_matrix(dt * (w_ref + (0.5 * (w_inc - w_ref).dot(n)) * n));
-}
-
-// A joint that opens can carry no shear: Coulomb's cap is zero. Whatever
-// elastic shear energy it still held is released by slip, so the ledger
-// books it as slip dissipation. `pending`: the last step's dashpot power
-// still to book (its second half), which an opening joint owes all the same.
-inline void open_joint(const JointLaw& law, Subcontacts& sub, std::size_t s, double pending, double dt) {
-  const Vec3 fs = sub.shear_force[s];
-  if (law.ks > 0 && sub.area[s] > 0) sub.slip_energy[s] += 0.5 * fs.squaredNorm() / (law.ks * sub.area[s]);
-  sub.damping_energy[s] += 0.5 * dt * pending;
-  sub.damping_force.set_zero(s);
-  sub.force[s] = Vec3::Zero();
-  sub.normal_force[s] = 0;
-  sub.shear_force.set_zero(s);
-}
-
-// The law for one subcontact whose geometry and relative velocity at its
-// point are known: normal n (unit, from the reference block), overlap u_n,
-// relative velocity of the incident block at the point, the joint's
-// rotation over the last step.
-// `beta`: the dashpots' β applied here (the law's, or its explicit part
-// under the split scheme); `dashpot`, when not null, receives which of them
-// act (DashpotState).
-[[gnu::always_inline]] inline void subcontact_law(const JointLaw& law, Subcontacts& sub, std::size_t s,
-                                                  const Vec3& n, double un, const Vec3& vrel, const Mat3& spin,
-                                                  double dt, double beta, std::uint8_t* dashpot) {
-  if (dashpot) dashpot[s] = 0;
-  const double vn = vrel.dot(n);
-  const Vec3 vs = vrel - vn * n;
-  const double A = sub.area[s];
-  const bool bonded = sub.bonded[s] != 0;
-  // The last step's dashpot force with this step's velocity: the second
-  // half of that step's work (the header's centred velocity).
-  const double pending = -sub.damping_force[s].dot(vrel);
-  if (un <= 0 && !bonded) {  // open joint: no force, no shear memory
-    open_joint(law, sub, s, pending, dt);
-    return;
-  }
-  double fn_el = law.kn * A * un;
-  bool broken = false;
-  if (bonded && fn_el < -law.tensile_strength * A) {  // tensile failure
-    broken = true;
-  }
-  if (broken || (un <= 0 && law.tensile_strength == 0)) {
-    sub.bonded[s] = 0;
-    if (un <= 0) {
-      open_joint(law, sub, s, pending, dt);
-      return;
-    }
-  }
-  const bool still_bonded = sub.bonded[s] != 0;
-
-  // Shear: turn the stored force with the joint, keep it in the current
-  // plane (round-off, and the O(dt²) between the two spins' split), then
-  // increment.
-  Vec3 fs = spin * sub.shear_force[s];
-  fs -= fs.dot(n) * n;
-  const double fs_old2 = fs.squaredNorm();
-  fs -= (law.ks * A * dt) * vs;
-  const double cap = (still_bonded ? law.cohesion * A : 0.0) + std::max(fn_el, 0.0) * law.tan_phi;
-  bool slipping = false;
-  if (fs.squaredNorm() > cap * cap) {  // the square root only when slipping
-    const double fs_mag = fs.norm();
-    slipping = true;
-    // Slip dissipation. With the stored force a = |f_old| (turned), the
-    // trial t = |f| and the cap c: shear the cap has fallen below (a > c,
-    // the normal force at a lifting edge falling) is let go from m down to c,
-    // releasing (m² − c²)/(2·ks·A), where m = min(a, t) is what the step's
-    // increment leaves of it; the rest of the trial, t − m, is plastic slip
-    // (t − m)/(ks·A) under the force c. When the cap has not fallen (a ≤ c),
-    // m = c: the usual c·(t − c)/(ks·A). Both limits are exact: steady
-    // sliding books c·Δu, a joint at rest whose cap falls books the strain
-    // energy it gives up (open_joint is the cap falling to zero).
-    if (law.ks > 0 && A > 0) {
-      const double a = std::sqrt(fs_old2);
-      const double m = a > cap ? std::min(a, fs_mag) : cap;
-      sub.slip_energy[s] += (0.5 * (m - cap) * (m + cap) + cap * (fs_mag - m)) / (law.ks * A);
-    }
-    fs *= fs_mag > 0 ? cap / fs_mag : 0.0;
-    if (still_bonded) sub.bonded[s] = 0;
-  }
-  sub.shear_force.set(s, fs);
-
-  // Stiffness-proportional damping while closed; u̇_n = −v_n.
-  double fn_total = fn_el;
-  Vec3 fs_damp = Vec3::Zero();
-  if (un > 0) {
-    fn_total += beta * law.kn * A * (-vn);
-    if (!slipping) fs_damp = -(beta * law.ks * A) * vs;
-    if (dashpot) dashpot[s] = static_cast<std::uint8_t>(kNormalDashpot | (slipping ? 0 : kShearDashpot));
-  }
-  if (sub.bonded[s] == 0 && fn_total < 0) fn_total = 0;  // no tension
-  const double fn_damp = fn_total - fn_el;
-  // The dashpot's work over the step at the centred velocity: half now with
-  // the velocity the force came from, half at the next step (pending).
-  const Vec3 f_damp = fn_damp * n + fs_damp;
-  sub.damping_energy[s] += 0.5 * dt * (pending - f_damp.dot(vrel));
-  sub.damping_force.set(s, f_damp);
-  sub.normal_force[s] = fn_total;
-  sub.force[s] = fn_total * n + fs + fs_damp;
-}
 
 }  // namespace
 
@@ -204,16 +99,8 @@ inline void rotation_series(double t0, double t1, double t2, double a2, double* 
   R[5] = u2 * t1 + sn * t0;  // (2, 1)
 }
 
-// The lanes' PairFrame of the pair (r reference, c incident, `nl` the
-// reference face's normal in r's frame), in plain doubles: the same
-// operations in the same order as the portable loop's Eigen expressions
-// below (R·v is ((a + b) + c) in rows 0 and 1 and a + (b + c) in row 2, a
-// dot product (x·x′ + y·y′) + z·z′), without Eigen's SSE2 shuffles between
-// the packed and the scalar part of a Vec3, which cost a fifth of a step.
-// A joint turning beyond rotation_matrix's series takes rotation_matrix
-// itself, with the same θ.
 // The pair's common normal in the world, R_ref·nl, in Eigen's association
-// (the lanes' and the portable paths' one computation of it).
+// (R·v is ((a + b) + c) in rows 0 and 1 and a + (b + c) in row 2).
 [[gnu::always_inline]] inline void world_normal(const double* Rr, const Vec3& nl, double* n) {
   const double l0 = nl.x(), l1 = nl.y(), l2 = nl.z();
   n[0] = (Rr[0] * l0 + Rr[3] * l1) + Rr[6] * l2;
@@ -221,6 +108,12 @@ inline void rotation_series(double t0, double t1, double t2, double a2, double* 
   n[2] = Rr[2] * l0 + (Rr[5] * l1 + Rr[8] * l2);
 }
 
+// The kernels' PairFrame of the pair (r reference, c incident, `nl` the
+// reference face's normal in r's frame), in plain doubles with Eigen's
+// association (a dot product (x·x′ + y·y′) + z·z′), without Eigen's SSE2
+// shuffles between the packed and the scalar part of a Vec3. A joint
+// turning beyond rotation_matrix's series takes rotation_matrix itself,
+// with the same θ.
 [[gnu::always_inline]] inline void pair_frame(const BlockState& st, int r, int c, const Vec3& nl, double dt,
                                               lanes::PairFrame& f) {
   const double* Rr = st.rotation[r].data();
@@ -258,19 +151,23 @@ inline void rotation_series(double t0, double t1, double t2, double a2, double* 
   for (int i = 0; i < 9; ++i) f.Rc[i] = Rc[i];
 }
 
-// The pair loop, each pair under its own law. kLanes: the subcontacts in
-// AVX2 lanes (joint_law_lanes.hpp) by `kernel`, lanes::pair_law or
-// lanes::pair_law_wide, the same bits.
-template <bool kLanes>
-[[gnu::always_inline]] inline void pair_forces(const JointLaws& laws, const BlockState& st,
-                                               const std::vector<ContactPair>& pairs, Subcontacts& sub, double dt,
-                                               std::size_t pair_begin, std::size_t pair_end, const SplitPart& split,
-                                               [[maybe_unused]] lanes::PairLawKernel kernel = nullptr) {
-  [[maybe_unused]] lanes::SubcontactArrays arrays;
-  if constexpr (kLanes) {
-    arrays = lane_arrays(sub);
-    arrays.dashpot = split.dashpot;
-  }
+// The kernels of `path` on this machine (core/code_path.hpp).
+lanes::JointLawKernels joint_law_kernels(CodePath path) {
+#ifdef POLYDEM_LANES_AVX2
+  if (use_wide_lanes(path)) return {&lanes::pair_law_avx512, &lanes::pair_rest_avx512};
+  if (use_lanes(path)) return {&lanes::pair_law_avx2, &lanes::pair_rest_avx2};
+#endif
+  return {&lanes::pair_law_portable, &lanes::pair_rest_portable};
+}
+
+}  // namespace
+
+void compute_pair_forces(const JointLaws& laws, const BlockState& st, const std::vector<ContactPair>& pairs,
+                         Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
+                         CodePath path, const SplitPart& split) {
+  const lanes::PairLawKernel kernel = joint_law_kernels(path).law;
+  lanes::SubcontactArrays arrays = lane_arrays(sub);
+  arrays.dashpot = split.dashpot;
   for (std::size_t q = pair_begin; q < pair_end; ++q) {
     const ContactPair& cp = pairs[q];
     if (cp.count == 0) continue;
@@ -279,49 +176,12 @@ template <bool kLanes>
     const JointLaw& law = laws.between(r, c);
     // Shared by the pair's subcontacts: the common plane and both motions.
     const std::size_t s0 = static_cast<std::size_t>(cp.first);
-    if constexpr (kLanes) {
-      lanes::PairFrame f;
-      pair_frame(st, r, c, sub.ref_normal_local[s0], dt, f);
-      const lanes::LawConstants k{law.kn, law.ks, law.tan_phi, law.cohesion, law.tensile_strength,
-                                  law.beta * split.explicit_part, dt};
-      kernel(f, k, arrays, s0, static_cast<std::size_t>(cp.count));
-      continue;
-    }
-    const Vec3 n = st.rotation[r] * sub.ref_normal_local[s0];
-    const Vec3& xr = st.position[r];
-    const Vec3& xc = st.position[c];
-    const double plane = n.dot(xr);
-    const Mat3& Rc = st.rotation[c];
-    const Vec3 dv = st.velocity[c] - st.velocity[r];
-    const Vec3& wc = st.angular_velocity[c];
-    const Vec3& wr = st.angular_velocity[r];
-    const Vec3 xcr = xc - xr;
-    const Mat3 spin = joint_spin(wr, wc, n, dt);
-    for (std::size_t s = s0; s < s0 + static_cast<std::size_t>(cp.count); ++s) {
-      const Vec3 arm_c = Rc * sub.inc_point_local[s];  // p − x_c
-      const Vec3 p = xc + arm_c;
-      const double un = sub.ref_offset_local[s] + plane - n.dot(p);
-      const Vec3 vrel = dv + wc.cross(arm_c) - wr.cross(arm_c + xcr);
-      sub.point[s] = p;
-      sub.overlap[s] = un;
-      subcontact_law(law, sub, s, n, un, vrel, spin, dt, law.beta * split.explicit_part, split.dashpot);
-    }
+    lanes::PairFrame f;
+    pair_frame(st, r, c, sub.ref_normal_local[s0], dt, f);
+    const lanes::LawConstants k{law.kn, law.ks, law.tan_phi, law.cohesion, law.tensile_strength,
+                                law.beta * split.explicit_part, dt};
+    kernel(f, k, arrays, s0, static_cast<std::size_t>(cp.count));
   }
-}
-
-}  // namespace
-
-void compute_pair_forces(const JointLaws& laws, const BlockState& st, const std::vector<ContactPair>& pairs,
-                         Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
-                         CodePath path, const SplitPart& split) {
-#ifdef POLYDEM_LANES_AVX2
-  if (use_lanes(path)) {
-    pair_forces<true>(laws, st, pairs, sub, dt, pair_begin, pair_end, split,
-                      use_wide_lanes(path) ? &lanes::pair_law_wide : &lanes::pair_law);
-    return;
-  }
-#endif
-  pair_forces<false>(laws, st, pairs, sub, dt, pair_begin, pair_end, split);
 }
 
 namespace {
@@ -342,68 +202,6 @@ void rest_frame(const BlockState& st, const std::vector<Vec3>& velocity_next, co
   f.cs = cs;
 }
 
-// The rest pass for one pair's subcontacts, one at a time: the lanes'
-// operations in their order (arm = Rc·p_local as mat_vec, the relative
-// velocity and the dot product as the law's; subcontact j of the pair summed
-// into "lane" j mod 4, the lanes then (l0 + l1) + (l2 + l3)).
-void pair_rest_portable(const lanes::RestFrame& f, const lanes::RestArrays& a, std::size_t s0, std::size_t count,
-                        lanes::PairRest& out) {
-  const double* R = f.Rc;
-  const double n0 = f.n[0], n1 = f.n[1], n2 = f.n[2];
-  double sum[6][4] = {};  // force x y z, moment x y z; per lane
-  for (std::size_t j = 0; j < count; ++j) {
-    const std::size_t s = s0 + j;
-    const std::uint8_t state = a.dashpot[s];
-    if (state == 0) {
-      a.rx[s] = a.ry[s] = a.rz[s] = 0.0;
-      continue;
-    }
-    const double px = a.ipx[s], py = a.ipy[s], pz = a.ipz[s];
-    const double ax = (R[0] * px + R[3] * py) + R[6] * pz;
-    const double ay = (R[1] * px + R[4] * py) + R[7] * pz;
-    const double az = R[2] * px + (R[5] * py + R[8] * pz);
-    const double qx = ax + f.xcr[0], qy = ay + f.xcr[1], qz = az + f.xcr[2];
-    const double* wc = f.wc;
-    const double* wr = f.wr;
-    const double vx = (f.dv[0] + (wc[1] * az - wc[2] * ay)) - (wr[1] * qz - wr[2] * qy);
-    const double vy = (f.dv[1] + (wc[2] * ax - wc[0] * az)) - (wr[2] * qx - wr[0] * qz);
-    const double vz = (f.dv[2] + (wc[0] * ay - wc[1] * ax)) - (wr[0] * qy - wr[1] * qx);
-    const double vn = (vx * n0 + vy * n1) + vz * n2;
-    const double A = a.area[s];
-    double fn = (f.cn * A) * (-vn);
-    if (a.bonded[s] == 0) fn = std::max(fn, -a.normal_force[s]);  // never pulls an unbonded joint together
-    double fx = fn * n0, fy = fn * n1, fz = fn * n2;
-    if (state & kShearDashpot) {
-      const double k = f.cs * A;
-      fx = fx - k * (vx - vn * n0);
-      fy = fy - k * (vy - vn * n1);
-      fz = fz - k * (vz - vn * n2);
-    }
-    a.normal_force[s] = a.normal_force[s] + fn;
-    a.rx[s] = fx;
-    a.ry[s] = fy;
-    a.rz[s] = fz;
-    const std::size_t l = j % 4;
-    sum[0][l] = sum[0][l] + fx;
-    sum[1][l] = sum[1][l] + fy;
-    sum[2][l] = sum[2][l] + fz;
-    sum[3][l] = sum[3][l] + (ay * fz - az * fy);
-    sum[4][l] = sum[4][l] + (az * fx - ax * fz);
-    sum[5][l] = sum[5][l] + (ax * fy - ay * fx);
-  }
-  double total[6];
-  for (int c = 0; c < 6; ++c) total[c] = (sum[c][0] + sum[c][1]) + (sum[c][2] + sum[c][3]);
-  const double* d = f.xcr;
-  for (int c = 0; c < 3; ++c) {
-    out.force[c] = total[c];
-    out.moment[c] = total[3 + c];
-  }
-  const double* F = out.force;
-  out.moment_ref[0] = -(out.moment[0] + (d[1] * F[2] - d[2] * F[1]));
-  out.moment_ref[1] = -(out.moment[1] + (d[2] * F[0] - d[0] * F[2]));
-  out.moment_ref[2] = -(out.moment[2] + (d[0] * F[1] - d[1] * F[0]));
-}
-
 }  // namespace
 
 void apply_dashpot_rest(const JointLaws& laws, double theta, const BlockState& st,
@@ -422,12 +220,7 @@ void apply_dashpot_rest(const JointLaws& laws, double theta, const BlockState& s
   a.bonded = sub.bonded.data();
   a.dashpot = dashpot;
   a.normal_force = sub.normal_force.data();
-  lanes::PairRestKernel kernel = &pair_rest_portable;
-#ifdef POLYDEM_LANES_AVX2
-  if (use_lanes(path)) kernel = use_wide_lanes(path) ? &lanes::pair_rest_wide : &lanes::pair_rest;
-#else
-  (void)path;
-#endif
+  const lanes::PairRestKernel kernel = joint_law_kernels(path).rest;
   for (std::size_t q = pair_begin; q < pair_end; ++q) {
     const ContactPair& cp = pairs[q];
     if (cp.count == 0) {

@@ -1,4 +1,4 @@
-// The Coulomb joint law, one subcontact at a time (compression positive).
+// The Coulomb joint law, per subcontact (compression positive).
 //
 // For a subcontact of tributary area A with normal overlap u_n and relative
 // shear velocity v_s of the incident block over the reference block:
@@ -107,7 +107,9 @@ JointLaw stiffest_law(const JointLaws& laws);
 // applies the rest after the velocity update (apply_dashpot_rest). The
 // default is the explicit scheme: the whole dashpot, nothing written, the
 // same bits as before the scheme existed.
-enum DashpotState : std::uint8_t { kNormalDashpot = 1, kShearDashpot = 2 };
+using lanes::DashpotState;
+using lanes::kNormalDashpot;
+using lanes::kShearDashpot;
 struct SplitPart {
   double explicit_part = 1.0;
   std::uint8_t* dashpot = nullptr;  // one per subcontact
@@ -116,8 +118,8 @@ struct SplitPart {
 // The forces of the subcontacts of pairs [pair_begin, pair_end) into their
 // slots (sub.force, point, overlap, normal_force, ...), each pair under its
 // own law (JointLaws::between). The pair's common plane and the two blocks'
-// motion are loaded once. `path` (core/code_path.hpp): the AVX2 lanes
-// (joint_law_lanes.hpp) or one subcontact at a time; the same bits.
+// motion are loaded once. `path` (core/code_path.hpp): the kernel's lane
+// type (joint_law_lanes.hpp); the same bits on every one.
 void compute_pair_forces(const JointLaws& laws, const BlockState& state, const std::vector<ContactPair>& pairs,
                          Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
                          CodePath path = CodePath::automatic, const SplitPart& split = {});
@@ -136,7 +138,7 @@ void compute_pair_forces(const JointLaws& laws, const BlockState& state, const s
 // quarter of the entries of a gather by subcontact). Its work is booked
 // block by block (Simulation: the rest's force and moment at the blocks'
 // centred velocities, the same sum as at the subcontacts'). `path` as the
-// law's: the AVX2 lanes or one subcontact at a time, the same bits.
+// law's.
 void apply_dashpot_rest(const JointLaws& laws, double theta, const BlockState& state,
                         const std::vector<Vec3>& velocity_next, const std::vector<Vec3>& omega_next,
                         const std::vector<ContactPair>& pairs, const std::uint8_t* dashpot, Subcontacts& sub,

@@ -1,35 +1,26 @@
-// The joint law four subcontacts at a time: the AVX2 code path.
+// The joint law four subcontacts at a time: the kernels' interface.
 //
-// A pair's subcontacts share the common plane and both blocks' motions; the
-// portable code (joint_law.cpp) works those out once per pair, as it always
-// has, into a PairFrame, and this kernel runs the pair's subcontacts in
-// lanes of four (a face on a face makes four: one load per component).
-//
-// The same bits as the portable path. Each lane performs exactly the
-// portable path's IEEE operations in the same order — multiplications and
-// additions rounded one at a time (no fused multiply-add: the project builds
-// with -ffp-contract=off), the same association as Eigen's on SSE2 (a dot
-// product is (x·x' + y·y') + z·z'; a 3×3 matrix times a vector is
-// ((a + b) + c) in rows 0 and 1, a + (b + c) in row 2), divisions and
-// square roots correctly rounded in both — and each branch of the law is a
-// lane mask choosing between values both computed the portable way. So a
-// run gives the same bits whichever path the machine takes, on one thread
-// or two (tests/contact/joint_law_lanes_test.cpp compares them on every
-// branch of the law, tests/verification/determinism_test.cpp on a run).
-//
-// The kernel's source (joint_law_lanes_kernel.inc) is compiled twice: with
-// -mavx2 as pair_law, with -mavx512vl as pair_law_wide (the same 256-bit
-// lanes in 32 registers). It includes no Eigen or other inline library
-// code, so no function instantiated there with AVX2 or AVX-512 instructions
-// can be picked by the linker for the rest of the program. Whether the CPU
-// has AVX2, and AVX-512VL, is asked once, at run time (core/code_path.hpp);
-// without AVX2, or on another architecture, the portable loop runs.
+// A pair's subcontacts share the common plane and both blocks' motions;
+// joint_law.cpp works those out once per pair into a PairFrame, and a kernel
+// runs the pair's subcontacts in lanes of four (a face on a face makes four:
+// one load per component). The kernels are written once
+// (joint_law_kernel.inc) over a lane type (core/code_path.hpp) and compiled
+// three times: in plain doubles (every machine), in AVX2 lanes and for
+// AVX-512VL (the same 256-bit lanes in 32 registers), chosen at run time
+// (core/code_path.hpp). Each lane type performs the same IEEE operations in
+// the same order, so a run gives the same bits whichever the machine takes,
+// on one thread or two (tests/contact/joint_law_lanes_test.cpp,
+// tests/verification/determinism_test.cpp).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 
 namespace polydem::lanes {
+
+// Which dashpots of a subcontact act (the split damping scheme's state per
+// subcontact, integrators/split_damping.hpp).
+enum DashpotState : std::uint8_t { kNormalDashpot = 1, kShearDashpot = 2 };
 
 // What a pair's subcontacts share, in the world frame; matrices column-major
 // (Eigen's storage, m(i, j) = m[i + 3j]).
@@ -68,11 +59,16 @@ struct SubcontactArrays {
   std::uint8_t* dashpot = nullptr;
 };
 
-// The law for subcontacts s0 .. s0 + count − 1 of one pair. Only call when
-// lanes_available() (core/code_path.hpp). Bonded flags are read as
-// nonzero and written as 0 or 1 (the only values the rest of the code writes).
-void pair_law(const PairFrame& f, const LawConstants& law, const SubcontactArrays& a, std::size_t s0,
-              std::size_t count);
+// The law for subcontacts s0 .. s0 + count − 1 of one pair. Bonded flags
+// are read as nonzero and written as 0 or 1 (the only values the rest of the
+// code writes). The AVX2 and AVX-512VL kernels only where the CPU has them
+// (lanes_available(), wide_lanes_available()).
+void pair_law_portable(const PairFrame& f, const LawConstants& law, const SubcontactArrays& a, std::size_t s0,
+                       std::size_t count);
+void pair_law_avx2(const PairFrame& f, const LawConstants& law, const SubcontactArrays& a, std::size_t s0,
+                   std::size_t count);
+void pair_law_avx512(const PairFrame& f, const LawConstants& law, const SubcontactArrays& a, std::size_t s0,
+                     std::size_t count);
 
 using PairLawKernel = void (*)(const PairFrame&, const LawConstants&, const SubcontactArrays&, std::size_t,
                                std::size_t);
@@ -105,15 +101,15 @@ struct RestArrays {
 struct PairRest {
   double force[3], moment[3], moment_ref[3];
 };
-static_assert(sizeof(PairRest) == 9 * sizeof(double), "the kernel stores force and moment x as four doubles");
-void pair_rest(const RestFrame& f, const RestArrays& a, std::size_t s0, std::size_t count, PairRest& out);
-void pair_rest_wide(const RestFrame& f, const RestArrays& a, std::size_t s0, std::size_t count, PairRest& out);
+void pair_rest_portable(const RestFrame& f, const RestArrays& a, std::size_t s0, std::size_t count, PairRest& out);
+void pair_rest_avx2(const RestFrame& f, const RestArrays& a, std::size_t s0, std::size_t count, PairRest& out);
+void pair_rest_avx512(const RestFrame& f, const RestArrays& a, std::size_t s0, std::size_t count, PairRest& out);
 using PairRestKernel = void (*)(const RestFrame&, const RestArrays&, std::size_t, std::size_t, PairRest&);
 
-// The same kernel compiled for AVX-512VL (its 32 vector registers; the
-// same 256-bit lanes and the same bits). Only call when
-// wide_lanes_available() (core/code_path.hpp).
-void pair_law_wide(const PairFrame& f, const LawConstants& law, const SubcontactArrays& a, std::size_t s0,
-                   std::size_t count);
+// The kernels of `path` (core/code_path.hpp) on this machine.
+struct JointLawKernels {
+  PairLawKernel law;
+  PairRestKernel rest;
+};
 
 }  // namespace polydem::lanes

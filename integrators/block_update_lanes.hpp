@@ -1,22 +1,16 @@
-// The blocks' update four blocks at a time: the AVX2 code path of
-// Simulation::advance_block (simulation.cpp) for the dynamic stage's free
-// blocks without point loads.
+// The blocks' update four blocks at a time: Simulation::advance_block's
+// update (simulation.cpp) for the free blocks of the dynamic stage without
+// point loads, written once (block_update_kernel.inc) over a lane type
+// (core/code_path.hpp), compiled in plain doubles and in AVX2 lanes.
 //
-// The same bits as the portable update, as for the joint law's lanes
-// (contact/joint_law_lanes.hpp): each lane performs the portable update's
-// IEEE operations in its order, including Eigen's on SSE2 (Rᵀ·v is
-// ((a + b) + c) in every row, R·v ((a + b) + c) in rows 0 and 1 and
-// a + (b + c) in row 2, the quaternion product is Eigen's SSE2 kernel's
-// sums of pairs, a quaternion's squared norm is (x² + z²) + (y² + w²), the
-// rotation matrix is Eigen's formula), with no fused multiply-add. The
-// block state stays an array of Vec3, Quat and Mat3 per block: four blocks'
-// components are gathered into lanes and scattered back (the update's
-// arithmetic is several times its loads and stores).
-//
-// A turn beyond the exponential's series (|θ|² ≥ 1e-6, a block spinning at
-// over 100 rad/s at the spire's step) takes the portable update's closed
-// form: advance_four() then writes nothing and returns false, and the
-// caller updates those four blocks the portable way.
+// Each lane performs advance_block's IEEE operations in its order, including
+// Eigen's on SSE2 (Rᵀ·v is ((a + b) + c) in every row, R·v ((a + b) + c) in
+// rows 0 and 1 and a + (b + c) in row 2, the quaternion product is Eigen's
+// SSE2 kernel's sums of pairs, a quaternion's squared norm is
+// (x² + z²) + (y² + w²), the rotation matrix is Eigen's formula), with no
+// fused multiply-add. The block state stays an array of Vec3, Quat and Mat3
+// per block: four blocks' components are gathered into lanes and scattered
+// back (the update's arithmetic is several times its loads and stores).
 #pragma once
 
 namespace polydem::block_lanes {
@@ -50,9 +44,12 @@ struct StepConstants {
   double dv_dt;  // the velocity update's span, ½(dt_prev + dt)
 };
 
-// Advances the four free blocks idx[0..3] (no point loads, gravity not
-// rising, no local damping). False, and nothing written, if one of them
-// turns too far for the series.
-bool advance_four(const BlockArrays& a, const StepConstants& k, const int idx[4]);
+// Advances the free blocks idx[0..3] (no point loads, gravity not rising,
+// no local damping); fewer than four repeat the last index (its lanes then
+// write the same values twice). The AVX2 kernel only where lanes_available()
+// (core/code_path.hpp).
+void advance_four_portable(const BlockArrays& a, const StepConstants& k, const int idx[4]);
+void advance_four_avx2(const BlockArrays& a, const StepConstants& k, const int idx[4]);
+using AdvanceFour = void (*)(const BlockArrays&, const StepConstants&, const int[4]);
 
 }  // namespace polydem::block_lanes

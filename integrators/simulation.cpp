@@ -290,32 +290,19 @@ void Simulation::compute_joint_forces_parallel() {
 
 void Simulation::gather_block(int i) {
   auto& st = blocks_.state;
-#ifdef POLYDEM_LANES_AVX2
-  if (use_lanes(code_path_)) {  // the same bits (contact/gather_lanes.hpp)
-    gather_lanes::gather_block(gather_lane_arrays(contacts_, st.position, st.contact_force, st.contact_torque), i);
-    return;
-  }
-#endif
-  gather_block_force(contacts_, i, st.position[i], st.contact_force[i], st.contact_torque[i]);
+  gather_kernels(code_path_).block(gather_lane_arrays(contacts_, st.position, st.contact_force, st.contact_torque), i);
 }
 
-// Blocks i and i + 1 (when below end): on the lanes path two sums in
-// flight (gather_lanes::gather_two, the same bits).
+// Blocks i and i + 1 (when below end): two sums in flight
+// (gather_lanes::gather_two, the same bits).
 void Simulation::gather_two_blocks(int i, int end) {
-  const bool two = i + 1 < end;
-#ifdef POLYDEM_LANES_AVX2
-  if (use_lanes(code_path_)) {
-    auto& st = blocks_.state;
-    const gather_lanes::GatherArrays a = gather_lane_arrays(contacts_, st.position, st.contact_force, st.contact_torque);
-    if (two)
-      gather_lanes::gather_two(a, i, i + 1);
-    else
-      gather_lanes::gather_block(a, i);
-    return;
-  }
-#endif
-  gather_block(i);
-  if (two) gather_block(i + 1);
+  auto& st = blocks_.state;
+  const gather_lanes::GatherKernels k = gather_kernels(code_path_);
+  const gather_lanes::GatherArrays a = gather_lane_arrays(contacts_, st.position, st.contact_force, st.contact_torque);
+  if (i + 1 < end)
+    k.two(a, i, i + 1);
+  else
+    k.block(a, i);
 }
 
 // The split scheme's per-subcontact and per-pair scratch, and each block's
@@ -545,46 +532,49 @@ void Simulation::gather_and_advance(const StepLoads& loads, int begin, int end, 
     }
     return;
   }
-#ifdef POLYDEM_LANES_AVX2
-  // The free blocks four at a time in AVX2 lanes (block_update_lanes.hpp,
-  // the same bits), each block once its own force is gathered; blocks with
-  // point loads, and every block while gravity rises (a load term more),
-  // the portable way.
-  if (!loads.rising && use_lanes(code_path_)) {
-    const block_lanes::BlockArrays arrays = block_lane_arrays();
-    block_lanes::StepConstants k;
-    for (int c = 0; c < 3; ++c) {
-      k.gravity[c] = loads.gravity[c];
-      k.ground_acceleration[c] = loads.a_ground[c];
-    }
-    k.dt = dt_;
-    k.dv_dt = 0.5 * (dt_prev_ + dt_);
-    const bool any_loaded = !loaded_.empty() && !static_stage_;
-    int four[4];
-    int waiting = 0;
+  // The free blocks four at a time (block_update_lanes.hpp), each block
+  // once its own force is gathered; blocks with point loads, and every block
+  // while gravity rises (a load term more), by advance_block.
+  if (loads.rising) {
     for (int i0 = begin; i0 < end; i0 += 2) {
       gather(i0);
-      for (int i = i0; i < std::min(i0 + 2, end); ++i) {
-        if (motion[i] != BlockMotion::free) continue;
-        if (any_loaded && loaded_[i]) {
-          advance_block<false>(i, loads);
-          continue;
-        }
-        four[waiting++] = i;
-        if (waiting < 4) continue;
-        waiting = 0;
-        if (!block_lanes::advance_four(arrays, k, four))  // a turn beyond the series
-          for (int b : four) advance_block<false>(b, loads);
-      }
+      for (int i = i0; i < std::min(i0 + 2, end); ++i)
+        if (motion[i] == BlockMotion::free) advance_block<false>(i, loads);
     }
-    for (int w = 0; w < waiting; ++w) advance_block<false>(four[w], loads);
     return;
   }
+  block_lanes::AdvanceFour advance_four = &block_lanes::advance_four_portable;
+#ifdef POLYDEM_LANES_AVX2
+  if (use_lanes(code_path_)) advance_four = &block_lanes::advance_four_avx2;
 #endif
+  const block_lanes::BlockArrays arrays = block_lane_arrays();
+  block_lanes::StepConstants k;
+  for (int c = 0; c < 3; ++c) {
+    k.gravity[c] = loads.gravity[c];
+    k.ground_acceleration[c] = loads.a_ground[c];
+  }
+  k.dt = dt_;
+  k.dv_dt = 0.5 * (dt_prev_ + dt_);
+  const bool any_loaded = !loaded_.empty() && !static_stage_;
+  int four[4];
+  int waiting = 0;
   for (int i0 = begin; i0 < end; i0 += 2) {
     gather(i0);
-    for (int i = i0; i < std::min(i0 + 2, end); ++i)
-      if (motion[i] == BlockMotion::free) advance_block<false>(i, loads);
+    for (int i = i0; i < std::min(i0 + 2, end); ++i) {
+      if (motion[i] != BlockMotion::free) continue;
+      if (any_loaded && loaded_[i]) {
+        advance_block<false>(i, loads);
+        continue;
+      }
+      four[waiting++] = i;
+      if (waiting < 4) continue;
+      waiting = 0;
+      advance_four(arrays, k, four);
+    }
+  }
+  if (waiting > 0) {
+    for (int w = waiting; w < 4; ++w) four[w] = four[waiting - 1];
+    advance_four(arrays, k, four);
   }
 }
 

@@ -4,7 +4,7 @@ A vector constant at namespace scope in one of them (`const __m256i k =
 _mm256_setr_epi64x(...)`) is built by a static initialiser in AVX
 instructions, listed in the object's .init_array and run at start-up on
 every CPU: a machine without AVX would stop with SIGILL before the portable
-path could be chosen (core/avx2_lanes.hpp). Usage:
+path could be chosen (core/lanes_avx2.hpp). Usage:
     check_lanes_objects.py BUILD_DIR
 Fails if no kernel object is found (the check would mean nothing), or if
 any has an .init_array, .ctors or .preinit_array section.

@@ -70,8 +70,8 @@ TEST(Determinism, OneAndTwoThreadsGiveTheSameBits) {
   EXPECT_GT(moved, 1e-3);
 }
 
-// The joint law's AVX2 lanes and its portable loop (contact/joint_law_lanes.hpp)
-// give the same bits through a whole run: the wall under the pulse, on two
+// The joint law's kernel in AVX2 lanes and in plain doubles
+// (contact/joint_law_lanes.hpp) give the same bits through a whole run: the wall under the pulse, on two
 // threads, every step's law on one path or the other.
 TEST(Determinism, TheJointLawsTwoCodePathsGiveTheSameBits) {
   if (!lanes_available()) GTEST_SKIP() << "no AVX2 here: only the portable path runs";
@@ -98,9 +98,9 @@ TEST(Determinism, TheJointLawsTwoCodePathsGiveTheSameBits) {
 
 // The blocks' update in AVX2 lanes against the portable one, through every
 // branch of the step's block loop: blocks four at a time; a remainder; a
-// block under a point load (portable); gravity rising (portable) and risen;
-// stones thrown spinning at 300 rad/s, whose turn per step is beyond the
-// exponential's series (their four go the portable way); fixed blocks. The
+// block under a point load (advance_block); gravity rising (advance_block)
+// and risen; stones thrown spinning at 300 rad/s, whose turn per step is
+// beyond the exponential's series (the kernel's closed form); fixed blocks. The
 // stones are turned about the vertical and the thrown ones about every axis,
 // so that no rotation matrix is the identity (whose zeros would hide a
 // wrong association); then the spire under a pulse.
@@ -113,8 +113,8 @@ TEST(Determinism, TheBlockUpdatesTwoCodePathsGiveTheSameBits) {
        "[[block]]\nname = \"base\"\nshape = \"box\"\nsize = [6, 2, 0.5]\ncenter = [0, 0, -0.25]\nmotion = \"fixed\"\n";
   // Base 0, stones 1-6, thrown 7-9, stones 10-14: on one thread the
   // groups (5-8) and (9-12) hold thrown stones, on two threads (8-11) does
-  // (libgomp's static halves 0-7 and 8-14), so the fall-back after
-  // advance_four() declines runs on both, besides the remainders.
+  // (libgomp's static halves 0-7 and 8-14), so the closed form runs in
+  // different groups on each, besides the remainders.
   auto stone = [&d](int k) {
     d << "[[block]]\nname = \"stone" << k << "\"\nshape = \"box\"\nsize = [0.3, 0.2, 0.2]\ncenter = ["
       << -2.5 + 0.5 * k << ", 0, 0.1]\nrotation = [0, 0, " << 7 * k + 3 << "]\n";
