@@ -1,0 +1,110 @@
+#include "integrators/guard.hpp"
+
+#include <algorithm>
+#include <sstream>
+#include <string>
+
+namespace polydem {
+
+void Guard::restart(const BlockState& state) {
+  energy_reference = mechanical0 = 0;
+  energy_started = false;
+  last_good = state;
+  last_good_time = 0;
+  last_good_step = 0;
+}
+
+void save_block_state(ByteWriter& w, const BlockState& s) {
+  w.put(s.position);
+  w.put(s.orientation);
+  w.put(s.rotation);
+  w.put(s.velocity);
+  w.put(s.angular_momentum);
+  w.put(s.angular_velocity);
+  w.put(s.contact_force);
+  w.put(s.contact_torque);
+}
+
+void load_block_state(ByteReader& r, BlockState& s, std::size_t n) {
+  r.get_sized(s.position, n, "block state position");
+  r.get_sized(s.orientation, n, "block state orientation");
+  r.get_sized(s.rotation, n, "block state rotation");
+  r.get_sized(s.velocity, n, "block state velocity");
+  r.get_sized(s.angular_momentum, n, "block state angular_momentum");
+  r.get_sized(s.angular_velocity, n, "block state angular_velocity");
+  r.get_sized(s.contact_force, n, "block state contact_force");
+  r.get_sized(s.contact_torque, n, "block state contact_torque");
+}
+
+void Guard::save(ByteWriter& w) const {
+  w.put(energy_reference);
+  w.put(mechanical0);
+  w.put(energy_started);
+  save_block_state(w, last_good);
+  w.put(last_good_time);
+  w.put(last_good_step);
+}
+
+void Guard::load(ByteReader& r, std::size_t n) {
+  r.get(energy_reference);
+  r.get(mechanical0);
+  r.get(energy_started);
+  load_block_state(r, last_good, n);
+  r.get(last_good_time);
+  r.get(last_good_step);
+}
+
+void check_health(Guard& g, const Blocks& blocks, const ContactSet& contacts, double margin, const EnergyLedger& e,
+                  const Vec3& gravity, long step, double time, double dt) {
+  const auto& st = blocks.state;
+  auto stop = [&](const std::string& cause) {
+    std::ostringstream msg;
+    msg << "numerical instability at step " << step << " (t = " << time << " s, time step " << dt
+        << " s): " << cause << "; the last good state is from step " << g.last_good_step << " (t = "
+        << g.last_good_time << " s)";
+    throw InstabilityError(msg.str());
+  };
+  for (int i : blocks.free_blocks) {
+    if (st.position[i].allFinite() && st.velocity[i].allFinite() && st.angular_momentum[i].allFinite()) continue;
+    stop("block '" + blocks.props.name[i] + "' has a non-finite position or velocity");
+  }
+  // Penetration: a joint overlapping by a fair fraction of the smaller
+  // block's size is no longer a contact but blocks passing through each
+  // other. A hard impact sinks a joint by about v·sqrt(m/(kn·A)), a few mm for
+  // a stone falling metres onto a corner: more than the margin, which is
+  // therefore not the limit (only its floor).
+  const auto& sub = contacts.sub;
+  const auto& size = blocks.props.size;
+  for (std::size_t s = 0; s < sub.size(); ++s) {
+    const double smaller = std::min(size[sub.ref_block[s]], size[sub.inc_block[s]]);
+    const double limit = std::max(margin, g.penetration_limit * smaller);
+    const double overlap = sub.geometric_overlap(s);
+    if (overlap <= limit) continue;
+    std::ostringstream what;
+    what << "blocks '" << blocks.props.name[sub.ref_block[s]] << "' and '" << blocks.props.name[sub.inc_block[s]]
+         << "' overlap by " << overlap << " m, beyond the penetration limit " << limit << " m ("
+         << 100 * g.penetration_limit << " % of the smaller block's size, at least the contact margin)";
+    stop(what.str());
+  }
+  const double mechanical = e.kinetic + e.gravitational + e.strain - e.load_work;
+  if (!g.energy_started) {
+    g.mechanical0 = mechanical;
+    g.energy_started = true;
+  }
+  g.energy_reference = std::max(g.energy_reference, energy_in_play(e));
+  // A floor so that a scene at rest (all energies ~0) is not judged on noise.
+  double floor = 0;
+  for (int i : blocks.free_blocks) floor += blocks.props.mass[i] * gravity.norm() * 1e-6;
+  const double growth = mechanical - g.mechanical0;
+  if (growth > g.energy_growth_limit * std::max(g.energy_reference, floor) && growth > floor) {
+    std::ostringstream what;
+    what << "the mechanical energy grew by " << growth << " J beyond the work of the loads ("
+         << 100 * growth / g.energy_reference << " % of the energy in play)";
+    stop(what.str());
+  }
+  g.last_good = st;
+  g.last_good_time = time;
+  g.last_good_step = step;
+}
+
+}  // namespace polydem
