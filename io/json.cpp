@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -35,7 +36,13 @@ void newline(std::string& out, int indent, int level) {
 
 }  // namespace
 
-std::string json_number(double x) { return std::isfinite(x) ? shortest_text(x) : "null"; }
+std::string json_number(double x, int significant_digits) {
+  if (!std::isfinite(x)) return "null";
+  if (significant_digits <= 0) return shortest_text(x);
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", significant_digits, x);
+  return buf;
+}
 
 std::string json_quote(const std::string& s) {
   std::string out;
@@ -158,18 +165,18 @@ const std::string& Json::as_string() const {
   return string_;
 }
 
-std::string Json::dump(int indent) const {
+std::string Json::dump(int indent, int significant_digits) const {
   std::string out;
-  dump_to(out, indent, 0);
+  dump_to(out, indent, 0, significant_digits);
   return out;
 }
 
-void Json::dump_to(std::string& out, int indent, int level) const {
+void Json::dump_to(std::string& out, int indent, int level, int digits) const {
   switch (type_) {
     case Type::Null: out += "null"; return;
     case Type::Bool: out += bool_ ? "true" : "false"; return;
     case Type::Integer: out += std::to_string(integer_); return;
-    case Type::Number: out += json_number(number_); return;
+    case Type::Number: out += json_number(number_, digits); return;
     case Type::String: out += json_quote(string_); return;
     case Type::Array:
     case Type::Object: {
@@ -186,7 +193,7 @@ void Json::dump_to(std::string& out, int indent, int level) const {
           out += json_quote(keys_[i]);
           out += indent > 0 ? ": " : ":";
         }
-        items_[i].dump_to(out, indent, level + 1);
+        items_[i].dump_to(out, indent, level + 1, digits);
       }
       newline(out, indent, level);
       out += obj ? '}' : ']';

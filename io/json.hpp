@@ -4,7 +4,9 @@
 // Objects keep their keys in insertion order, so the summary reads the way it
 // was built. Numbers: integers are printed exactly; doubles with the shortest
 // text that reads back to the same bits (std::to_chars, at most 17 significant
-// digits, i.e. full round-trip precision). JSON has no NaN or infinity: they
+// digits, i.e. full round-trip precision), or to a fixed number of
+// significant digits when dump() is asked for one (printf's %.Ng, as
+// `polydem analytic --json` prints its results). JSON has no NaN or infinity: they
 // are written as null. Strings are UTF-8; '"', '\\' and control characters
 // are escaped.
 //
@@ -81,11 +83,13 @@ class Json {
   static Json parse(std::string_view text, const std::string& what = "JSON text");
 
   // Text. indent > 0: pretty-printed with that many spaces per level;
-  // indent <= 0: compact on one line.
-  std::string dump(int indent = 2) const;
+  // indent <= 0: compact on one line. significant_digits > 0: every double
+  // to that many significant digits (printf's %.Ng); 0: the shortest round
+  // trip.
+  std::string dump(int indent = 2, int significant_digits = 0) const;
 
  private:
-  void dump_to(std::string& out, int indent, int level) const;
+  void dump_to(std::string& out, int indent, int level, int digits) const;
 
   Type type_ = Type::Null;
   bool bool_ = false;
@@ -96,8 +100,9 @@ class Json {
   std::vector<Json> items_;        // Array elements or Object values
 };
 
-// JSON text for a double: shortest round-trip form, "null" for NaN/inf.
-std::string json_number(double x);
+// JSON text for a double: shortest round-trip form (significant_digits 0)
+// or printf's %.Ng with N = significant_digits; "null" for NaN/inf.
+std::string json_number(double x, int significant_digits = 0);
 // JSON string literal with quotes and escapes.
 std::string json_quote(const std::string& s);
 

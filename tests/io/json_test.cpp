@@ -62,6 +62,20 @@ TEST(Json, NumbersRoundTripExactly) {
   }
 }
 
+// A fixed number of significant digits applies to every double of the
+// document, nested too, and to no integer; non-finite stays null.
+TEST(Json, SignificantDigitsAreThoseOfPrintf) {
+  Json o = Json::object();
+  o.set("third", 1.0 / 3.0).set("big", 3e10).set("small", 2.5e-7).set("count", 123456789012345LL);
+  o.set("list", Json(std::vector<double>{0.1, 1.0 / 7.0, std::nan("")}));
+  EXPECT_EQ(o.dump(0, 12),
+            R"({"third":0.333333333333,"big":30000000000,"small":2.5e-07,"count":123456789012345,)"
+            R"("list":[0.1,0.142857142857,null]})");
+  EXPECT_EQ(json_number(1.0 / 3.0, 4), "0.3333");
+  EXPECT_EQ(json_number(1.0 / 3.0), "0.3333333333333333");
+  EXPECT_EQ(Json(1.0 / 3.0).dump(2, 0), Json(1.0 / 3.0).dump());
+}
+
 TEST(Json, ObjectsKeepInsertionOrderAndReplaceInPlace) {
   Json o = Json::object();
   o["zeta"] = 1;
