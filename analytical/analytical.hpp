@@ -7,6 +7,7 @@
 #include "analytical/free_rocking.hpp"
 #include "analytical/ground_motion.hpp"
 #include "analytical/rocking_body.hpp"
+#include "analytical/rocking_cases.hpp"
 #include "analytical/rocking_response.hpp"
 #include "analytical/shell_sections.hpp"
 #include "analytical/static_overturning.hpp"

@@ -113,4 +113,19 @@ double natural_frequency_hz(double Omega, double m_b, double EI_b, double H) {
   return Omega * std::sqrt(EI_b / (m_b * H * H * H * H)) / (2.0 * pi);  // eq. 4
 }
 
+const char* to_string(SectionShape s) { return s == SectionShape::octagon ? "octagon" : "circle"; }
+
+SpireBeamModes spire_beam_modes(const SpireBeam& b) {
+  SpireBeamModes r;
+  r.beam = b;
+  r.section = b.section == SectionShape::octagon ? hollow_octagon_section(b.r_b, b.thickness, b.density, b.E)
+                                                 : hollow_circle_section(b.r_b, b.thickness, b.density, b.E);
+  const double m_b = r.section.mass_per_height, EI_b = r.section.bending_stiffness;
+  for (double Omega : tapered_cantilever_omegas(b.modes))
+    r.modes.push_back({Omega, natural_frequency_hz(Omega, m_b, EI_b, b.H)});
+  r.rayleigh = rayleigh_minimum();
+  r.rayleigh_f_hz = natural_frequency_hz(r.rayleigh.Omega, m_b, EI_b, b.H);
+  return r;
+}
+
 }  // namespace polydem::analytical

@@ -15,6 +15,8 @@
 
 #include <vector>
 
+#include "analytical/shell_sections.hpp"
+
 namespace polydem::analytical {
 
 // Left side of the frequency equation, divided by I1(z) so it stays O(1).
@@ -44,5 +46,36 @@ RayleighMinimum rayleigh_minimum();
 
 // ω_n / 2π from eq. 4 [Hz]. m_b [kg/m], EI_b [N m²], H [m].
 double natural_frequency_hz(double Omega, double m_b, double EI_b, double H);
+
+// The spire as a tapered cantilever on a hollow base section, as `polydem
+// analytic beam` reports it: m_b and EI_b of the section, the first modes'
+// Ω_n and frequencies, and Rayleigh's estimate (eq. 5-6).
+enum class SectionShape { circle, octagon };
+const char* to_string(SectionShape s);
+
+struct SpireBeam {
+  double H = 9.4;           // height [m]
+  double r_b = 1.06;        // base: outer radius (circle) or outer apothem (octagon) [m]
+  double thickness = 0.25;  // wall [m]
+  double E = 30e9;          // [Pa]
+  double density = 2600.0;  // [kg/m³]
+  SectionShape section = SectionShape::circle;
+  int modes = 3;
+};
+
+struct BeamMode {
+  double Omega = 0.0;  // eq. 4's Ω_n
+  double f_hz = 0.0;
+};
+
+struct SpireBeamModes {
+  SpireBeam beam;        // the inputs
+  ShellSection section;  // at the base
+  std::vector<BeamMode> modes;
+  RayleighMinimum rayleigh;
+  double rayleigh_f_hz = 0.0;
+};
+
+SpireBeamModes spire_beam_modes(const SpireBeam& beam);
 
 }  // namespace polydem::analytical

@@ -81,4 +81,17 @@ CrackedSpireMaximum cracked_spire_p_max(const SpireGeometry& s, double g) {
   return {hb, p_of(hb)};
 }
 
+CrackedSpireCurve cracked_spire_curve(const SpireGeometry& s, int count, double g) {
+  if (count < 2) throw std::invalid_argument("cracked_spire_curve: need count >= 2");
+  CrackedSpireCurve c;
+  c.spire = s;
+  c.g = g;
+  c.p_max = cracked_spire_p_max(s, g);
+  for (int i = 0; i < count; ++i) {
+    const double hb = s.tip_height + (s.H - s.tip_height) * i / (count - 1);
+    c.points.push_back({hb, cracked_spire_body(s, hb, g)});
+  }
+  return c;
+}
+
 }  // namespace polydem::analytical

@@ -19,6 +19,8 @@
 // maximum at H̄ = 4.1 m (Fig. 7a) is not reproduced by this reading. Variants
 // tried (pivot at the crack's upper end, a shell tip) are monotone as well.
 
+#include <vector>
+
 #include "analytical/rocking_body.hpp"
 
 namespace polydem::analytical {
@@ -45,5 +47,20 @@ struct CrackedSpireMaximum {
 };
 // The H̄ that maximises p (shifts the collapse curve furthest left; paper: 4.1 m).
 CrackedSpireMaximum cracked_spire_p_max(const SpireGeometry& s, double g);
+
+// The body against the cracked height (paper Fig. 7a), as `polydem analytic
+// cracked-cone-p` reports it: `count` ≥ 2 values of H̄ evenly from
+// tip_height to H, and the maximum of p.
+struct CrackedSpirePoint {
+  double H_bar = 0.0;  // [m]
+  RockingBody body;
+};
+struct CrackedSpireCurve {
+  SpireGeometry spire;  // the inputs
+  double g = 0.0;
+  CrackedSpireMaximum p_max;
+  std::vector<CrackedSpirePoint> points;
+};
+CrackedSpireCurve cracked_spire_curve(const SpireGeometry& s, int count, double g);
 
 }  // namespace polydem::analytical

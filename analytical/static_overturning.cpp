@@ -49,4 +49,15 @@ GoverningCrack governing_crack(double r_b, double H) {
   return {lambda_cone(r_b, H) * crack_reduction_factor(x), x * H};
 }
 
+ConeOverturning cone_overturning(double r_b, double H, double h_c) {
+  ConeOverturning c;
+  c.r_b = r_b;
+  c.H = H;
+  c.h_c = h_c;
+  c.lambda_eq1 = lambda_cone(r_b, H);
+  c.governing = governing_crack(r_b, H);
+  c.lambda_at_h_c = lambda_crack(r_b, H, h_c);
+  return c;
+}
+
 }  // namespace polydem::analytical

@@ -26,4 +26,13 @@ struct GoverningCrack {
 // the factor is 2/3 − 1/π², see docs/analytical.md).
 GoverningCrack governing_crack(double r_b, double H);
 
+// Eq. 1 and eq. 2 for one cone, as `polydem analytic lambda` reports them.
+struct ConeOverturning {
+  double r_b = 0.0, H = 0.0, h_c = 0.0;  // the inputs [m]
+  double lambda_eq1 = 0.0;               // eq. 1
+  double lambda_at_h_c = 0.0;            // eq. 2 at h_c
+  GoverningCrack governing;              // eq. 2's minimum over the crack height
+};
+ConeOverturning cone_overturning(double r_b, double H, double h_c);
+
 }  // namespace polydem::analytical

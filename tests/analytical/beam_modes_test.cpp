@@ -69,3 +69,21 @@ TEST(ShellSections, SolidOctagonMatchesPolygonFormula) {
   EXPECT_GT(s.second_moment, 0.25 * pi);
   EXPECT_LT(s.second_moment, 0.25 * pi / std::pow(std::cos(pi / 8.0), 4));
 }
+
+// The spire's beam: the section's m_b and EI_b in eq. 4 for every mode.
+TEST(BeamModes, SpireBeamUsesTheSectionOfItsShape) {
+  pa::SpireBeam b;
+  b.section = pa::SectionShape::octagon;
+  b.modes = 2;
+  const auto r = pa::spire_beam_modes(b);
+  const auto s = pa::hollow_octagon_section(b.r_b, b.thickness, b.density, b.E);
+  EXPECT_EQ(r.section.bending_stiffness, s.bending_stiffness);
+  ASSERT_EQ(r.modes.size(), 2u);
+  EXPECT_NEAR(r.modes[0].Omega, 5.315, 1e-3);
+  EXPECT_EQ(r.modes[1].f_hz, pa::natural_frequency_hz(r.modes[1].Omega, s.mass_per_height, s.bending_stiffness, b.H));
+  EXPECT_EQ(r.rayleigh_f_hz,
+            pa::natural_frequency_hz(pa::rayleigh_minimum().Omega, s.mass_per_height, s.bending_stiffness, b.H));
+  b.section = pa::SectionShape::circle;
+  EXPECT_EQ(pa::spire_beam_modes(b).section.bending_stiffness,
+            pa::hollow_circle_section(b.r_b, b.thickness, b.density, b.E).bending_stiffness);
+}

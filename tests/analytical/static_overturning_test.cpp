@@ -39,3 +39,12 @@ TEST(StaticOverturning, RejectsBadInput) {
   EXPECT_THROW(pa::lambda_cone(-1.0, 9.4), std::invalid_argument);
   EXPECT_THROW(pa::lambda_crack(1.0, 9.4, 10.0), std::invalid_argument);
 }
+
+TEST(StaticOverturning, ConeOverturningGathersEquationsOneAndTwo) {
+  const auto c = pa::cone_overturning(1.06, 9.4, 5.0);
+  EXPECT_EQ(c.lambda_eq1, pa::lambda_cone(1.06, 9.4));
+  EXPECT_EQ(c.lambda_at_h_c, pa::lambda_crack(1.06, 9.4, 5.0));
+  EXPECT_EQ(c.governing.lambda, pa::governing_crack(1.06, 9.4).lambda);
+  EXPECT_EQ(c.h_c, 5.0);
+  EXPECT_THROW(pa::cone_overturning(1.06, 9.4, 10.0), std::invalid_argument);  // h_c above H
+}
