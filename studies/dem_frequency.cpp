@@ -199,6 +199,7 @@ DemFrequencyResult measure_dem_frequency(SceneSpec scene, const DemFrequencyOpti
     res.f_fourier_hz = fourier_peak_hz(res.t, res.u, o.f_min, o.f_max);
     res.f_zero_crossing_hz = zero_crossing_hz(res.t, res.u, &res.zero_crossings);
   }
+  res.ratio_to_beam = res.f_beam_hz > 0 ? res.f_fourier_hz / res.f_beam_hz : 0.0;
   return res;
 }
 

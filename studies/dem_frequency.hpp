@@ -46,6 +46,7 @@ struct DemFrequencyResult {
   double outer_apothem = 0.0, wall_thickness = 0.0, height = 0.0, Omega1 = 0.0;
   analytical::ShellSection section;
   double f_beam_hz = 0.0;
+  double ratio_to_beam = 0.0;    // f_fourier_hz / f_beam_hz (0 without a beam frequency)
   // The run.
   std::string status;
   bool unstable = false;

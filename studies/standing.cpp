@@ -2,6 +2,7 @@
 // parameter; why two LPs decide it is at the top of studies/standing.hpp.
 #include "studies/standing.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -49,6 +50,28 @@ ThinnestStanding thinnest_standing(const std::function<SceneSpec(double)>& scene
     (trial(mid) ? r.stands : r.falls) = mid;
   }
   return r;
+}
+
+ThinnestArch thinnest_arch(int voussoirs, const std::function<SceneSpec(int, double)>& arch_at,
+                           const ThinnestArchOptions& o) {
+  LimitAnalysisOptions options;
+  options.friction_angle_deg = o.friction_angle_deg;
+  options.method = LpMethod::simplex;
+  ThinnestArch a;
+  a.voussoirs = voussoirs;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    a.bracket = thinnest_standing([&](double t_over_R) { return arch_at(voussoirs, t_over_R); }, 0.001, 0.6,
+                                  o.tolerance, options);
+  } catch (const std::invalid_argument&) {
+    // It stands at t/R = 0.001 (few voussoirs: an equilibrium of the hinged
+    // chain through the joints' points exists however thin).
+    a.bracket.falls = 0.0;
+    a.bracket.stands = 0.001;
+    a.bracket.trials = 1;
+  }
+  a.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return a;
 }
 
 }  // namespace polydem

@@ -46,4 +46,25 @@ struct ThinnestStanding {
 ThinnestStanding thinnest_standing(const std::function<SceneSpec(double)>& scene_at, double falls, double stands,
                                    double tolerance, const LimitAnalysisOptions& options);
 
+// The thinnest semicircular arch of n voussoirs on a fixed base that can
+// stand under its own weight (`polydem analytic arch-thickness`): the ring
+// thickness over the centre-line radius, t/R, bisected in [0.001, 0.6] with
+// the LP's simplex at friction angle φ (near 90°: no sliding, Heyman's
+// question; Milankovitch's continuous arch needs t/R = 0.1075).
+// arch_at(n, t/R) builds the arch (io/analytic_inputs.hpp).
+struct ThinnestArchOptions {
+  double friction_angle_deg = 85.0;
+  double tolerance = 1e-5;  // of the bracket on t/R
+};
+
+struct ThinnestArch {
+  int voussoirs = 0;
+  ThinnestStanding bracket;  // in t/R; falls = 0 when it stands at 0.001 already
+  bool stands_however_thin() const { return bracket.falls == 0.0; }
+  double seconds = 0.0;      // wall time of the bisection
+};
+
+ThinnestArch thinnest_arch(int voussoirs, const std::function<SceneSpec(int, double)>& arch_at,
+                           const ThinnestArchOptions& options = {});
+
 }  // namespace polydem
