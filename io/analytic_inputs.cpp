@@ -1,0 +1,74 @@
+#include "io/analytic_inputs.hpp"
+
+#include "io/deck.hpp"
+#include "io/ground_motion_record.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace polydem {
+
+SceneSpec analytic_scene(const std::string& deck, bool no_windows) {
+  std::vector<std::string> overrides;
+  if (no_windows) overrides.push_back("spire.window_faces=[]");
+  return deck.empty() ? parse_deck("[spire]\n", kDefaultSpireName, overrides) : read_deck(deck, overrides);
+}
+
+SceneSpec analytic_spire_scene(const std::string& deck, bool no_windows) {
+  SceneSpec s = analytic_scene(deck, no_windows);
+  if (!s.spire) throw std::runtime_error("the deck " + deck + " has no [spire]");
+  return s;
+}
+
+SceneSpec unit_semicircular_arch(int voussoirs, double t_over_R) {
+  std::ostringstream d;
+  d.precision(17);
+  d << "[[arch]]\nradius = " << 1.0 - 0.5 * t_over_R << "\nthickness = " << t_over_R << "\nvoussoirs = " << voussoirs
+    << "\ndepth = 1\nsupports = \"base\"\n";
+  return parse_deck(d.str(), "<arch-thickness>");
+}
+
+UniformRecord read_uniform_record(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open record file '" + path + "'");
+  std::vector<double> t;
+  UniformRecord r;
+  std::string line;
+  int lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    for (char& ch : line)
+      if (ch == ',' || ch == ';' || ch == '\t') ch = ' ';
+    if (line.find_first_not_of(" \r") == std::string::npos || line[line.find_first_not_of(' ')] == '#') continue;
+    std::istringstream ls(line);
+    double ti, ai;
+    if (!(ls >> ti >> ai)) {
+      if (t.empty()) continue;  // a header line
+      throw RecordError(path, lineno, "expected two numbers (t [s], a [g])");
+    }
+    t.push_back(ti);
+    r.acceleration.push_back(ai);
+  }
+  if (t.size() < 2) throw RecordError(path, 0, "needs at least two samples");
+  r.dt = t[1] - t[0];
+  for (std::size_t i = 1; i < t.size(); ++i)
+    if (!(std::abs(t[i] - t[i - 1] - r.dt) <= 1e-6 * r.dt) || !(r.dt > 0.0))
+      throw RecordError(path, 0, "time step must be uniform and positive");
+  r.shifted = t[0] != 0.0;
+  return r;
+}
+
+analytical::LoadSpec record_load(const std::string& path) {
+  const UniformRecord r = read_uniform_record(path);
+  analytical::LoadSpec l;
+  l.kind = analytical::LoadKind::record;
+  l.record_dt = r.dt;
+  l.record = r.acceleration;
+  l.record_name = path;
+  l.record_shifted = r.shifted;
+  return l;
+}
+
+}  // namespace polydem

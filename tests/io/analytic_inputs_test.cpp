@@ -1,0 +1,74 @@
+// What `polydem analytic` reads (io/analytic_inputs.hpp): the default spire,
+// the unit arch, and the rocking models' records with their messages.
+#include "io/analytic_inputs.hpp"
+
+#include "io/deck.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace polydem {
+namespace {
+
+std::string write(const std::string& name, const std::string& text) {
+  const std::string path = (std::filesystem::temp_directory_path() / name).string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string message(const std::string& path) {
+  try {
+    read_uniform_record(path);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(AnalyticInputs, DefaultSpireWithAndWithoutWindows) {
+  const SceneSpec s = analytic_scene("", false);
+  EXPECT_EQ(s.deck_path, kDefaultSpireName);
+  ASSERT_TRUE(s.spire);
+  EXPECT_FALSE(s.spire->window_faces.empty());
+  EXPECT_TRUE(analytic_scene("", true).spire->window_faces.empty());
+  const std::string pillar = std::string(POLYDEM_SOURCE_DIR) + "/examples/verification/rocking_onset.toml";
+  EXPECT_FALSE(analytic_scene(pillar, false).spire);
+  try {
+    analytic_spire_scene(pillar, false);
+    ADD_FAILURE() << "a deck without a [spire]";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "the deck " + pillar + " has no [spire]");
+  }
+  EXPECT_THROW(analytic_scene("/nonexistent/deck.toml", false), DeckError);
+}
+
+TEST(AnalyticInputs, UnitArchHasItsVoussoirsOnABase) {
+  const SceneSpec s = unit_semicircular_arch(9, 0.12);
+  int fixed = 0;
+  for (const BlockSpec& b : s.blocks) fixed += b.motion == BlockMotion::fixed;
+  EXPECT_EQ(s.blocks.size(), 10u);
+  EXPECT_EQ(fixed, 1);
+}
+
+TEST(AnalyticInputs, RecordSkipsHeadersAndShiftsToZero) {
+  const auto r = read_uniform_record(write("polydem_rec_a.csv", "# comment\ntime;accel\n0.5;0.1\n0.52\t-0.2\n0.54,0\n"));
+  EXPECT_NEAR(r.dt, 0.02, 1e-15);
+  EXPECT_EQ(r.acceleration, (std::vector<double>{0.1, -0.2, 0.0}));
+  EXPECT_TRUE(r.shifted);
+  EXPECT_FALSE(read_uniform_record(write("polydem_rec_b.csv", "0 1\n0.1 2\n")).shifted);
+}
+
+TEST(AnalyticInputs, RecordErrorsNameTheFileAndLine) {
+  const std::string bad = write("polydem_rec_c.csv", "t a\n0 0\n0.01 x\n");
+  EXPECT_EQ(message(bad), bad + ":3: expected two numbers (t [s], a [g])");
+  const std::string one = write("polydem_rec_d.csv", "0 0\n");
+  EXPECT_EQ(message(one), one + ": needs at least two samples");
+  const std::string uneven = write("polydem_rec_e.csv", "0 0\n0.01 0\n0.03 0\n");
+  EXPECT_EQ(message(uneven), uneven + ": time step must be uniform and positive");
+  EXPECT_EQ(message("/nonexistent/r.csv"), "cannot open record file '/nonexistent/r.csv'");
+}
+
+}  // namespace
+}  // namespace polydem
