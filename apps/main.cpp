@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
   sweep_cmd->add_flag("--quiet", sweep.quiet, "Only the final table");
 
   auto* analytic_cmd = app.add_subcommand("analytic", "Analytical models of the paper (polydem analytic --help)");
-  analytic_cmd->prefix_command();  // everything after `analytic` goes to the model's own parser
+  analytic_cmd->prefix_command();  // the models and their options: apps/analytic_command.cpp
   analytic_cmd->set_help_flag();
 
   polydem::MeshOptions mesh;

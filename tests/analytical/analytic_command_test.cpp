@@ -37,6 +37,43 @@ TEST(AnalyticCommand, EveryModelRuns) {
   EXPECT_NE(out.find("max p"), std::string::npos);
 }
 
+// The first error's message on stderr, naming the option.
+std::string error_of(const std::vector<std::string>& a) {
+  testing::internal::CaptureStdout();
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(run_analytic_command(a), 2);
+  testing::internal::GetCapturedStdout();
+  return testing::internal::GetCapturedStderr();
+}
+
+TEST(AnalyticCommand, ErrorsNameTheOption) {
+  EXPECT_EQ(error_of({"lambda", "--r_b"}), "polydem analytic lambda: --r_b needs a value\n");
+  EXPECT_EQ(error_of({"lambda", "--r-b", "1", "--r_b", "2"}), "polydem analytic lambda: --r_b given twice\n");
+  EXPECT_EQ(error_of({"lambda", "--bogus", "1"}), "polydem analytic lambda: unknown option --bogus\n");
+  EXPECT_EQ(error_of({"lambda", "extra"}), "polydem analytic lambda: unexpected argument 'extra'\n");
+  EXPECT_EQ(error_of({"lambda", "--H", "nan"}), "polydem analytic lambda: --H expects a number, got 'nan'\n");
+  EXPECT_EQ(error_of({"rocking", "--body", "block", "--H", "9"}),
+            "polydem analytic rocking: --H does not apply to --body block\n");
+  EXPECT_EQ(error_of({"rocking", "--load", "constant", "--a_p", "1"}),
+            "polydem analytic rocking: --a_p does not apply to --load constant\n");
+  EXPECT_EQ(error_of({"beam", "--section", "square"}), "polydem analytic beam: --section must be circle or octagon\n");
+  EXPECT_NE(error_of({"nonsense"}).find("unknown model 'nonsense' (expected lambda, beam,"), std::string::npos);
+}
+
+// Every model has a help of its own (exit 0) listing its options.
+TEST(AnalyticCommand, EveryModelHasHelp) {
+  for (const std::string model : {"lambda", "beam", "rocking", "collapse-diagram", "cracked-cone-p", "refined-lambda",
+                                  "dem-frequency", "limit-lp", "arch-thickness"}) {
+    std::string out;
+    EXPECT_EQ(run({model, "--help"}, &out), 0) << model;
+    EXPECT_NE(out.find("Usage: polydem analytic " + model), std::string::npos) << out;
+    EXPECT_NE(out.find("--json"), std::string::npos) << out;
+  }
+  std::string out;
+  EXPECT_EQ(run({"help"}, &out), 0);
+  EXPECT_NE(out.find("arch-thickness"), std::string::npos);
+}
+
 TEST(AnalyticCommand, BadInputReturnsTwo) {
   EXPECT_EQ(run({}), 2);
   EXPECT_EQ(run({"nonsense"}), 2);
