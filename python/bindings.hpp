@@ -2,7 +2,7 @@
 //
 // The module is thin: scenes are parsed by the deck reader (io/deck.hpp),
 // runs are run/run_scene.hpp's SceneRun, outputs io/run_outputs.hpp, studies
-// studies/. The Python half (python/polydem/) adds the scene builder, the
+// studies/, the models of `polydem analytic` analytical/ and studies/. The Python half (python/polydem/) adds the scene builder, the
 // loop with callbacks and progress, and the exception classes; it is what
 // users import (docs/python.md).
 //
@@ -35,5 +35,6 @@ struct Scene {
 
 void bind_run(py::module_& m);
 void bind_studies(py::module_& m);
+void bind_analytical(py::module_& m);
 
 }  // namespace polydem::python

@@ -1,5 +1,6 @@
 // polydem._polydem: errors, scenes (parsed by the deck reader), deck keys.
-// Runs are in run.cpp, studies in studies.cpp.
+// Runs are in run.cpp, studies in studies.cpp, the analytical models in
+// analytical.cpp.
 #include "python/bindings.hpp"
 
 #include "io/deck.hpp"
@@ -99,4 +100,5 @@ PYBIND11_MODULE(_polydem, m) {
 
   bind_run(m);
   bind_studies(m);
+  bind_analytical(m);
 }
