@@ -40,7 +40,8 @@ RockingBody rocking_body(const BodySpec& s, double g) {
     case BodyShape::block: return rectangular_block(s.b, s.h, 1.0, g);
     case BodyShape::shell: return conical_shell(s.r_b, s.H, 1.0, g);
     case BodyShape::cone: return solid_cone(s.r_b, s.H, 1.0, g);
-    case BodyShape::cracked: return cracked_spire_body(s.spire, s.H_bar.value_or(s.spire.tip_height), g);
+    case BodyShape::cracked:
+      return cracked_spire_body(SpireGeometry{s.H, s.r_b, s.tip, s.thickness, s.density}, s.H_bar.value_or(s.tip), g);
   }
   throw std::invalid_argument("rocking_body: unknown shape");
 }

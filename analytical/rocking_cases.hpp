@@ -21,13 +21,17 @@ enum class BodyShape { block, shell, cone, cracked };
 const char* to_string(BodyShape s);
 std::optional<BodyShape> body_shape_named(const std::string& name);  // "block", ...; none for another
 
-// Only the fields of the shape are read.
+// Only the fields of the shape are read; the defaults of the cone's are the
+// paper's spire (SpireGeometry's).
 struct BodySpec {
   BodyShape shape = BodyShape::shell;
-  double b = 0.2, h = 1.0;      // block: half-width, half-height [m]
-  double r_b = 1.06, H = 9.4;   // shell (eq. 8), solid cone: base radius, height [m]
-  SpireGeometry spire;          // cracked: the spire cracked below its solid tip
-  std::optional<double> H_bar;  // cracked: the cracked height [m]; default spire.tip_height
+  double b = 0.2, h = 1.0;                            // block: half-width, half-height [m]
+  double r_b = SpireGeometry{}.r_b;                   // shell (eq. 8), solid cone, cracked: base radius [m]
+  double H = SpireGeometry{}.H;                       // shell, solid cone, cracked: height [m]
+  double tip = SpireGeometry{}.tip_height;            // cracked: the solid tip [m]
+  double thickness = SpireGeometry{}.wall_thickness;  // cracked: the wall below the tip [m]
+  double density = SpireGeometry{}.density;           // cracked [kg/m³]
+  std::optional<double> H_bar;                        // cracked: the cracked height [m]; default tip
 };
 
 // The body of unit mass (shell, cone, block) or of its own mass (cracked).

@@ -210,7 +210,6 @@ struct BodyArgs {
 
 void add_body(CLI::App* c, BodyArgs& a) {
   using S = pa::BodyShape;
-  pa::SpireGeometry& s = a.spec.spire;
   choice(c, "body", a.shape, {"block", "shell", "cone", "cracked"},
          "Rocking body: a rectangular block, a conical shell (eq. 8), a solid cone, the cracked spire");
   a.options = {
@@ -218,9 +217,9 @@ void add_body(CLI::App* c, BodyArgs& a) {
       {positive(c, "h", a.spec.h, "block: half-height, m"), {S::block}},
       {positive(c, "r_b", a.spec.r_b, "shell, cone, cracked: base radius, m"), {S::shell, S::cone, S::cracked}},
       {positive(c, "H", a.spec.H, "shell, cone, cracked: height, m"), {S::shell, S::cone, S::cracked}},
-      {positive(c, "tip", s.tip_height, "cracked: height of the solid tip, m"), {S::cracked}},
-      {positive(c, "thickness", s.wall_thickness, "cracked: wall thickness below the tip, m"), {S::cracked}},
-      {positive(c, "density", s.density, "cracked: density, kg/m3"), {S::cracked}},
+      {positive(c, "tip", a.spec.tip, "cracked: height of the solid tip, m"), {S::cracked}},
+      {positive(c, "thickness", a.spec.thickness, "cracked: wall thickness below the tip, m"), {S::cracked}},
+      {positive(c, "density", a.spec.density, "cracked: density, kg/m3"), {S::cracked}},
   };
   a.H_bar_given = positive(c, "H_bar", a.H_bar, "cracked: cracked height, apex to pivot, m (default: --tip)")
                       ->option_text("NUMBER");
@@ -234,11 +233,7 @@ void read_body(BodyArgs& a) {
     if (option->count() > 0 && std::find(shapes.begin(), shapes.end(), shape) == shapes.end())
       throw BadInput(option->get_name() + " does not apply to --body " + a.shape);
   a.spec.shape = shape;
-  if (shape == pa::BodyShape::cracked) {
-    a.spec.spire.H = a.spec.H;
-    a.spec.spire.r_b = a.spec.r_b;
-    if (a.H_bar_given->count() > 0) a.spec.H_bar = a.H_bar;
-  }
+  if (a.H_bar_given->count() > 0) a.spec.H_bar = a.H_bar;
 }
 
 struct RockingArgs {

@@ -28,9 +28,8 @@ std::string body_description(const pa::BodySpec& s) {
       return (s.shape == pa::BodyShape::shell ? "conical shell (eq. 8)" : "solid cone") + std::string(", r_b = ") +
              num(s.r_b) + " m, H = " + num(s.H) + " m";
     case pa::BodyShape::cracked:
-      return "cracked spire, H_bar = " + num(s.H_bar.value_or(s.spire.tip_height)) + " m (H = " + num(s.spire.H) +
-             " m, r_b = " + num(s.spire.r_b) + " m, solid tip " + num(s.spire.tip_height) + " m, wall " +
-             num(s.spire.wall_thickness) + " m)";
+      return "cracked spire, H_bar = " + num(s.H_bar.value_or(s.tip)) + " m (H = " + num(s.H) + " m, r_b = " +
+             num(s.r_b) + " m, solid tip " + num(s.tip) + " m, wall " + num(s.thickness) + " m)";
   }
   return "";
 }

@@ -28,12 +28,12 @@ Json body_spec_json(const pa::BodySpec& b) {
     case pa::BodyShape::shell:
     case pa::BodyShape::cone: return j.set("r_b_m", b.r_b).set("H_m", b.H);
     case pa::BodyShape::cracked:
-      return j.set("H_bar_m", b.H_bar.value_or(b.spire.tip_height))
-          .set("H_m", b.spire.H)
-          .set("r_b_m", b.spire.r_b)
-          .set("tip_m", b.spire.tip_height)
-          .set("thickness_m", b.spire.wall_thickness)
-          .set("density_kg_m3", b.spire.density);
+      return j.set("H_bar_m", b.H_bar.value_or(b.tip))
+          .set("H_m", b.H)
+          .set("r_b_m", b.r_b)
+          .set("tip_m", b.tip)
+          .set("thickness_m", b.thickness)
+          .set("density_kg_m3", b.density);
   }
   return j;
 }

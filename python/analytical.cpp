@@ -25,19 +25,9 @@ namespace {
 
 pa::BodySpec body_spec(const std::string& shape, double b, double h, double r_b, double H, double tip, double thickness,
                        double density, std::optional<double> H_bar) {
-  pa::BodySpec s;
   const auto named = pa::body_shape_named(shape);
   if (!named) throw py::value_error("body must be block, shell, cone or cracked (got \"" + shape + "\")");
-  s.shape = *named;
-  s.b = b;
-  s.h = h;
-  s.r_b = s.spire.r_b = r_b;
-  s.H = s.spire.H = H;
-  s.spire.tip_height = tip;
-  s.spire.wall_thickness = thickness;
-  s.spire.density = density;
-  s.H_bar = H_bar;
-  return s;
+  return pa::BodySpec{*named, b, h, r_b, H, tip, thickness, density, H_bar};
 }
 
 // m.def(name, f, the body's keyword arguments (BodySpec's defaults), extra...):
@@ -46,8 +36,8 @@ template <typename F, typename... Extra>
 void def_with_body(py::module_& m, const char* name, F&& f, Extra&&... extra) {
   const pa::BodySpec d;
   m.def(name, std::forward<F>(f), py::arg("body") = std::string(pa::to_string(d.shape)), py::arg("b") = d.b,
-        py::arg("h") = d.h, py::arg("r_b") = d.r_b, py::arg("H") = d.H, py::arg("tip") = d.spire.tip_height,
-        py::arg("thickness") = d.spire.wall_thickness, py::arg("density") = d.spire.density,
+        py::arg("h") = d.h, py::arg("r_b") = d.r_b, py::arg("H") = d.H, py::arg("tip") = d.tip,
+        py::arg("thickness") = d.thickness, py::arg("density") = d.density,
         py::arg("H_bar") = py::none(), std::forward<Extra>(extra)...);
 }
 

@@ -17,10 +17,13 @@ TEST(RockingCases, EachShapeIsItsModel) {
   EXPECT_EQ(pa::rocking_body(s, g).p, pa::conical_shell(s.r_b, s.H, 1.0, g).p);
   s.shape = pa::BodyShape::cone;
   EXPECT_EQ(pa::rocking_body(s, g).p, pa::solid_cone(s.r_b, s.H, 1.0, g).p);
-  s.shape = pa::BodyShape::cracked;  // H_bar: the tip alone unless given
-  EXPECT_EQ(pa::rocking_body(s, g).p, pa::cracked_spire_body(s.spire, s.spire.tip_height, g).p);
+  s.shape = pa::BodyShape::cracked;  // the paper's spire; H_bar: the tip alone unless given
+  const pa::SpireGeometry spire;
+  EXPECT_EQ(pa::rocking_body(s, g).p, pa::cracked_spire_body(spire, spire.tip_height, g).p);
   s.H_bar = 5.0;
-  EXPECT_EQ(pa::rocking_body(s, g).p, pa::cracked_spire_body(s.spire, 5.0, g).p);
+  EXPECT_EQ(pa::rocking_body(s, g).p, pa::cracked_spire_body(spire, 5.0, g).p);
+  s.thickness = 0.3;
+  EXPECT_NE(pa::rocking_body(s, g).p, pa::cracked_spire_body(spire, 5.0, g).p);
 }
 
 TEST(RockingCases, LoadsAreInG) {
