@@ -23,7 +23,8 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--threads", run.threads,
                       "OpenMP threads (0: the deck's simulation.threads, else OMP_NUM_THREADS or all cores)");
   run_cmd->add_option("--set", run.overrides, "Override a deck key: section.key=value (repeatable)");
-  run_cmd->add_flag("--quiet", run.quiet, "No progress or report on stderr");
+  run_cmd->add_flag("--quiet", run.quiet, "No progress, report or verdict");
+  run_cmd->add_flag("--verbose", run.verbose, "Also the step statistics and where the time went (stage profile)");
   run_cmd->add_option("--restart", run.restart_dir,
                       "Continue from DIR/checkpoint.bin (output.checkpoint_interval) and write the results into DIR; "
                       "give the same deck and --set options as the original run");

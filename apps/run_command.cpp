@@ -8,6 +8,7 @@
 #include "io/summary.hpp"
 #include "io/vtk.hpp"
 #include "run/run_scene.hpp"
+#include "run/verdict.hpp"
 
 #include <fmt/core.h>
 
@@ -23,23 +24,30 @@ namespace polydem {
 
 namespace {
 
-void print_report(const RunReport& r, const std::string& out_dir) {
-  std::cerr << fmt::format("polydem: {} steps of {:.3e} s to t = {:.4g} s in {:.2f} s ({:.3g} subcontact updates/s)\n",
-                           r.steps, r.time_step, r.end_time, r.wall_seconds,
-                           r.wall_seconds > 0 ? r.subcontact_updates / r.wall_seconds : 0.0);
-  std::cerr << fmt::format("polydem: energy balance error {:.3e} (relative)\n", r.energy_balance_error);
-  const RunProfile& p = r.profile;
-  if (p.total > 0 && p.steps > 0)
+// On stderr: with --verbose the step statistics and where the time went,
+// then the deck's checks and where the results are. On stdout, last: the
+// verdict (run/verdict.hpp).
+void print_report(const SceneSpec& spec, const RunReport& r, const std::string& out_dir, bool verbose) {
+  if (verbose) {
     std::cerr << fmt::format(
-        "polydem: profile {:.1f} us/step: detection {:.0f} %, patch {:.0f} %, joint law {:.0f} %, gather and update "
-        "{:.0f} %, guard {:.0f} %, output {:.0f} %, setup {:.0f} %\n",
-        1e6 * (p.total - p.setup) / p.steps, 100 * p.detection / p.total, 100 * p.patch / p.total,
-        100 * p.joint_law / p.total, 100 * p.gather_update / p.total, 100 * p.guard / p.total,
-        100 * p.output / p.total, 100 * p.setup / p.total);
+        "polydem: {} steps of {:.3e} s to t = {:.4g} s in {:.2f} s ({:.3g} subcontact updates/s)\n", r.steps,
+        r.time_step, r.end_time, r.wall_seconds, r.wall_seconds > 0 ? r.subcontact_updates / r.wall_seconds : 0.0);
+    const RunProfile& p = r.profile;
+    if (p.total > 0 && p.steps > 0)
+      std::cerr << fmt::format(
+          "polydem: profile {:.1f} us/step: detection {:.0f} %, patch {:.0f} %, joint law {:.0f} %, gather and "
+          "update {:.0f} %, guard {:.0f} %, output {:.0f} %, setup {:.0f} %\n",
+          1e6 * (p.total - p.setup) / p.steps, 100 * p.detection / p.total, 100 * p.patch / p.total,
+          100 * p.joint_law / p.total, 100 * p.gather_update / p.total, 100 * p.guard / p.total,
+          100 * p.output / p.total, 100 * p.setup / p.total);
+  }
   for (const CheckResult& c : r.checks)
     std::cerr << fmt::format("  check {:<34} measured {:>13.6g} expected {:>13.6g} tol {:>9.3g} {} [{}]\n", c.name,
                              c.measured, c.expected, c.tolerance, c.unit, c.passed ? "passed" : "FAILED");
   std::cerr << "polydem: results in " << out_dir << "/summary.json and " << out_dir << "/results.h5\n";
+  std::cerr.flush();
+  for (const std::string& line : verdict_lines(spec, r)) std::cout << line << "\n";
+  std::cout.flush();
 }
 
 }  // namespace
@@ -140,7 +148,7 @@ int run_command(const RunOptions& o) {
               << "/last_good_state.vtu, results so far in " << out_dir << "/summary.json and results.h5\n";
     return exit_instability;
   }
-  if (!o.quiet) print_report(report, out_dir);
+  if (!o.quiet) print_report(spec, report, out_dir, o.verbose);
   return report.all_checks_passed() ? exit_success : exit_check_failed;
 }
 

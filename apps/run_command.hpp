@@ -19,7 +19,8 @@ struct RunOptions {
   bool use_default = false;       // the built-in default deck
   std::string out_dir = "out";
   int threads = 0;
-  bool quiet = false;
+  bool quiet = false;    // no progress, report or verdict
+  bool verbose = false;  // the step statistics and the stage profile too
   std::vector<std::string> overrides;  // "key=value"
   // Continue the run whose checkpoint is DIR/checkpoint.bin (written with
   // output.checkpoint_interval) and write the results into DIR. The deck and

@@ -1,6 +1,6 @@
 // `polydem run` end to end: exit codes, error messages that name the deck's
-// file, line and key, nothing written on bad input, overrides, and the
-// summary's checks. Most cases call run_command() in-process (stderr is
+// file, line and key, nothing written on bad input, overrides, the
+// summary's checks, and the verdict it prints last. Most cases call run_command() in-process (stderr is
 // captured); --version and one bad deck go through the built binary.
 //
 // The scene is a 1 m stone cube on a fixed base run for 2 ms (about 25
@@ -19,6 +19,8 @@
 #include <iostream>
 #include <regex>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace polydem {
 namespace {
@@ -301,9 +303,11 @@ TEST_F(RunCommandTest, NonFiniteStateExitsThreeAndKeepsTheLastGoodState) {
     EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << "temporary left behind: " << e.path();
 }
 
-// The built binary.
-std::string shell_run(const std::string& args, const fs::path& out, int& status) {
-  const std::string cmd = std::string("\"") + POLYDEM_BINARY + "\" " + args + " > \"" + out.string() + "\" 2>&1";
+// The built binary; stdout goes to `out`, and stderr too unless `err` is
+// given.
+std::string shell_run(const std::string& args, const fs::path& out, int& status, const fs::path& err = {}) {
+  const std::string cmd = std::string("\"") + POLYDEM_BINARY + "\" " + args + " > \"" + out.string() + "\" " +
+                          (err.empty() ? std::string("2>&1") : "2> \"" + err.string() + "\"");
   const int rc = std::system(cmd.c_str());
   status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
   return read_text(out);
@@ -334,6 +338,97 @@ TEST_F(RunCommandTest, BinaryRejectsABadDeckWithExitTwo) {
             dir_ / "err2.txt", status);
   EXPECT_EQ(status, exit_success);
   expect_end_time(read_text(out_ / "summary.json"), 0.001);
+}
+
+// What `polydem run` shows last (run/verdict.hpp): three plain lines on
+// stdout, after everything on stderr, as a user runs the binary.
+class VerdictTest : public RunCommandTest {
+ protected:
+  // Runs `deck_text` through the binary with `flags`; stdout's lines in
+  // out_lines_, stderr in err_.
+  int run_binary(const std::string& deck_text, const std::string& flags = "") {
+    deck_ = dir_ / "deck.toml";
+    std::ofstream(deck_) << deck_text;
+    int status = -1;
+    std::istringstream out(shell_run("run \"" + deck_.string() + "\" --threads 1 --out \"" + out_.string() + "\" " +
+                                         flags,
+                                     dir_ / "stdout.txt", status, dir_ / "stderr.txt"));
+    out_lines_.clear();
+    for (std::string line; std::getline(out, line);) out_lines_.push_back(line);
+    err_ = read_text(dir_ / "stderr.txt");
+    return status;
+  }
+  std::vector<std::string> out_lines_;
+};
+
+bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
+bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+// The cube on its base turned into a stack of two 0.4 x 0.4 x 1 m stones,
+// each in its own group (b/h = 0.2 for the stack), under a constant 0.5 g:
+// they tip over (friction 45° keeps them from sliding).
+std::string stack_deck() {
+  std::string deck = replace_once(kDeck, "end_time = 0.002", "end_time = 1.5");
+  deck = replace_once(deck, "normal_stiffness = 98e9", "normal_stiffness = 98e9\nfriction_angle = 45.0\ndamping = 2.1e-5");
+  deck = replace_once(deck, "name = \"stone\"", "name = \"lower\"\ngroup = \"course0\"");
+  deck = replace_once(deck, "size = [1.0, 1.0, 1.0]", "size = [0.4, 0.4, 1.0]");
+  deck = replace_once(deck, "[[check]]\nkind = \"no_drift\"\nblock = \"stone\"\ntolerance = 1e-3\n", R"([[block]]
+name = "upper"
+group = "course1"
+shape = "box"
+size = [0.4, 0.4, 1.0]
+center = [0.0, 0.0, 1.5]
+
+[ground_motion]
+kind = "constant"
+acceleration_g = 0.5
+
+[assessment]
+collapse_displacement = 0.05
+collapse_mass_fraction = 0.9
+stop_on_collapse = true
+)");
+  return deck;
+}
+
+TEST_F(VerdictTest, ACollapseSaysWhenHowAndWhatFell) {
+  EXPECT_EQ(run_binary(stack_deck()), exit_success) << err_;
+  ASSERT_EQ(out_lines_.size(), 3u) << err_;
+  // The mechanism under a constant acceleration: the acceleration it formed
+  // at is the load's, 0.5 g; without rocking back it is Mode II.
+  EXPECT_TRUE(starts_with(out_lines_[0], "collapsed (Mode II) at t = ")) << out_lines_[0];
+  EXPECT_TRUE(has(out_lines_[0], ": the mechanism formed at 0.5 g (t = ")) << out_lines_[0];
+  // Both stones went (the collapse waits for 90 % of the mass), each its
+  // group's only block; they started at heights 0.5 and 1.5 m.
+  EXPECT_EQ(out_lines_[1], "fell: 2 of 2 blocks, 100 % of the free mass, from z = 0.50-1.50 m: course0, course1");
+  EXPECT_TRUE(starts_with(out_lines_[2], "energy: balance error ")) << out_lines_[2];
+  EXPECT_TRUE(has(out_lines_[2], "; slip dissipated ")) << out_lines_[2];
+  EXPECT_TRUE(has(err_, "results in ")) << err_;
+  EXPECT_FALSE(has(err_, "profile")) << err_;
+}
+
+TEST_F(VerdictTest, AStoneThatStaysPutIsIntactAndNothingFell) {
+  EXPECT_EQ(run_binary(kDeck), exit_success) << err_;
+  ASSERT_EQ(out_lines_.size(), 3u) << err_;
+  EXPECT_TRUE(starts_with(out_lines_[0], "intact: largest displacement ")) << out_lines_[0];
+  EXPECT_TRUE(has(out_lines_[0], " µm (stone), ")) << out_lines_[0];
+  EXPECT_EQ(out_lines_[1], "fell: nothing (no block moved more than 100 mm)");
+  EXPECT_TRUE(starts_with(out_lines_[2], "energy: balance error ")) << out_lines_[2];
+  // The deck's check comes before the verdict, on stderr.
+  EXPECT_TRUE(has(err_, "check no_drift:stone")) << err_;
+}
+
+TEST_F(VerdictTest, VerboseAddsTheStepStatisticsAndTheProfile) {
+  EXPECT_EQ(run_binary(kDeck, "--verbose"), exit_success) << err_;
+  EXPECT_EQ(out_lines_.size(), 3u) << err_;
+  EXPECT_TRUE(has(err_, " steps of ")) << err_;
+  EXPECT_TRUE(has(err_, "polydem: profile ")) << err_;
+}
+
+TEST_F(VerdictTest, QuietPrintsNothing) {
+  EXPECT_EQ(run_binary(kDeck, "--quiet"), exit_success) << err_;
+  EXPECT_TRUE(out_lines_.empty());
+  EXPECT_TRUE(err_.empty()) << err_;
 }
 
 }  // namespace
