@@ -228,6 +228,12 @@ def main():
         print("| " + " | ".join(cells) + " |")
     if a.csv:
         with open(a.csv, "w", newline="") as f:
+            # The machine and the commit, as the benchmark programs' CSVs
+            # keep them (scripts/doc_tables.py reads them).
+            sys.path.insert(0, os.path.dirname(__file__))
+            import timings_csv
+            f.write(f"# machine: {timings_csv.machine()}, CPU: {timings_csv.cpu()}\n"
+                    f"# polydem: {timings_csv.commit()}\n# date: {time.strftime('%Y-%m-%d')}\n")
             w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
             w.writeheader()
             w.writerows(rows)

@@ -1,0 +1,425 @@
+#!/usr/bin/env python3
+"""The docs' generated tables: every block between
+
+    <!-- table:NAME -->
+    ...
+    <!-- /table -->
+
+in README.md and docs/*.md is written by this script, from the measured
+figures in benchmarks/results/*.csv and from the source tree, never by hand.
+
+    scripts/doc_tables.py                  rewrite the blocks
+    scripts/doc_tables.py --check          exit 1, with a diff, where a block
+                                           differs from what would be written
+                                           (ctest's doc_tables)
+    scripts/doc_tables.py --run-decks build/polydem
+                                           run the verification decks and the
+                                           main job, write checks.csv and
+                                           outcomes.csv, then rewrite
+
+The CSVs:
+  checks.csv     every [[check]] of examples/verification/*.toml: measured,
+                 expected, tolerance (deterministic: the same on any machine)
+  outcomes.csv   the main job's verdict and figures, and what the README's
+                 Python example prints (deterministic)
+  timings.csv    wall times: machine, cpu, commit, date, command, quantity,
+                 value, unit (benchmarks/spire_speed.py, benchmarks/build_time.sh
+                 and by hand from .ci/run's log)
+  error_vs_time.csv, throughput.csv   written by the benchmark programs
+The tables show the commit each figure was measured at; the machine and the
+date stay in the CSV.
+
+The `layout` table (docs/architecture.md) counts the source tree: C++ files
+and lines per top-level folder. --check accepts its counts within 10 % (the
+tree moves with every change; the folders must match exactly), and checks
+that every repository path architecture.md names in backquotes exists.
+"""
+import argparse
+import csv
+import datetime
+import difflib
+import glob
+import json
+import os
+import re
+import subprocess
+import sys
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
+RESULTS = os.path.join(ROOT, "benchmarks", "results")
+BLOCK = re.compile(r"(<!-- table:([a-z0-9_]+) -->\n)(.*?)(<!-- /table -->)", re.S)
+
+
+# --- reading the CSVs ------------------------------------------------------
+
+def read_csv(name):
+    """Rows of benchmarks/results/NAME as dicts; lines starting with # are
+    comments (the benchmark programs' header of machine and commit)."""
+    path = os.path.join(RESULTS, name)
+    with open(path, encoding="utf-8") as f:
+        lines = [line for line in f if not line.startswith("#")]
+    return list(csv.DictReader(lines))
+
+
+def csv_comment(name, key):
+    """The value of a `# key: value` comment line of a benchmark CSV."""
+    with open(os.path.join(RESULTS, name), encoding="utf-8") as f:
+        for line in f:
+            if line.startswith(f"# {key}:"):
+                return line.split(":", 1)[1].strip().split(",")[0].strip()
+    return "?"
+
+
+def markdown(header, rows):
+    out = ["| " + " | ".join(header) + " |", "|" + "|".join("---" for _ in header) + "|"]
+    out += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
+    return "\n".join(out) + "\n"
+
+
+def timing_rows(table):
+    return [r for r in read_csv("timings.csv") if r["table"] == table]
+
+
+def timings(table):
+    """quantity and value, and the command, commit and note: as columns
+    where they differ between rows, else once under the table."""
+    rows = timing_rows(table)
+    if not rows:
+        return "(not measured yet)\n"
+    header, varying, common = ["quantity", "value"], [], []
+    for key in ("command", "commit", "note"):
+        values = {r[key] for r in rows}
+        if len(values) > 1:
+            varying.append(key)
+        elif values != {""}:
+            common.append(key)
+    body = markdown(header + varying,
+                    [[r["quantity"], f'{r["value"]} {r["unit"]}'.strip()] +
+                     [f'`{r[k]}`' if k == "command" else r[k] for k in varying] for r in rows])
+    said = {"command": lambda v: f"`{v}`", "commit": lambda v: f"at {v}", "note": lambda v: v}
+    if common:
+        body += "\n" + "; ".join(said[k](rows[0][k]) for k in common) + ".\n"
+    return body
+
+
+# --- the tables --------------------------------------------------------------
+
+def table_checks():
+    rows = read_csv("checks.csv")
+    body = markdown(
+        ["deck", "check", "what is measured", "measured", "expected", "tolerance", "passed"],
+        [(f'`{r["deck"]}`', r["check"], r["quantity"], f'{r["measured"]} {r["unit"]}'.rstrip(" -"),
+          r["expected"], r["tolerance"], r["passed"]) for r in rows])
+    commits = sorted({r["commit"] for r in rows})
+    return body + f"\nFrom `scripts/doc_tables.py --run-decks build/polydem` at {', '.join(commits)}.\n"
+
+
+def table_checks_short():
+    """One line per verification deck: its first check that is not the
+    energy bound every deck carries."""
+    seen, rows = set(), []
+    for r in read_csv("checks.csv"):
+        if r["deck"] in seen or r["check"] == "energy_no_growth":
+            continue
+        seen.add(r["deck"])
+        rows.append((r["deck"][:-5], r["check"].split(":")[0], f'{r["measured"]} {r["unit"]}'.rstrip(" -"),
+                     r["expected"], r["tolerance"]))
+    return markdown(["deck", "check", "measured", "expected", "tolerance"], rows)
+
+
+def outcome(quantity):
+    for r in read_csv("outcomes.csv"):
+        if r["quantity"] == quantity:
+            return r
+    raise KeyError(quantity)
+
+
+def table_main_job_verdict():
+    lines = [outcome(f"verdict line {i}")["value"] for i in (1, 2, 3)]
+    return "```\n" + "\n".join(lines) + "\n```\n"
+
+
+def table_main_job():
+    rows = [r for r in read_csv("outcomes.csv") if not r["quantity"].startswith(("verdict", "python"))]
+    body = markdown(["quantity", "value"], [(r["quantity"], f'{r["value"]} {r["unit"]}'.strip()) for r in rows])
+    return body + f'\nFrom `{rows[0]["command"]}` at {rows[0]["commit"]}.\n'
+
+
+def without_leading_comments(path, fence):
+    with open(os.path.join(ROOT, path), encoding="utf-8") as f:
+        lines = f.read().splitlines()
+    while lines and (lines[0].startswith("#") or not lines[0].strip()):
+        lines.pop(0)
+    return f"```{fence}\n" + "\n".join(lines) + "\n```\n"
+
+
+def table_deck_example():
+    return without_leading_comments("examples/verification/rocking_onset.toml", "toml")
+
+
+def table_python_example():
+    return without_leading_comments("examples/python/ten_lines.py", "python")
+
+
+def table_python_example_output():
+    lines = [r["value"] for r in read_csv("outcomes.csv") if r["quantity"].startswith("python line")]
+    return "```\n" + "\n".join(lines) + "\n```\n"
+
+
+def table_error_vs_time():
+    rows = read_csv("error_vs_time.csv")
+    header = ["case", "check", "parameter", "value", "dt (s)", "steps", "wall (s)", "measured", "expected", "error"]
+    return (markdown(header, [[r[h] for h in header] for r in rows]) +
+            f'\nFrom `scripts/bench.sh error` at {csv_comment("error_vs_time.csv", "polydem")}, 1 thread.\n')
+
+
+def table_throughput():
+    rows = read_csv("throughput.csv")
+    header = ["scene", "blocks (with base)", "threads", "parallel threshold", "steps", "subcontacts/step",
+              "wall best (s)", "updates/s", "speed-up", "bitwise = 1 thread"]
+    return (markdown(header, [[r[h] for h in header] for r in rows]) +
+            f'\nFrom `scripts/bench.sh throughput` at {csv_comment("throughput.csv", "polydem")}, best of 5 runs.\n')
+
+
+def table_wall_scaling():
+    rows = read_csv("wall_scaling.csv")
+    body = markdown(
+        ["blocks", "leaves", "threads", "subcontacts", "µs per step", "ns per update", "peak memory (MiB)"],
+        [(f'{int(r["blocks"]):,}', r["leaves"], r["threads"], f'{int(r["subcontacts"]):,}',
+          f'{float(r["us_per_step"]):,.0f}', f'{float(r["ns_per_update"]):.1f}', f'{float(r["peak_rss_mib"]):,.0f}')
+         for r in rows])
+    return body + f'\nFrom `benchmarks/wall_scaling.py` at {csv_comment("wall_scaling.csv", "polydem")}, one run a case.\n'
+
+
+SOURCE_EXT = (".cpp", ".hpp", ".inc", ".h")
+NOT_SOURCE = {"tests", "benchmarks", "fuzz", "examples", "docs", "scripts"}
+
+
+def source_folders():
+    """{folder: (files, lines, largest file, its lines)} for every top-level
+    folder of C++ sources that is part of the product (python/ included)."""
+    out = {}
+    git = subprocess.run(["git", "ls-files"], cwd=ROOT, capture_output=True, text=True)
+    tracked = git.stdout.split() if git.returncode == 0 else [
+        os.path.relpath(os.path.join(d, f), ROOT) for d, _, files in os.walk(ROOT) for f in files]
+    for path in tracked:
+        parts = path.split("/")
+        if len(parts) < 2 or parts[0] in NOT_SOURCE or not path.endswith(SOURCE_EXT):
+            continue
+        full = os.path.join(ROOT, path)
+        if not os.path.exists(full):
+            continue
+        with open(full, encoding="utf-8", errors="replace") as f:
+            n = sum(1 for _ in f)
+        files, lines, big, big_n = out.get(parts[0], (0, 0, "", 0))
+        if n > big_n:
+            big, big_n = path, n
+        out[parts[0]] = (files + 1, lines + n, big, big_n)
+    return dict(sorted(out.items()))
+
+
+def table_layout():
+    rows = [(f"`{k}/`", f, f"{n:,}", f"`{big}` ({big_n:,})") for k, (f, n, big, big_n) in source_folders().items()]
+    total_f = sum(v[0] for v in source_folders().values())
+    total_n = sum(v[1] for v in source_folders().values())
+    rows.append(("all", total_f, f"{total_n:,}", ""))
+    return markdown(["folder", "C++ files", "lines", "largest file (lines)"], rows)
+
+
+TWO_COMMANDS = [  # (command, what, table, quantity)
+    ("`scripts/quickstart.sh`", "build the polydem program", "build",
+     "build for scripts/quickstart.sh (the polydem target)"),
+    ("", "run the main job", "spire_speed", "main job: wall time"),
+    ("`scripts/test.sh`", "build everything", "build", "build for scripts/test.sh (everything)"),
+    ("", "run the default test suite", "build", "default test suite (ctest -LE slow)"),
+]
+
+
+def table_two_commands():
+    """What the README's two commands take, packages installed."""
+    rows, commits = [], set()
+    for command, what, table, quantity in TWO_COMMANDS:
+        match = [r for r in timing_rows(table) if r["quantity"] == quantity]
+        if match:
+            rows.append((command, what, f'{match[0]["value"]} {match[0]["unit"]}'))
+            commits.add(match[0]["commit"])
+        else:
+            rows.append((command, what, "not measured"))
+    return (markdown(["command", "step", "wall time"], rows) +
+            f"\nPackages installed; measured at {', '.join(sorted(commits))} (benchmarks/results/timings.csv "
+            "has each figure's machine; docs/benchmarks.md).\n")
+
+
+TABLES = {
+    "two_commands": table_two_commands,
+    "checks": table_checks,
+    "checks_short": table_checks_short,
+    "main_job": table_main_job,
+    "main_job_verdict": table_main_job_verdict,
+    "error_vs_time": table_error_vs_time,
+    "throughput": table_throughput,
+    "layout": table_layout,
+    "wall_scaling": table_wall_scaling,
+    "deck_example": table_deck_example,
+    "python_example": table_python_example,
+    "python_example_output": table_python_example_output,
+}
+for _name in ("build", "spire_speed", "ci", "governor", "yade"):
+    TABLES[f"timings_{_name}"] = (lambda n: lambda: timings(n))(_name)
+
+
+# --- the checks --------------------------------------------------------------
+
+def layout_within_tolerance(written):
+    """The layout block as written against the tree: the same folders, each
+    count within 10 %."""
+    problems = []
+    now = source_folders()
+    seen = {}
+    for line in written.splitlines():
+        m = re.match(r"\| `([a-z_]+)/` \| (\d+) \| ([\d,]+) \|", line)
+        if m:
+            seen[m.group(1)] = (int(m.group(2)), int(m.group(3).replace(",", "")))
+    if set(seen) != set(now):
+        problems.append(f"folders {sorted(seen)} in the table, {sorted(now)} in the tree")
+    for k in set(seen) & set(now):
+        for what, a, b in (("files", seen[k][0], now[k][0]), ("lines", seen[k][1], now[k][1])):
+            if abs(a - b) > 0.1 * b:
+                problems.append(f"{k}/: {a} {what} in the table, {b} in the tree")
+    return problems
+
+
+def missing_paths(text):
+    """Repository paths in backquotes (`run/setup.hpp`, `contact/joint_law.{hpp,cpp}`)
+    that do not exist."""
+    top = {p.split("/")[0] for p in os.listdir(ROOT)}
+    out = []
+    for span in re.findall(r"`([^`\s]+)`", text):
+        path = span.split(" ")[0]
+        if "/" not in path or path.split("/")[0] not in top or "*" in path:
+            continue
+        m = re.match(r"(.*)\{(.*)\}(.*)", path)
+        variants = [m.group(1) + x + m.group(3) for x in m.group(2).split(",")] if m else [path]
+        out += [v for v in variants if not os.path.exists(os.path.join(ROOT, v))]
+    return sorted(set(out))
+
+
+def doc_files():
+    return [os.path.join(ROOT, "README.md")] + sorted(glob.glob(os.path.join(ROOT, "docs", "*.md")))
+
+
+def rewrite(text, path, check, problems):
+    def replace(m):
+        name, old = m.group(2), m.group(3)
+        if name not in TABLES:
+            problems.append(f"{os.path.relpath(path, ROOT)}: unknown table '{name}'")
+            return m.group(0)
+        new = "\n" + TABLES[name]() + "\n"
+        if check and old != new:
+            if name == "layout":
+                problems.extend(f"{os.path.relpath(path, ROOT)}: layout: {p}" for p in layout_within_tolerance(old))
+                return m.group(0)
+            diff = "".join(difflib.unified_diff(old.splitlines(True), new.splitlines(True),
+                                                f"{path} (written)", f"{path} (generated)"))
+            problems.append(f"{os.path.relpath(path, ROOT)}: table '{name}' differs:\n{diff}")
+        return m.group(1) + new + m.group(4)
+    return BLOCK.sub(replace, text)
+
+
+# --- running the decks -------------------------------------------------------
+
+def git_commit():
+    head = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT, capture_output=True, text=True)
+    dirty = subprocess.run(["git", "diff", "--quiet", "HEAD", "--", ".", ":!docs", ":!README.md",
+                            ":!benchmarks/results"], cwd=ROOT).returncode
+    return head.stdout.strip() + ("+" if dirty else "")
+
+
+def fmt(x):
+    return f"{x:.10g}" if isinstance(x, float) else str(x)
+
+
+def run_decks(polydem, out):
+    commit, date = git_commit(), datetime.date.today().isoformat()
+    checks = []
+    decks = sorted(glob.glob(os.path.join(ROOT, "examples", "verification", "*.toml")))
+    env = dict(os.environ, OMP_NUM_THREADS=os.environ.get("OMP_NUM_THREADS", "2"))
+    for deck in decks:
+        rel = os.path.relpath(deck, ROOT)
+        d = os.path.join(out, os.path.basename(deck)[:-5])
+        print(f"doc_tables: {rel}", file=sys.stderr)
+        subprocess.run([polydem, "run", deck, "--quiet", "--out", d], env=env, check=False)
+        with open(os.path.join(d, "summary.json"), encoding="utf-8") as f:
+            s = json.load(f)
+        for c in s["checks"]:
+            checks.append({"commit": commit, "date": date, "deck": os.path.basename(deck), "check": c["name"],
+                           "quantity": c["note"].replace("|", "/"), "measured": fmt(c["measured"]),
+                           "expected": fmt(c["expected"]), "tolerance": fmt(c["tolerance"]),
+                           "unit": c["unit"], "passed": "yes" if c["passed"] else "NO"})
+    with open(os.path.join(RESULTS, "checks.csv"), "w", newline="", encoding="utf-8") as f:
+        w = csv.DictWriter(f, list(checks[0]))
+        w.writeheader()
+        w.writerows(checks)
+
+    print("doc_tables: polydem run --default", file=sys.stderr)
+    d = os.path.join(out, "main")
+    p = subprocess.run([polydem, "run", "--default", "--out", d], env=env, capture_output=True, text=True)
+    verdict = p.stdout.splitlines()[-3:]
+    with open(os.path.join(d, "summary.json"), encoding="utf-8") as f:
+        s = json.load(f)
+    a = s["assessment"]
+    command = "polydem run --default"
+    rows = [(f"verdict line {i + 1}", line, "") for i, line in enumerate(verdict)] + [
+        ("status", s["status"], ""),
+        ("collapse mode", a["collapse_mode"], ""),
+        ("ground acceleration when the mechanism formed", f'{a["ground_acceleration_at_damage_g"]:.4f}', "g"),
+        ("time the mechanism formed", f'{a["damage_time_s"]:.3f}', "s"),
+        ("time of collapse", f'{a["collapse_time_s"]:.3f}', "s"),
+        ("blocks fallen (moved more than 0.1 m)", f'{a["dislodged"]["count"]} of {s["free_blocks"]}', ""),
+        ("their fraction of the free mass", f'{100 * a["dislodged"]["mass_fraction"]:.1f}', "%"),
+        ("energy balance error", f'{s["energy_balance_error"]:.2g}', ""),
+        ("steps", f'{s["steps"]:,}', ""),
+        ("time step", f'{s["time_step_s"]:.3g}', "s"),
+        ("simulated time", f'{s["end_time_s"]:.3g}', "s"),
+    ]
+    print("doc_tables: examples/python/ten_lines.py", file=sys.stderr)
+    python = "PYTHONPATH=build/python /usr/bin/python3 examples/python/ten_lines.py"
+    p = subprocess.run(["/usr/bin/python3", "examples/python/ten_lines.py"], cwd=ROOT, capture_output=True, text=True,
+                       env=dict(env, PYTHONPATH=os.path.join(os.path.dirname(polydem), "python")), check=True)
+    with open(os.path.join(RESULTS, "outcomes.csv"), "w", newline="", encoding="utf-8") as f:
+        w = csv.writer(f)
+        w.writerow(["commit", "date", "command", "quantity", "value", "unit"])
+        for q, v, u in rows:
+            w.writerow([commit, date, command, q, v, u])
+        for i, line in enumerate(p.stdout.splitlines()):
+            w.writerow([commit, date, python, f"python line {i + 1}", line, ""])
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--check", action="store_true", help="compare only; exit 1 where a block differs")
+    ap.add_argument("--run-decks", metavar="POLYDEM", help="run the decks with this binary first")
+    ap.add_argument("--out", default="/tmp/polydem_doc_tables", help="where --run-decks writes its runs")
+    args = ap.parse_args()
+    if args.run_decks:
+        run_decks(os.path.abspath(args.run_decks), args.out)
+    problems = []
+    for path in doc_files():
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+        new = rewrite(text, path, args.check, problems)
+        if os.path.basename(path) == "architecture.md":
+            problems += [f"docs/architecture.md names `{p}`, which does not exist" for p in missing_paths(text)]
+        if not args.check and new != text:
+            with open(path, "w", encoding="utf-8") as f:
+                f.write(new)
+            print(f"doc_tables: wrote {os.path.relpath(path, ROOT)}")
+    for p in problems:
+        print(p)
+    if problems:
+        print("doc_tables: run scripts/doc_tables.py to rewrite the generated tables", file=sys.stderr)
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
