@@ -4,8 +4,8 @@
 //
 // The runners are plain programs rather than Google Benchmark fixtures: each
 // "benchmark" is a whole scene whose interesting output is an error or a rate
-// (not a per-iteration time), and the tables they print go into
-// docs/benchmarks.md as they are.
+// (not a per-iteration time); the CSV they write is what docs/benchmarks.md
+// shows (scripts/doc_tables.py).
 #pragma once
 
 #include <string>

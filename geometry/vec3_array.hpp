@@ -4,7 +4,7 @@
 // (contact/joint_law_lanes.hpp); with the vectors' components apart, four
 // subcontacts' x components are one contiguous load, where an array of Vec3
 // interleaves them (x y z x y z ...) and filling the lanes costs more than
-// the arithmetic they save (docs/benchmarks.md, "AVX2 lanes").
+// the arithmetic they save.
 //
 // Reading gives a Vec3 by value. Writing goes through set(): operator[]
 // returns a const Vec3, so `a[i] = v` does not compile instead of writing

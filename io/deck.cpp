@@ -153,7 +153,7 @@ JointSpec default_joint(const JointDefaults& defaults) {
   return j;
 }
 
-// [joint] (one law for every joint, as every deck before groups) or
+// [joint] (one law for every joint) or
 // [[joint]] (an array: the entry without `between` is the default, at most
 // one; every other entry is the law between two groups, its missing keys the
 // default's). TOML cannot hold both forms, so a deck chooses one; every deck

@@ -58,7 +58,7 @@ def read_boundaries(directory):
                 trans.append((float(a), below, above))
             rows.append({"T": float(r[PERIOD]), "damage": num("damage_" + AMPLITUDE),
                          "collapse": num("collapse_" + AMPLITUDE), "mode": r["collapse_mode"],
-                         "stones": num("stones_lost_" + AMPLITUDE),  # NaN in tables from before issue 15
+                         "stones": num("stones_lost_" + AMPLITUDE),  # NaN in tables without the column
                          "transitions": trans, "runs": int(r["runs"])})
     rows.sort(key=lambda r: r["T"])
     return rows

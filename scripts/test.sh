@@ -5,7 +5,7 @@
 #   scripts/test.sh          default suite (< 10 min on 2 cores)
 #   scripts/test.sh slow     only the cases labelled slow
 # Prints the setup, build and test wall times at the end (.ci/run's log keeps
-# them; docs/robustness.md has the measured ones).
+# them; benchmarks/results/timings.csv has the measured ones).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 t0=$SECONDS

@@ -162,7 +162,7 @@ TEST(JointLaw, StoredShearTurnsWithAPairSpinningAboutTheNormal) {
 
 // The pair tilting as one (the normal turns with the reference block): the
 // stored shear turns with the plane and keeps its length; projecting it onto
-// the new plane alone (before) shortened it by 1 − cos θ a step.
+// the new plane alone would shorten it by 1 − cos θ a step.
 TEST(JointLaw, StoredShearTurnsWithTheNormalAndKeepsItsLength) {
   const JointLaw law = law_for_test();
   OneSubcontact c(kDelta);

@@ -6,8 +6,8 @@
 // impact dissipates nearly all of the 65 kJ it brings within a few
 // milliseconds, and the velocity changes by a large fraction in each step
 // (ξ·ω·dt ≈ 0.1 at the automatic step), which is where the damping work's
-// timing shows. Booked with the velocity half a step behind (as before), the
-// ledger over-counted the dissipation: balance error 9.9 % after the impact,
+// timing shows. Booked with the velocity half a step behind, the ledger
+// would over-count the dissipation: balance error 9.9 % after the impact,
 // 18.5 % at worst, halving with the step (first order). Booked with the
 // centred velocity: 0.06 % after the impact; 1.1 % at worst in its first
 // steps while the kinetic term was ½·m·v² of the centred velocity, which

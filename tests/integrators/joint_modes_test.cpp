@@ -115,9 +115,9 @@ TEST(JointModes, RigidMotionOfAFreeClusterStrainsNoJoint) {
 
 // The spire at its first detection (examples/spire/earthquake.toml): the
 // step's bound is the one the run computes, and both bounds lie above the
-// assembled system's highest frequency. The ratios are docs/benchmarks.md's
-// (measured 2026-11-24: exact 0.875 of the run's bound, split 0.923; the
-// joint bound, with Gershgorin ratios, 0.921).
+// assembled system's highest frequency (the exact one is 0.875 of the run's
+// bound, the split scheme's 0.923, the joint bound's, with Gershgorin
+// ratios, 0.921).
 TEST(JointModes, TheSpiresStepBoundsLieAboveItsHighestFrequency) {
   const SceneSpec spec = read_deck(std::string(POLYDEM_SOURCE_DIR) + "/examples/spire/earthquake.toml");
   Simulation sim = one_law_simulation(build_blocks(spec.blocks), spec.simulation, spec.joint, GroundMotion{}, 0.005, 1e-6);
@@ -142,8 +142,8 @@ TEST(JointModes, TheSpiresStepBoundsLieAboveItsHighestFrequency) {
 
 // The 8-drum column (examples/structures/column.toml): the plinth on the
 // fixed base sets the top mode, where the block bound's √2 is loosest and the
-// joint bound counts the base joint once: 1.023 of the exact frequency
-// (measured 2026-11-25), against 1.41 for the block bound.
+// joint bound counts the base joint once: 1.023 of the exact frequency,
+// against 1.41 for the block bound.
 TEST(JointModes, TheColumnsJointBoundIsCloseAboveItsHighestFrequency) {
   const SceneSpec spec = read_deck(std::string(POLYDEM_SOURCE_DIR) + "/examples/structures/column.toml");
   Simulation sim = one_law_simulation(build_blocks(spec.blocks), spec.simulation, spec.joint, GroundMotion{}, 0.005, 1e-6);

@@ -261,7 +261,7 @@ TEST(ThreadGovernor, SwitchingThreadsChangesNoBits) {
 }
 
 // The first probe's all-threads side can lose to the threads' erratic start
-// on a quiet machine (this VM: 1 run in 40 of the spire's). When it keeps
+// on a quiet machine (1 run in 40 of the spire's, measured). When it keeps
 // one thread, the next probe comes at the short interval, as after a
 // change, and takes the threads that are faster.
 TEST(ThreadGovernor, AFirstProbeKeepingOneThreadIsRetriedSoon) {

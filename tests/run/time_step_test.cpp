@@ -45,7 +45,7 @@ TEST(TimeStep, ARestingBlocksStepIsTheAllFacesBound) {
 // simulation.time_step_bound = "joint": the first detection's joints, each
 // shared between its blocks, lower the all-faces start as the default bound's
 // do, and are reported the same way; on the spire the step is 1.143 times the
-// default bound's (docs/benchmarks.md, measured 2026-11-25; ±0.005).
+// default bound's (docs/benchmarks.md; ±0.005).
 TEST(TimeStep, TheJointBoundSetsTheSpiresStepFromItsJoints) {
   const std::vector<std::string> base = {"simulation.end_time=0.001", "output.histories=[]", "output.walking=false"};
   auto with = [&](const std::string& bound) {
@@ -68,8 +68,8 @@ TEST(TimeStep, TheJointBoundSetsTheSpiresStepFromItsJoints) {
 // The all-faces start caps the joint bound as it caps the default one: a
 // block landing on a face after flight or rocking on an edge is integrated
 // with the step of its face in full contact (without the cap, the energy
-// of the undamped rocking block, energy_conservation.toml, drifted 0.93 %
-// against its 0.5 % tolerance, measured 2026-11-25). The four-drum column's
+// of the undamped rocking block, energy_conservation.toml, drifts 0.93 %
+// against its 0.5 % tolerance). The four-drum column's
 // first joints allow more than the start; it keeps the start's step.
 TEST(TimeStep, TheJointBoundKeepsTheAllFacesStart) {
   const std::string path = std::string(POLYDEM_SOURCE_DIR) + "/examples/verification/column_rocking.toml";

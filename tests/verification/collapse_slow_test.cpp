@@ -6,11 +6,10 @@
 // come to rest. The run must reach its end time (8 s) without a guard stop,
 // the energy ledger must close within 2.5 % of the energy in play, no
 // detection may make normal strain by re-sampling a joint (hold_normal_strain;
-// it made 8.4 J by 2.7 s before), no joint may overlap the blocks by more
+// without the hold it makes 8.4 J by 2.7 s), no joint may overlap the blocks by more
 // than 5 % of the smaller block's size (17 mm), and no block may end below
 // the base's top by more than 1 % of its size. Measured (1 thread, two other
-// runs on the 2 cores): 349 179 steps in 12.8 s, balance error 1.23 % (2.9 %
-// before the hold, 4.8 % before issue 15's history and ledger changes),
+// runs on the 2 cores): 349 179 steps in 12.8 s, balance error 1.23 %,
 // re-sampling added 2e-8 J (round-off), deepest overlap 2.11 mm (0.66 %, the
 // blocks' geometric overlap, crush included). At 8 s 48 of the 50 stones are
 // at rest; two of the top ones, which reach the base 12 m out at 6-16 m/s at

@@ -7,8 +7,8 @@
 // (analytical/refined_lambda: rigid mechanisms over plane and stepped cracks,
 // no sliding). The bracket is wide (0.8 to 1.3 times) because the limit
 // analysis searches only plane and stepped cracks and ignores sliding and
-// joint elasticity (measured on the full spire: 0.171 limit analysis, 0.177 to
-// 0.198 DEM bisection over directions, 2026-11-24).
+// joint elasticity (on the full spire: 0.171 limit analysis, 0.177 to 0.198
+// DEM bisection over directions, docs/spire.md).
 #include "analytical/refined_lambda.hpp"
 #include "run/run_scene.hpp"
 #include "io/deck.hpp"
