@@ -167,8 +167,8 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
   // with the area of a corner of a face contact, on the common perpendicular
   // of the two edges that cross. Its depth and normal come from the
   // separating-axis test over the edges' cross products (exact, with the
-  // face test); MPR's estimate, used before and still where no edge axis
-  // separates better than the faces, can be far off (best_edge_axis). The
+  // face test); MPR's estimate, used where no edge axis separates better
+  // than the faces, can be far off (best_edge_axis). The
   // subcontact acts at the crossing on the incident block, its plane through
   // the crossing on the reference block.
   if (-best > mpr_overlap + 0.25 * margin + 1e-12) {

@@ -1,6 +1,6 @@
 #include "contact/joint_law.hpp"
 
-#include "contact/joint_law_lanes.hpp"
+#include "contact/joint_law_kernels.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -178,9 +178,9 @@ void compute_pair_forces(const JointLaws& laws, const BlockState& st, const std:
     const std::size_t s0 = static_cast<std::size_t>(cp.first);
     lanes::PairFrame f;
     pair_frame(st, r, c, sub.ref_normal_local[s0], dt, f);
-    const lanes::LawConstants k{law.kn, law.ks, law.tan_phi, law.cohesion, law.tensile_strength,
-                                law.beta * split.explicit_part, dt};
-    kernel(f, k, arrays, s0, static_cast<std::size_t>(cp.count));
+    JointLaw applied = law;
+    applied.beta = law.beta * split.explicit_part;
+    kernel(f, applied, dt, arrays, s0, static_cast<std::size_t>(cp.count));
   }
 }
 

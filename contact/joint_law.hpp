@@ -35,14 +35,13 @@
 // relative velocity: half booked when the force is computed (with the
 // velocity it came from), half at the next step (with the velocity that
 // step reads, t + dt/2), the force kept in Subcontacts::damping_force in
-// between. Booking it all with the lagged velocity, as before, is first
-// order in ξ·ω·dt: across a stiff overdamped impact, where the velocity
-// changes by a large fraction in one step, it over-counted the dissipation
-// (balance errors of 11 % on the extreme cases' 1e14 Pa/m impact, 18.5 % on
-// a ξ = 2 impact; docs/contact.md).
+// between. Booking it all with the lagged velocity would be first order in
+// ξ·ω·dt: across a stiff overdamped impact, where the velocity changes by a
+// large fraction in one step, it over-counts the dissipation by percents
+// (docs/contact.md).
 #pragma once
 
-#include "contact/joint_law_lanes.hpp"
+#include "contact/joint_law_kernels.hpp"
 #include "contact/subcontacts.hpp"
 #include "core/code_path.hpp"
 #include "core/blocks.hpp"
@@ -53,15 +52,6 @@
 
 namespace polydem {
 
-struct JointLaw {
-  double kn = 0, ks = 0;  // Pa/m
-  double tan_phi = 0;
-  double cohesion = 0;          // Pa
-  double tensile_strength = 0;  // Pa
-  double beta = 0;              // s
-  // New joints of this law start bonded (cohesion or tension).
-  bool bonds() const { return cohesion > 0 || tensile_strength > 0; }
-};
 
 JointLaw make_joint_law(const JointSpec& spec);
 
@@ -105,8 +95,7 @@ JointLaw stiffest_law(const JointLaws& laws);
 // applies the part `explicit_part` = 1 − θ of every dashpot, and writes each
 // subcontact's DashpotState into `dashpot` (when not null) for the pass that
 // applies the rest after the velocity update (apply_dashpot_rest). The
-// default is the explicit scheme: the whole dashpot, nothing written, the
-// same bits as before the scheme existed.
+// default is the explicit scheme: the whole dashpot, nothing written.
 using lanes::DashpotState;
 using lanes::kNormalDashpot;
 using lanes::kShearDashpot;
@@ -119,7 +108,7 @@ struct SplitPart {
 // slots (sub.force, point, overlap, normal_force, ...), each pair under its
 // own law (JointLaws::between). The pair's common plane and the two blocks'
 // motion are loaded once. `path` (core/code_path.hpp): the kernel's lane
-// type (joint_law_lanes.hpp); the same bits on every one.
+// type (joint_law_kernels.hpp); the same bits on every one.
 void compute_pair_forces(const JointLaws& laws, const BlockState& state, const std::vector<ContactPair>& pairs,
                          Subcontacts& sub, double dt, std::size_t pair_begin, std::size_t pair_end,
                          CodePath path = CodePath::automatic, const SplitPart& split = {});

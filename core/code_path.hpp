@@ -1,6 +1,6 @@
 // The step's kernels and the lane type they are written over.
 //
-// The hot loops of the step (the joint law, contact/joint_law_lanes.hpp; the
+// The hot loops of the step (the joint law, contact/joint_law_kernels.hpp; the
 // gather, contact/gather_lanes.hpp; the blocks' update,
 // integrators/block_update_lanes.hpp) work four subcontacts or four blocks
 // at a time. Each is written once, in a .inc file, over a lane type: `V`,

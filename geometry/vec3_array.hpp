@@ -1,7 +1,7 @@
 // Three-vectors stored as three arrays, x, y and z: a structure of arrays.
 //
 // The joint law runs over a pair's subcontacts four at a time
-// (contact/joint_law_lanes.hpp); with the vectors' components apart, four
+// (contact/joint_law_kernels.hpp); with the vectors' components apart, four
 // subcontacts' x components are one contiguous load, where an array of Vec3
 // interleaves them (x y z x y z ...) and filling the lanes costs more than
 // the arithmetic they save.

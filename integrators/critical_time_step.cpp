@@ -138,9 +138,8 @@ namespace {
 // joints with a fixed or kinematic neighbour keep weight 1. Any positive
 // ratio gives a proved bound; Gershgorin's is cheap and gives within 1 % of
 // the bound with the ratio of the blocks' exact ω_b² (joint_modes.hpp's
-// split_bound; measured 2026-11-25: the spire 0.997 of it, the 52-stone
-// wall 1.001, the 8-drum column 1.008, the arch 1.004; JointModes tests the
-// spire and the column).
+// split_bound: the spire 0.997 of it, the 52-stone wall 1.001, the 8-drum
+// column 1.008, the arch 1.004; JointModes tests the spire and the column).
 template <class StiffnessOf>
 CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const StiffnessOf& stiffness_of,
                            double beta, double safety_factor, std::vector<double>* per_block = nullptr,

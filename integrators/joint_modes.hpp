@@ -24,7 +24,7 @@
 // the blocks' Gershgorin bounds instead when the deck asks for it
 // (simulation.time_step_bound = "joint", critical_time_step.hpp); this one,
 // with the exact ratios, is the independent reference its tests compare
-// with (docs/benchmarks.md "What sets the spire's step").
+// with (docs/benchmarks.md, "The spire").
 //
 // Dense: for verification and the benchmark polydem_step_bound, not for runs
 // (N ≤ max_joint_mode_blocks: a 2412-degree eigenproblem takes seconds).

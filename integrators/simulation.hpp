@@ -40,7 +40,7 @@ struct StepProfile {
   int threads_given = 1;     // threads OpenMP gave the run (Simulation::thread_governor: what it did with them)
 };
 
-struct StepLoads;
+struct StepLoads;  // block_update.hpp
 struct BlockUpdate;
 
 class Simulation {
@@ -59,8 +59,7 @@ class Simulation {
   // Times a detection lowered the step, and the estimate that last did.
   int time_step_reductions() const { return control_.reductions; }
   const CriticalStep& time_step_source() const { return control_.source; }
-  // The split damping scheme's θ for the current step (0: explicit).
-  double split_fraction() const { return rest_.fraction; }
+  double split_fraction() const { return rest_.fraction; }  // the split scheme's θ (0: explicit)
   // Subcontact s's whole joint force on the incident block at the last step.
   Vec3 subcontact_force(std::size_t s) const {
     return rest_.fraction > 0 ? Vec3(contacts_.sub.force[s] + rest_.force_sub[s]) : contacts_.sub.force[s];

@@ -10,7 +10,7 @@
 // (ξ = 0.83) the dashpots halve the springs' step.
 //
 // The split scheme computes the dashpot in two parts. The joint law applies
-// (1 − θ) of it from the velocities at t − dt/2, as before; after the
+// (1 − θ) of it from the velocities at t − dt/2, as the explicit one; after the
 // velocity update, before the blocks move, a second pass over the
 // subcontacts applies the remaining θ from the updated velocities (each
 // block's velocity after the step's forces, `v_t`), and the blocks move with
@@ -26,7 +26,7 @@
 // To first order in dt the force is the same dashpot, c·v at the step's
 // time, so the scheme converges to the same model as the explicit one; the
 // second pass costs a relative velocity and a gather per subcontact, about
-// two fifths of a step (docs/benchmarks.md, "Joint damping in two parts").
+// two fifths of a step (docs/benchmarks.md, "The spire").
 //
 // What is proved here. A step dt is stable for every mode of frequency
 // ω ≤ ω_max whose damping is at most the proportional one at its

@@ -28,8 +28,8 @@
 // of 60-120 µs on the 52-stone wall, whose steps take 9 µs on one thread),
 // and a run must not pay a whole probe of them. The side's first step and
 // first `warm_up_seconds` are not samples: starting the threads took up to
-// 14 ms even on a quiet machine (this VM: a second step of 8 ms, or a
-// hundred steps at 3 times the speed to come, in 3 of 5 runs measured),
+// 14 ms even on a quiet machine (a second step of 8 ms, or a hundred steps
+// at 3 times the speed to come, in 3 of 5 runs measured),
 // and the steps after run ~1.5 times slower than the rest while they warm
 // up, so the ratio is 2, not 1. The first probe
 // starts at once (`first_probe`); the wait to the next is counted both in
@@ -42,7 +42,7 @@
 // short again (1 s), and after the run's first probe too, whichever it
 // keeps (its all-threads side meets the erratic start above and, kept to
 // one thread by it, a whole short run stayed there: 1 in 40 of the
-// spire's 0.3 s runs on this VM), so a competitor that comes or goes is noticed within
+// spire's 0.3 s runs), so a competitor that comes or goes is noticed within
 // seconds to half a minute while a quiet run probes a few times an hour.
 //
 // Between probes it watches the steps on all threads for stalls, since a

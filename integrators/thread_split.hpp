@@ -4,8 +4,7 @@
 // just computed. The pairs are in block order (ContactPair::a, the
 // detection's candidate order), so thread t's blocks start at the first
 // block of its pairs; only the joints across a split then cross between
-// the cores (measured on this project's 2-core Xeon: 60-88 ns a cache line
-// one way, docs/benchmarks.md). That start is kept within n/(8·nt) blocks
+// the cores (a cache line takes tens of nanoseconds one way). That start is kept within n/(8·nt) blocks
 // of the even split, so that a scene whose pairs crowd onto a few blocks
 // (a row of stones on one ground block, the ground first) still shares its
 // blocks out; clamping a non-decreasing sequence into non-decreasing

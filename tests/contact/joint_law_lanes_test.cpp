@@ -1,5 +1,5 @@
 // The joint law's kernel in its lane types, AVX2 (and AVX-512VL) and plain doubles
-// (joint_law_lanes.hpp), give the same bits: every array the law writes is
+// (joint_law_kernels.hpp), give the same bits: every array the law writes is
 // compared bit for bit, on random pairs that reach every branch of the law
 // (open, closed, bonded in tension, the bond lost — in tension, on opening
 // or by slip — slipping, sticking, zero area, no shear stiffness, no

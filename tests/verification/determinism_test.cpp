@@ -71,7 +71,7 @@ TEST(Determinism, OneAndTwoThreadsGiveTheSameBits) {
 }
 
 // The joint law's kernel in AVX2 lanes and in plain doubles
-// (contact/joint_law_lanes.hpp) give the same bits through a whole run: the wall under the pulse, on two
+// (contact/joint_law_kernels.hpp) give the same bits through a whole run: the wall under the pulse, on two
 // threads, every step's law on one path or the other.
 TEST(Determinism, TheJointLawsTwoCodePathsGiveTheSameBits) {
   if (!lanes_available()) GTEST_SKIP() << "no AVX2 here: only the portable path runs";

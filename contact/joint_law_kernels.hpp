@@ -16,6 +16,22 @@
 #include <cstddef>
 #include <cstdint>
 
+namespace polydem {
+
+// A joint's law: its stiffnesses, strength and dashpots (contact/joint_law.hpp
+// make_joint_law makes it from a deck's [joint]).
+struct JointLaw {
+  double kn = 0, ks = 0;  // Pa/m
+  double tan_phi = 0;
+  double cohesion = 0;          // Pa
+  double tensile_strength = 0;  // Pa
+  double beta = 0;              // s
+  // New joints of this law start bonded (cohesion or tension).
+  bool bonds() const { return cohesion > 0 || tensile_strength > 0; }
+};
+
+}  // namespace polydem
+
 namespace polydem::lanes {
 
 // Which dashpots of a subcontact act (the split damping scheme's state per
@@ -36,9 +52,6 @@ struct PairFrame {
   double spin[9];    // the joint's rotation over the last step (joint_law.hpp)
 };
 
-struct LawConstants {
-  double kn, ks, tan_phi, cohesion, tensile_strength, beta, dt;
-};
 
 // The subcontact arrays the law reads and writes (Subcontacts' storage).
 struct SubcontactArrays {
@@ -63,14 +76,16 @@ struct SubcontactArrays {
 // are read as nonzero and written as 0 or 1 (the only values the rest of the
 // code writes). The AVX2 and AVX-512VL kernels only where the CPU has them
 // (lanes_available(), wide_lanes_available()).
-void pair_law_portable(const PairFrame& f, const LawConstants& law, const SubcontactArrays& a, std::size_t s0,
+// `law.beta`: the part of the dashpots applied here (the split scheme's
+// 1 − θ of them).
+void pair_law_portable(const PairFrame& f, const JointLaw& law, double dt, const SubcontactArrays& a, std::size_t s0,
                        std::size_t count);
-void pair_law_avx2(const PairFrame& f, const LawConstants& law, const SubcontactArrays& a, std::size_t s0,
+void pair_law_avx2(const PairFrame& f, const JointLaw& law, double dt, const SubcontactArrays& a, std::size_t s0,
                    std::size_t count);
-void pair_law_avx512(const PairFrame& f, const LawConstants& law, const SubcontactArrays& a, std::size_t s0,
+void pair_law_avx512(const PairFrame& f, const JointLaw& law, double dt, const SubcontactArrays& a, std::size_t s0,
                      std::size_t count);
 
-using PairLawKernel = void (*)(const PairFrame&, const LawConstants&, const SubcontactArrays&, std::size_t,
+using PairLawKernel = void (*)(const PairFrame&, const JointLaw&, double, const SubcontactArrays&, std::size_t,
                                std::size_t);
 
 // The split damping scheme's second pass for one pair (joint_law.hpp
