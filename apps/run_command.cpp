@@ -92,7 +92,7 @@ int run_command(const RunOptions& o) {
       write_file_atomic(out_dir + "/" + kCheckpointFile, encode_checkpoint(fingerprint, state));
     };
   }
-  if (const char* kill = std::getenv("POLYDEM_KILL_AT_STEP")) control.kill_at_step = std::atol(kill);
+  control.after_step = o.after_step;
   if (!o.quiet) {
     const bool tty = isatty(STDERR_FILENO);
     control.progress_every = 2000;

@@ -1,10 +1,13 @@
 // `polydem run`: deck in, summary.json and results.h5 out.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
 namespace polydem {
+
+class Simulation;
 
 // Exit codes, documented in the README.
 enum ExitCode : int {
@@ -26,6 +29,8 @@ struct RunOptions {
   // output.checkpoint_interval) and write the results into DIR. The deck and
   // overrides must be those of the original run.
   std::string restart_dir;
+  // Called after every step (run/run_scene.hpp RunControl::after_step).
+  std::function<void(const Simulation&)> after_step;
 };
 
 int run_command(const RunOptions& options);

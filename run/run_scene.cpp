@@ -4,7 +4,6 @@
 #include "run/scoped_threads.hpp"
 #include "run/setup.hpp"
 
-#include <csignal>
 
 #include <algorithm>
 #include <limits>
@@ -313,7 +312,7 @@ long SceneRun::advance(long max_steps, double until) {
         loop.checkpoints.skip_past(sim.time());
         write_checkpoint();
       }
-      if (sim.steps() == control_.kill_at_step) std::raise(SIGKILL);
+      if (control_.after_step) control_.after_step(sim);
       loop_->output_seconds += seconds_since(t_output);
     }
   } catch (const InstabilityError& e) {

@@ -130,9 +130,10 @@ struct RunControl {
   // starting at t = 0; the scene must come from the same deck. A state that
   // does not fit throws StateFormatError.
   const std::string* restart = nullptr;
-  // Test hook (POLYDEM_KILL_AT_STEP): the process kills itself with SIGKILL
-  // after this step, as a machine that dies would. -1: never.
-  long kill_at_step = -1;
+  // Called after every step, once that step's records, snapshot and
+  // checkpoint are written; may be empty. (The restart test installs one
+  // that kills the process, as a machine that dies would.)
+  std::function<void(const Simulation&)> after_step;
   // The caller's own ground acceleration, added to the deck's as a body
   // force (core/ground_motion.hpp ExtraGroundAcceleration); empty: none.
   // Not part of a checkpoint: a restart must be given the same one.

@@ -6,9 +6,9 @@
 // The scene slides and rocks under a one-sine pulse: a wide block slides on
 // the fixed base (pulse 0.7 g, friction 30°) and a slender pillar rocks on
 // it, so shear-force history, opening joints and re-detections all cross the
-// checkpoint. The killed run is the built binary (fork + exec) with the
-// hidden POLYDEM_KILL_AT_STEP, which raises SIGKILL after that step, as a
-// machine that dies would; the restart goes through run_scene() in-process
+// checkpoint. The killed run is tests/apps/killed_run.cpp (fork + exec): the
+// run command with an after-step callback that raises SIGKILL at a chosen
+// step, as a machine that dies would; the restart goes through run_scene() in-process
 // (to compare the final state bit for bit) and through the binary (to
 // compare the files).
 #include "io/checkpoint.hpp"
@@ -105,20 +105,18 @@ bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
-// Runs the built binary with `args`; `kill_at` > 0 sets POLYDEM_KILL_AT_STEP.
+// Runs `binary` (the built polydem, or the killed run) with `args`.
 // Returns the wait status.
-int run_binary(const std::vector<std::string>& args, long kill_at = -1) {
+int run_binary(const std::vector<std::string>& args, const char* binary = POLYDEM_BINARY) {
   const pid_t pid = fork();
   if (pid == 0) {
-    if (kill_at > 0) setenv("POLYDEM_KILL_AT_STEP", std::to_string(kill_at).c_str(), 1);
-    else unsetenv("POLYDEM_KILL_AT_STEP");
     std::vector<char*> argv;
-    std::string name = "polydem";
+    std::string name = binary;
     argv.push_back(name.data());
     std::vector<std::string> copy = args;
     for (std::string& a : copy) argv.push_back(a.data());
     argv.push_back(nullptr);
-    execv(POLYDEM_BINARY, argv.data());
+    execv(binary, argv.data());
     _exit(127);
   }
   int status = 0;
@@ -165,6 +163,13 @@ class Restart : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
+  // The run of the deck with kOverrides into `out`, killed after step
+  // `kill_at` (tests/apps/killed_run.cpp); returns its wait status.
+  int run_killed(long kill_at, const fs::path& out) const {
+    std::vector<std::string> args = {std::to_string(kill_at), deck_.string(), out.string(), "2"};
+    args.insert(args.end(), kOverrides.begin(), kOverrides.end());
+    return run_binary(args, POLYDEM_KILLED_RUN);
+  }
   std::uint64_t fingerprint() const { return deck_fingerprint(kDeck, kOverrides, "", POLYDEM_VERSION); }
 
   // run_command in-process with stderr captured.
@@ -241,9 +246,7 @@ TEST_F(Restart, KilledRunContinuesBitwiseIdentical) {
     SCOPED_TRACE("killed at step " + std::to_string(kill_at) + " of " + std::to_string(ref.steps) + " (seed " +
                  std::to_string(seed) + ")");
     const fs::path out = dir_ / ("killed_" + std::to_string(kill_at));
-    std::vector<std::string> args = run_args(deck_, kOverrides);
-    args.insert(args.end(), {"--out", out.string()});
-    const int status = run_binary(args, kill_at);
+    const int status = run_killed(kill_at, out);
     ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << "status " << status;
     EXPECT_FALSE(fs::exists(out / "summary.json"));
     EXPECT_FALSE(fs::exists(out / "results.h5"));
@@ -268,9 +271,7 @@ TEST_F(Restart, BinaryRestartWritesTheSameResults) {
   ASSERT_TRUE(WIFEXITED(st_whole)) << st_whole;
   ASSERT_TRUE(fs::exists(whole / kCheckpointFile));
 
-  std::vector<std::string> b = run_args(deck_, kOverrides);
-  b.insert(b.end(), {"--out", killed.string()});
-  ASSERT_TRUE(WIFSIGNALED(run_binary(b, 2500)));
+  ASSERT_TRUE(WIFSIGNALED(run_killed(2500, killed)));
 
   std::vector<std::string> c = run_args(deck_, kOverrides, "1");  // another thread count: same bits
   c.insert(c.end(), {"--restart", killed.string()});
@@ -291,9 +292,7 @@ TEST_F(Restart, BinaryRestartWritesTheSameResults) {
 
 TEST_F(Restart, RefusesAnotherDeckOrOverrides) {
   const fs::path out = dir_ / "run";
-  std::vector<std::string> a = run_args(deck_, kOverrides);
-  a.insert(a.end(), {"--out", out.string()});
-  ASSERT_TRUE(WIFSIGNALED(run_binary(a, 2000)));
+  ASSERT_TRUE(WIFSIGNALED(run_killed(2000, out)));
   ASSERT_TRUE(fs::exists(out / kCheckpointFile));
 
   RunOptions o;
@@ -318,9 +317,7 @@ TEST_F(Restart, RefusesAnotherDeckOrOverrides) {
 
 TEST_F(Restart, RefusesDamagedCheckpoints) {
   const fs::path out = dir_ / "run";
-  std::vector<std::string> a = run_args(deck_, kOverrides);
-  a.insert(a.end(), {"--out", out.string()});
-  ASSERT_TRUE(WIFSIGNALED(run_binary(a, 2000)));
+  ASSERT_TRUE(WIFSIGNALED(run_killed(2000, out)));
   const fs::path file = out / kCheckpointFile;
   const std::string good = read_text(file);
   ASSERT_GT(good.size(), 1000u);
