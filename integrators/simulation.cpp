@@ -113,7 +113,7 @@ bool Simulation::large_enough_for_threads() const {
 void Simulation::step() {
   const Clock::time_point t0 = Clock::now();
   const bool big = large_enough_for_threads();
-  const int threads = threads_for_this_step(threads_, big, clock_.steps);
+  const int threads = threads_for_this_step(threads_, big);
   detector_.set_threads(threads);
   double patch = 0;  // 1. detection, where the half-margin test asks for it
   if (!detection_known_unneeded(threads_, clock_.dt) && detector_.needs_detection(blocks_, clock_.dt))
@@ -146,7 +146,7 @@ void Simulation::record_profile(double detection, double patch, double law, doub
   profile_.joint_law += law;
   profile_.gather_update += rest - law;
   ++profile_.steps;
-  if (big && large_enough_for_threads()) record_step(threads_.governor, rest, clock_.steps);
+  if (big && large_enough_for_threads()) record_step(threads_.governor, rest);
 }
 
 void Simulation::finish_step() {
@@ -227,8 +227,6 @@ void Simulation::set_thread_governor(ThreadGovernor settings) {
   settings.most = g.most;
   settings.now = g.now;
   settings.probing = 0;
-  settings.next_probe = settings.first_probe;
-  settings.interval = settings.shortest_interval;
   g = settings;
 }
 

@@ -18,8 +18,8 @@ bool large_enough_for_threads(const StepThreads& t, std::size_t subcontacts, std
   return subcontacts >= t.parallel_threshold || 16 * free_blocks >= t.parallel_threshold;
 }
 
-int threads_for_this_step(StepThreads& t, bool big, long step) {
-  const int threads = big ? threads_for_step(t.governor, step) : 1;
+int threads_for_this_step(StepThreads& t, bool big) {
+  const int threads = big ? threads_for_step(t.governor) : 1;
   // Inside a caller's parallel region the pause does nothing.
   if (threads == 1 && t.last_threads > 1) omp_pause_resource_all(omp_pause_soft);
   t.last_threads = threads;

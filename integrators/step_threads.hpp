@@ -42,11 +42,11 @@ StepThreads make_step_threads(bool adaptive);
 // Whether a scene this size runs its step on more than one thread.
 bool large_enough_for_threads(const StepThreads& t, std::size_t subcontacts, std::size_t free_blocks);
 
-// Threads for step number `step` (`big`: the scene is large enough). Going
+// Threads for the step about to run (`big`: the scene is large enough). Going
 // down from all threads to one releases the idle threads first: with
 // libgomp's default wait policy they spin for milliseconds after a region,
 // taking the core from a competitor and through it from this thread.
-int threads_for_this_step(StepThreads& t, bool big, long step);
+int threads_for_this_step(StepThreads& t, bool big);
 
 // True when the last step settled that no detection is needed before a
 // step of length `dt`; either way the settlement is used up.

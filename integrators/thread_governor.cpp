@@ -8,8 +8,6 @@ ThreadGovernor make_thread_governor(int most, bool enabled) {
   ThreadGovernor g;
   g.most = enabled && most > 1 ? most : 1;
   g.now = g.most > 1 ? 1 : std::max(most, 1);  // governed: one thread until a probe shows all are faster
-  g.next_probe = g.first_probe;
-  g.interval = g.shortest_interval;
   return g;
 }
 
@@ -36,7 +34,7 @@ bool stalls(ThreadGovernor& g, double seconds) {
   if (g.window_steps == 0 || seconds < g.window_fastest) g.window_fastest = seconds;
   ++g.window_steps;
   g.window_seconds += seconds;
-  if (g.window_seconds < g.watch_seconds || g.window_steps < g.watch_steps_least) return false;
+  if (g.window_seconds < g.watch_seconds || g.window_steps < 2) return false;
   const bool stalled = window_stalled(g.window_steps, g.window_seconds, g.window_fastest, g.stall_ratio);
   const int in_a_row = stalled ? g.stalled_windows + 1 : 0;
   restart_watch(g);
@@ -44,14 +42,12 @@ bool stalls(ThreadGovernor& g, double seconds) {
   return in_a_row >= g.stalled_windows_to_drop;
 }
 
-void wait_short(ThreadGovernor& g, long step) {
-  g.interval = g.shortest_interval;
+void wait_short(ThreadGovernor& g) {
   g.wait = g.shortest_wait;
-  g.next_probe = step + g.interval;
   g.waited = 0;
 }
 
-void end_probe(ThreadGovernor& g, int choice, long step) {
+void end_probe(ThreadGovernor& g, int choice) {
   ++g.probes;
   // The run's first probe decides, it does not confirm: its all-threads
   // side meets the threads' erratic start, which now and then loses it on
@@ -60,11 +56,9 @@ void end_probe(ThreadGovernor& g, int choice, long step) {
   // after a change, not twice as late.
   if (choice != g.now) ++g.switches;
   if (choice != g.now || g.probes == 1) {
-    wait_short(g, step);
+    wait_short(g);
   } else {
-    g.interval = std::min(2 * g.interval, g.longest_interval);
     g.wait = std::min(2 * std::max(g.wait, g.shortest_wait), g.longest_wait);
-    g.next_probe = step + g.interval;
     g.waited = 0;
   }
   g.now = choice;
@@ -74,13 +68,9 @@ void end_probe(ThreadGovernor& g, int choice, long step) {
 
 }  // namespace
 
-int threads_for_step(ThreadGovernor& g, long step) {
+int threads_for_step(ThreadGovernor& g) {
   if (g.most <= 1) return g.now;
-  // Due when both waits have passed, or twice the wall-time wait: long
-  // steps (a 10^5-block wall's ~25 ms) must not wait hours for 16,384 of
-  // them; short steps must not probe every tenth of a second.
-  const bool due = g.waited >= g.wait && (step >= g.next_probe || (g.wait > 0 && g.waited >= 2 * g.wait));
-  if (g.probing == 0 && due) {
+  if (g.probing == 0 && g.waited >= g.wait) {
     g.probing = kProbingOne;
     g.many_steps = g.one_steps = 0;
     g.many_seconds = g.one_seconds = 0;
@@ -90,7 +80,7 @@ int threads_for_step(ThreadGovernor& g, long step) {
   return threads;
 }
 
-void record_step(ThreadGovernor& g, double seconds, long step) {
+void record_step(ThreadGovernor& g, double seconds) {
   if (g.most <= 1) return;
   if (g.probing == kProbingAll && (g.warmed < g.warm_up_seconds || g.warm_steps == 0)) {
     // Starting the threads: not samples, for the probe nor for the watch.
@@ -103,11 +93,11 @@ void record_step(ThreadGovernor& g, double seconds, long step) {
   if (on_all && stalls(g, seconds)) {
     ++g.stall_drops;
     if (g.probing == kProbingAll) {  // the probe's all-threads side has lost
-      end_probe(g, 1, step);
+      end_probe(g, 1);
     } else {  // drop now; the next probe decides whether to come back
       ++g.switches;
       g.now = 1;
-      wait_short(g, step);
+      wait_short(g);
       restart_watch(g);
     }
     return;
@@ -116,7 +106,7 @@ void record_step(ThreadGovernor& g, double seconds, long step) {
   if (g.probing == kProbingOne) {
     ++g.one_steps;
     g.one_seconds += seconds;
-    if (g.one_steps >= g.probe_steps && g.one_seconds >= g.one_side_seconds) {
+    if (g.one_seconds >= g.one_side_seconds) {
       g.probing = kProbingAll;
       g.warmed = 0;
       g.warm_steps = 0;
@@ -132,12 +122,11 @@ void record_step(ThreadGovernor& g, double seconds, long step) {
   // once it has lost_after_seconds of samples.
   if (g.many_seconds >= g.lost_after_seconds &&
       g.many_seconds > g.lost_ratio * static_cast<double>(g.many_steps) * one_mean) {
-    end_probe(g, 1, step);
+    end_probe(g, 1);
     return;
   }
-  const bool done =
-      g.many_steps >= g.probe_steps_most || (g.many_steps >= g.probe_steps && g.many_seconds >= g.probe_seconds);
-  if (done) end_probe(g, faster_choice(g.most, g.many_seconds / static_cast<double>(g.many_steps), one_mean, g.margin), step);
+  if (g.many_seconds >= g.probe_seconds)
+    end_probe(g, faster_choice(g.most, g.many_seconds / static_cast<double>(g.many_steps), one_mean, g.margin));
 }
 
 }  // namespace polydem

@@ -13,8 +13,8 @@
 // then the governor probes: it times steps on one thread, then on all, and
 // keeps the side with the shorter mean step (each timed without its
 // detection, which is longer for another reason; steps too small to run in
-// parallel are not samples). The all-threads side lasts at least
-// `probe_steps` steps and `probe_seconds` of wall time: a competitor takes
+// parallel are not samples). The all-threads side lasts `probe_seconds` of
+// wall time: a competitor takes
 // the shared core in scheduler slices of a few milliseconds, so the threads
 // run many steps at full speed and then stall for a whole slice. A median
 // of a few steps misses the stalls (measured: it kept two threads at half
@@ -32,24 +32,24 @@
 // at 3 times the speed to come, in 3 of 5 runs measured),
 // and the steps after run ~1.5 times slower than the rest while they warm
 // up, so the ratio is 2, not 1. The first probe
-// starts at once (`first_probe`); the wait to the next is counted both in
-// steps and in wall time of stepping, and a probe is due when both have
-// passed (probes of steps of a few microseconds must not come every tenth
-// of a second: each costs ~30-60 ms beside a competitor) or when twice the
-// wall-time wait has (steps of 25 ms must not wait 16,384 of them). When a
-// probe confirms the choice, the wait doubles (up to `longest_interval`
-// steps and `longest_wait` seconds), when it changes it the wait starts
-// short again (1 s), and after the run's first probe too, whichever it
-// keeps (its all-threads side meets the erratic start above and, kept to
-// one thread by it, a whole short run stayed there: 1 in 40 of the
-// spire's 0.3 s runs), so a competitor that comes or goes is noticed within
-// seconds to half a minute while a quiet run probes a few times an hour.
+// starts at once; the wait to the next is counted in wall time of stepping
+// only (a probe beside a competitor costs ~30-60 ms, so probes must come
+// seconds apart whether a step takes microseconds or tens of
+// milliseconds). When a probe confirms the choice, the wait doubles (up to
+// `longest_wait`); when it changes it, and after the run's first probe
+// whichever it keeps, the wait starts short again (`shortest_wait`): the
+// first probe's all-threads side meets the erratic start above and, kept
+// to one thread by it, a whole short run stayed there (1 in 40 of the
+// spire's 0.3 s runs). So a competitor that comes or goes is noticed
+// within seconds to half a minute while a quiet run probes a few times an
+// hour.
 //
 // Between probes it watches the steps on all threads for stalls, since a
 // competitor may come between probes that are far apart. A stall is what
 // the competitor does to two threads once they run: most steps at full
 // speed, then a whole scheduler slice lost at a barrier. So the watch
-// compares, over windows of `watch_seconds`, the mean step with the
+// compares, over windows of `watch_seconds` (a window needs two steps at
+// least), the mean step with the
 // window's fastest: a mean above `stall_ratio` times the fastest in
 // `stalled_windows_to_drop` windows in a row drops to one thread at once
 // (a single hiccup of the machine does not; on a quiet machine the ratio
@@ -70,30 +70,22 @@ inline constexpr int kProbingAll = 2;  // ... then all of them
 
 struct ThreadGovernor {
   // Settings.
-  int most = 1;                   // threads OpenMP was given; 1: the governor never acts
-  long first_probe = 0;           // steps before the first probe
-  long shortest_interval = 16384;  // steps between probes after a change
-  long longest_interval = 262144;  // ... once the choice has held
-  double shortest_wait = 1.0;     // and at least this much stepping wall time (s) after a change
-  double longest_wait = 16.0;     // ... once the choice has held (short steps: a probe costs ~15 ms)
-  int probe_steps = 32;           // at least this many timed steps per side of a probe
-  double one_side_seconds = 0.02;  // ... and at least this much wall time (s) on one thread
-  double probe_seconds = 0.1;     // ... and on all threads, unless lost earlier:
+  int most = 1;                    // threads OpenMP was given; 1: the governor never acts
+  double shortest_wait = 1.0;      // stepping wall time (s) between probes after a change
+  double longest_wait = 16.0;      // ... once the choice has held
+  double one_side_seconds = 0.02;  // wall time (s) a probe times one thread
+  double probe_seconds = 0.1;      // ... and all threads, unless lost earlier:
   double warm_up_seconds = 0.01;      // the all-threads side's first step and first this long are not samples
   double lost_after_seconds = 0.005;  // all threads have lost when, after this long (s),
   double lost_ratio = 2.0;            // ... their mean step is above this times one thread's
   double margin = 0.9;            // all threads are kept only when their mean step is below this times one's
-  long probe_steps_most = 20000;  // a side ends after this many steps whatever its time
   double watch_seconds = 0.01;    // the stall watch's window of wall time (a few scheduler slices)
-  long watch_steps_least = 16;    // ... of at least this many steps
   double stall_ratio = 2.0;       // a window stalls when its mean step is above this times its fastest
   int stalled_windows_to_drop = 2;  // stalled windows in a row that drop to one thread
 
   // State.
   int now = 1;          // threads the next step uses
-  long next_probe = 0;  // step count at which the next probe starts
-  long interval = 0;    // current wait between probes, steps
-  double wait = 0;      // ... and stepping wall time (s); none before the first
+  double wait = 0;      // stepping wall time (s) between probes; none before the first
   double waited = 0;    // stepping wall time since the last probe (s)
   int probing = 0;      // 0: not; kProbingOne, then kProbingAll
   double warmed = 0;                         // the all-threads side's warm-up so far (s)
@@ -116,11 +108,11 @@ struct ThreadGovernor {
 // starts on one thread and its first probe, at once, decides.
 ThreadGovernor make_thread_governor(int most, bool enabled);
 
-// Threads for the step about to run (number `step`, counting from 0).
-int threads_for_step(ThreadGovernor& g, long step);
+// Threads for the step about to run.
+int threads_for_step(ThreadGovernor& g);
 
-// After step number `step`: its wall time without the detection.
-void record_step(ThreadGovernor& g, double seconds, long step);
+// After the step: its wall time without the detection.
+void record_step(ThreadGovernor& g, double seconds);
 
 // The stall watch's verdict on one window (exposed for tests): its mean step
 // is above `ratio` times its fastest (a fastest of 0, a clock too coarse,
