@@ -417,20 +417,29 @@ JointLaws make_joint_laws(const Blocks& blocks, const JointSpec& default_joint,
   return out;
 }
 
-JointLaw stiffest_law(const JointLaws& laws) {
-  // The laws some pair of groups present among the blocks uses.
-  std::vector<char> slot_present(static_cast<std::size_t>(laws.slots), 0);
-  for (int sl : laws.block_slot) slot_present[static_cast<std::size_t>(sl)] = 1;
+std::vector<int> acting_laws(const JointLaws& laws, const std::vector<char>& among) {
+  std::vector<int> in_slot(static_cast<std::size_t>(laws.slots), 0);
+  for (std::size_t i = 0; i < laws.block_slot.size(); ++i)
+    if (among.empty() || among[i]) ++in_slot[static_cast<std::size_t>(laws.block_slot[i])];
   std::vector<char> acts(laws.laws.size(), 0);
   for (int a = 0; a < laws.slots; ++a)
-    for (int b = 0; b < laws.slots; ++b)
-      if (slot_present[static_cast<std::size_t>(a)] && slot_present[static_cast<std::size_t>(b)])
+    for (int b = a; b < laws.slots; ++b) {
+      const int na = in_slot[static_cast<std::size_t>(a)], nb = in_slot[static_cast<std::size_t>(b)];
+      if (a == b ? na >= 2 : na >= 1 && nb >= 1)
         acts[static_cast<std::size_t>(laws.pair_law[static_cast<std::size_t>(a * laws.slots + b)])] = 1;
+    }
+  std::vector<int> out;
+  for (std::size_t k = 0; k < acts.size(); ++k)
+    if (acts[k]) out.push_back(static_cast<int>(k));
+  if (out.empty()) out.push_back(0);
+  return out;
+}
+
+JointLaw stiffest_law(const JointLaws& laws) {
   JointLaw out;
   bool first = true;
-  for (std::size_t k = 0; k < laws.laws.size(); ++k) {
-    if (!acts[k]) continue;
-    const JointLaw& j = laws.laws[k];
+  for (const int k : acting_laws(laws)) {
+    const JointLaw& j = laws.laws[static_cast<std::size_t>(k)];
     if (first) {
       out = j;
       first = false;

@@ -85,6 +85,12 @@ JointLaws make_joint_laws(const Blocks& blocks, const JointSpec& default_joint,
 // Every joint among `blocks` blocks under one law.
 JointLaws uniform_joint_laws(const JointLaw& law, int blocks);
 
+// The laws (indices into laws.laws, ascending) that some joint among the
+// blocks marked in `among` (per block; empty: every block) can take: the
+// law of every pair of groups present among them (a group with itself when
+// it has two blocks there); the default alone when no two blocks are.
+std::vector<int> acting_laws(const JointLaws& laws, const std::vector<char>& among = {});
+
 // The stiffest law that can act, for the time step: the largest kn, ks and
 // damping β over the laws some pair of the blocks' groups uses (the default
 // only if some pair falls to it); its friction and strength are the first

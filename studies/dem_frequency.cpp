@@ -6,6 +6,8 @@
 #include <stdexcept>
 
 #include "analytical/beam_modes.hpp"
+#include "contact/joint_law.hpp"
+#include "core/blocks.hpp"
 #include "run/run_scene.hpp"
 
 namespace polydem {
@@ -106,6 +108,21 @@ std::string spire_tip_block(const SceneSpec& scene) {
   return best;
 }
 
+double spire_joint_normal_stiffness(const SceneSpec& scene) {
+  const Blocks blocks = build_blocks(scene.blocks);
+  const JointLaws laws = make_joint_laws(blocks, scene.joint, scene.joint_pairs);
+  std::vector<char> free(static_cast<std::size_t>(blocks.count), 0);
+  for (int i = 0; i < blocks.count; ++i) free[static_cast<std::size_t>(i)] = blocks.is_free(i) ? 1 : 0;
+  const std::vector<int> acting = acting_laws(laws, free);
+  const double kn = laws.laws[static_cast<std::size_t>(acting.at(0))].kn;
+  for (const int k : acting)
+    if (laws.laws[static_cast<std::size_t>(k)].kn != kn)
+      throw std::runtime_error(
+          "dem-frequency: the spire's joints have different normal stiffnesses ([[joint]] between); the beam "
+          "estimate needs one");
+  return kn;
+}
+
 DemFrequencyResult measure_dem_frequency(SceneSpec scene, const DemFrequencyOptions& o) {
   if (!scene.spire) throw std::runtime_error("dem-frequency: the deck has no [spire]");
   if (!(o.duration > 0.0) || !(o.pulse_period > 0.0) || !(o.history_interval > 0.0) || o.settle_time < 0.0)
@@ -118,7 +135,7 @@ DemFrequencyResult measure_dem_frequency(SceneSpec scene, const DemFrequencyOpti
   // The beam estimate.
   const SpireSpec& sp = *scene.spire;
   const SpireModel model = build_spire(sp);
-  res.kn = scene.joint.normal_stiffness;
+  res.kn = spire_joint_normal_stiffness(scene);
   res.course_height = model.course_height;
   res.E_eq = res.kn * res.course_height;
   res.density = 2600.0;

@@ -57,6 +57,11 @@ struct DemFrequencyResult {
   std::vector<double> t, u;  // the analysed signal (s, m)
 };
 
+// The normal stiffness of the joints among the spire's free stones (the
+// beam estimate's kn), from the deck's laws: [joint] and every [[joint]]
+// between that acts among them. Throws std::runtime_error when they differ.
+double spire_joint_normal_stiffness(const SceneSpec& scene);
+
 // The first block named "tip", else the highest free block.
 std::string spire_tip_block(const SceneSpec& scene);
 

@@ -1,7 +1,11 @@
 #include "studies/limit_study.hpp"
 
+#include "contact/joint_law.hpp"
+#include "core/blocks.hpp"
+
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace polydem {
 
@@ -18,11 +22,25 @@ std::optional<LpMethod> lp_method_named(const std::string& name) {
   return std::nullopt;
 }
 
+// The friction angle of the deck's joints, degrees: the one tan φ of every
+// law that can act (the LP takes one φ per case).
+double deck_friction_angle(const SceneSpec& scene) {
+  const JointLaws laws = make_joint_laws(build_blocks(scene.blocks), scene.joint, scene.joint_pairs);
+  const std::vector<int> acting = acting_laws(laws);
+  const double tan_phi = laws.laws[static_cast<std::size_t>(acting.at(0))].tan_phi;
+  for (const int k : acting)
+    if (laws.laws[static_cast<std::size_t>(k)].tan_phi != tan_phi)
+      throw std::invalid_argument(
+          "the deck's joints have different friction angles ([[joint]] between): give the angles to analyse");
+  if (tan_phi == make_joint_law(scene.joint).tan_phi) return scene.joint.friction_angle;
+  return std::atan(tan_phi) * 180.0 / std::numbers::pi;
+}
+
 LimitStudy limit_study(const SceneSpec& scene, const LimitStudyOptions& options) {
   LimitStudy study;
   study.deck = scene.deck_path;
   study.options = options;
-  if (study.options.friction_angles_deg.empty()) study.options.friction_angles_deg = {scene.joint.friction_angle};
+  if (study.options.friction_angles_deg.empty()) study.options.friction_angles_deg = {deck_friction_angle(scene)};
   study.model = limit_model(scene);
   for (char f : study.model.free) study.free_blocks += f;
   LimitAnalysisOptions lp;

@@ -14,7 +14,7 @@ namespace polydem {
 
 struct LimitStudyOptions {
   std::vector<double> directions_deg{0.0};   // azimuths of the static force from +x [deg]
-  std::vector<double> friction_angles_deg;   // φ [deg]; empty: the scene's joint.friction_angle
+  std::vector<double> friction_angles_deg;   // φ [deg]; empty: the one φ of every law that can act
   std::vector<FrictionPyramid> pyramids{FrictionPyramid::circumscribed, FrictionPyramid::inscribed};
   int pyramid_sides = 16;
   LpMethod method = LpMethod::interior_point;

@@ -31,6 +31,23 @@ TEST(DemFrequency, TipBlockOfTheSpire) {
   EXPECT_EQ(polydem::spire_tip_block(scene), "tip");
 }
 
+// The beam estimate's kn is the laws' among the free stones: a [[joint]]
+// between them overrides [joint]'s; two different stiffnesses acting among
+// them have no single E_eq.
+TEST(DemFrequency, JointStiffnessFromTheActingLaws) {
+  auto scene = polydem::parse_deck("[spire]\ncourse_height = 1.0\nstones_per_face = 1\n", "<coarse spire>");
+  EXPECT_EQ(polydem::spire_joint_normal_stiffness(scene), scene.joint.normal_stiffness);
+  for (auto& b : scene.blocks) b.group = b.motion == polydem::BlockMotion::free ? "stones" : "base";
+  polydem::JointPairSpec pair;
+  pair.group_a = pair.group_b = "stones";
+  pair.joint = scene.joint;
+  pair.joint.normal_stiffness = 0.5 * scene.joint.normal_stiffness;
+  scene.joint_pairs.push_back(pair);
+  EXPECT_EQ(polydem::spire_joint_normal_stiffness(scene), pair.joint.normal_stiffness);
+  scene.blocks.back().group = "other";
+  EXPECT_THROW(polydem::spire_joint_normal_stiffness(scene), std::runtime_error);
+}
+
 // A coarse windowless spire (1 m courses, one stone per face): the DEM's first
 // frequency against the beam with E = kn h.
 TEST(DemFrequency, CoarseSpireFreeVibration) {

@@ -42,5 +42,39 @@ TEST(LimitStudy, FrictionAngleDefaultsToTheDecks) {
   EXPECT_GE(s.cases[0].results[0].lambda, s.cases[0].results[1].lambda - 1e-9);
 }
 
+// With [[joint]] between, the default φ is the laws': the pillar's one
+// joint takes the pair's 10 degrees, not [joint]'s 30, so it slides at
+// tan 10°; two laws with different φ acting are no single default.
+TEST(LimitStudy, FrictionAngleDefaultsToTheActingLaws) {
+  SceneSpec pillar = read_deck(std::string(POLYDEM_SOURCE_DIR) + "/examples/verification/rocking_onset.toml");
+  ASSERT_EQ(pillar.blocks.size(), 2u);
+  pillar.blocks[0].group = "a";
+  pillar.blocks[1].group = "b";
+  JointPairSpec pair;
+  pair.group_a = "a";
+  pair.group_b = "b";
+  pair.joint = pillar.joint;
+  pair.joint.friction_angle = 10.0;
+  pillar.joint_pairs.push_back(pair);
+  LimitStudyOptions o;
+  o.directions_deg = {0.0};
+  o.pyramids = {FrictionPyramid::inscribed};
+  o.method = LpMethod::simplex;
+  const LimitStudy s = limit_study(pillar, o);
+  ASSERT_EQ(s.cases.size(), 1u);
+  EXPECT_NEAR(s.cases[0].friction_angle_deg, 10.0, 1e-12);
+  EXPECT_NEAR(s.cases[0].results[0].lambda, std::tan(10.0 * M_PI / 180.0), 1e-9);
+  // A second group pair with its own φ: both act, no single default.
+  SceneSpec three = pillar;
+  three.blocks.push_back(three.blocks[1]);
+  three.blocks.back().name = "second";
+  three.blocks.back().group = "c";
+  JointPairSpec other = pair;
+  other.group_b = "c";
+  other.joint.friction_angle = 20.0;
+  three.joint_pairs.push_back(other);
+  EXPECT_THROW(limit_study(three, o), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace polydem
