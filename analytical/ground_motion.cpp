@@ -35,7 +35,11 @@ GroundMotion sampled_ground_motion(double dt, std::vector<double> samples) {
   auto next = [dt, end](double t) {
     if (t < 0.0) return 0.0;
     if (t >= end) return std::numeric_limits<double>::infinity();
-    return std::min(end, dt * (std::floor(t / dt) + 1.0));
+    // The first sample time strictly after t: t/dt rounds (0.29/0.01 is
+    // 28.999...), so the floor alone can land on t itself.
+    double k = std::floor(t / dt) + 1.0;
+    while (dt * k <= t) k += 1.0;
+    return std::min(end, dt * k);
   };
   return {fn, end, next};
 }

@@ -165,3 +165,22 @@ TEST(RockingResponse, SampledRecordInterpolates) {
   EXPECT_DOUBLE_EQ(gm.acceleration(0.5), 0.0);
   EXPECT_DOUBLE_EQ(gm.quiet_after, 0.2);
 }
+
+// The next sample time after t is strictly after t for every t, also where
+// t/dt rounds below an integer (0.29/0.01 = 28.999...), so a rocking run on
+// a record ends its steps on the samples and never stalls on one.
+TEST(RockingResponse, NextSampleOfARecordIsAlwaysLater) {
+  const auto gm = pa::sampled_ground_motion(0.01, std::vector<double>(101, 0.0));
+  for (int k = 0; k < 100; ++k) {
+    const double t = 0.01 * k;
+    EXPECT_GT(gm.next_breakpoint(t), t) << k;
+    EXPECT_LE(gm.next_breakpoint(t) - t, 0.01 + 1e-15) << k;
+  }
+  std::vector<double> a(101, 0.0);
+  for (int k = 0; k < 101; ++k) a[k] = 0.3 * 9.81 * std::sin(2 * M_PI * 2.0 * 0.01 * k);
+  pa::RockingOptions o;
+  o.t_end = 1.0;
+  const auto r = pa::simulate_rocking(test_block(), pa::sampled_ground_motion(0.01, a), o);
+  EXPECT_TRUE(r.uplifted);
+  EXPECT_GT(r.t_final, 0.29);
+}
