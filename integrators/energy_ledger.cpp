@@ -49,11 +49,8 @@ EnergyLedger energies(const Blocks& blocks, const LedgerKinematics& k, const Joi
     e.damping += contacts.sub.damping_energy[s];
   }
   for (double w : rest_work) e.damping -= w;
-  e.dropped_shear = contacts.dropped_shear_energy;
-  e.resampled_normal = contacts.resampled_normal_energy;
   for (double w : k.load_work) e.load_work += w;
-  e.balance =
-      e.kinetic + e.gravitational + e.strain + e.slip + e.damping + e.dropped_shear + e.resampled_normal - e.load_work;
+  e.balance = e.kinetic + e.gravitational + e.strain + e.slip + e.damping - e.load_work;
   return e;
 }
 

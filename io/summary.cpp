@@ -212,11 +212,11 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   e.set("strain_J", r.energy.strain);
   e.set("slip_dissipation_J", r.energy.slip);
   e.set("damping_dissipation_J", r.energy.damping);
-  e.set("dropped_shear_J", r.energy.dropped_shear);
-  e.set("resampled_normal_J", r.energy.resampled_normal);
   e.set("load_work_J", r.energy.load_work);
+  e.set("numerical_J", r.numerical_energy());
+  e.set("numerical_of_dissipation", r.numerical_fraction_of_dissipation());
   e.set("balance_J", r.energy.balance);
-  e.set("reference_J", r.energy_reference);
+  e.set("put_in_J", r.energy_reference);
   s.set("energy", std::move(e));
   s.set("energy_balance_error", r.energy_balance_error);
   Json checks = Json::array();

@@ -372,8 +372,6 @@ void bind_run(py::module_& m) {
              d["strain"] = e.strain;
              d["slip"] = e.slip;
              d["damping"] = e.damping;
-             d["dropped_shear"] = e.dropped_shear;
-             d["resampled_normal"] = e.resampled_normal;
              d["load_work"] = e.load_work;
              d["balance"] = e.balance;
              return d;

@@ -491,8 +491,8 @@ class EnergyCheck : public CheckMonitor {
       e0_ = e;
       first_ = false;
     }
-    reference_ = std::max(reference_, energy_in_play(e));
-    worst_drift_ = std::max(worst_drift_, std::abs(e.balance - e0_.balance));
+    reference_ = std::max(reference_, energy_put_in(e, e0_));
+    worst_drift_ = std::max(worst_drift_, std::abs(numerical_energy(e, e0_)));
     const double mech = e.kinetic + e.gravitational + e.strain - e.load_work;
     const double mech0 = e0_.kinetic + e0_.gravitational + e0_.strain - e0_.load_work;
     worst_growth_ = std::max(worst_growth_, mech - mech0);
@@ -501,9 +501,10 @@ class EnergyCheck : public CheckMonitor {
     const double ref = reference_ > 0 ? reference_ : 1.0;
     if (conservation_)
       return result(c_, "-", worst_drift_ / ref, 0.0, false,
-                    "largest drift of the energy balance relative to the largest energy in play");
+                    "largest |numerical| energy relative to the energy put in");
     CheckResult r = result(c_, "-", worst_growth_ / ref, 0.0, false,
-                           "largest growth of kinetic+potential+strain energy beyond the load work, relative");
+                           "largest growth of kinetic+potential+strain energy beyond the load work, relative to the "
+                           "energy put in");
     r.passed = worst_growth_ / ref <= c_.tolerance;
     return r;
   }

@@ -91,7 +91,7 @@ struct Recorder {
   void record(const Simulation& sim);
   // The walking openings at the end of the run.
   void finish_walking(const Simulation& sim);
-  // Relative energy-balance error so far, and the reference energy (J).
+  // The largest |numerical| energy so far over the energy put in.
   double balance_error() const { return reference > 0 ? worst / reference : 0.0; }
   // After a restart has refilled the rows: room for the rest of the run.
   void reserve_rows();
@@ -104,7 +104,8 @@ struct Recorder {
   HistoryTable histories, energies;
   Walking walk;
   // Energy balance tracking.
-  double balance0 = 0, reference = 0, worst = 0;
+  EnergyLedger start;                  // the ledger at the first record
+  double reference = 0, worst = 0;     // running max of the energy put in, of |numerical| (J)
   bool first_energy = true;
 };
 

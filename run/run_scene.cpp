@@ -12,6 +12,11 @@
 
 namespace polydem {
 
+double RunReport::numerical_fraction_of_dissipation() const {
+  const double dissipated = (energy.slip - energy_start.slip) + (energy.damping - energy_start.damping);
+  return dissipated > 0 ? numerical_energy() / dissipated : 0.0;
+}
+
 bool RunReport::all_checks_passed() const {
   return std::all_of(checks.begin(), checks.end(), [](const CheckResult& c) { return c.passed; });
 }
@@ -40,8 +45,9 @@ void save_loop(ByteWriter& w, const RunReport& rep, const Recorder& rec, const L
   w.put(rep.subcontact_updates);
   w.put(static_cast<std::int32_t>(rep.checkpoints + 1));  // counting the one being written
   w.put(rep.checkpoint_wall_seconds);
-  for (double x : {s.records.next, rec.balance0, rec.reference, rec.worst, s.snapshots.next, s.quiet_since,
-                   s.checkpoints.next})
+  const EnergyLedger& e0 = rec.start;
+  for (double x : {s.records.next, e0.kinetic, e0.gravitational, e0.strain, e0.slip, e0.damping, e0.load_work,
+                   e0.balance, rec.reference, rec.worst, s.snapshots.next, s.quiet_since, s.checkpoints.next})
     w.put(x);
   w.put(rec.first_energy);
   w.put(s.wall_before + wall_now);
@@ -64,7 +70,9 @@ void load_loop(ByteReader& r, RunReport& rep, Recorder& rec, LoopState& s, std::
   rep.checkpoints = written;
   rep.checkpoint_bytes = static_cast<long>(state_bytes);  // the last one written
   r.get(rep.checkpoint_wall_seconds);
-  for (double* x : {&s.records.next, &rec.balance0, &rec.reference, &rec.worst, &s.snapshots.next, &s.quiet_since,
+  EnergyLedger& e0 = rec.start;
+  for (double* x : {&s.records.next, &e0.kinetic, &e0.gravitational, &e0.strain, &e0.slip, &e0.damping,
+                    &e0.load_work, &e0.balance, &rec.reference, &rec.worst, &s.snapshots.next, &s.quiet_since,
                     &s.checkpoints.next})
     r.get(*x);
   r.get(rec.first_energy);
@@ -167,6 +175,7 @@ void finish_report(RunReport& rep, const Simulation& sim, Recorder& recorder, As
   rep.end_time = sim.time();
   rep.detections = sim.contacts().detections;
   rep.energy = sim.energies();
+  rep.energy_start = recorder.first_energy ? rep.energy : recorder.start;
   rep.energy_reference = recorder.reference;
   rep.energy_balance_error = recorder.balance_error();
   for (auto& m : monitors) rep.checks.push_back(m->finish(sim));

@@ -95,9 +95,14 @@ struct RunReport {
   int detections = 0;
   int blocks = 0, free_blocks = 0;
   EquilibriumReport equilibrium;  // the static stage (ran = false without one)
-  EnergyLedger energy;
-  double energy_balance_error = 0;  // max |balance − balance(0)| / reference energy
-  double energy_reference = 0;      // J
+  EnergyLedger energy;              // at the end
+  EnergyLedger energy_start;        // at the first record (the dynamic stage's start)
+  double energy_balance_error = 0;  // max |numerical| over the energy put in (integrators/energy_ledger.hpp)
+  double energy_reference = 0;      // the energy put in, J
+  // The numerical line at the end (J) and as a fraction of the energy
+  // dissipated since the start (slip plus damping; 0 when none was).
+  double numerical_energy() const { return polydem::numerical_energy(energy, energy_start); }
+  double numerical_fraction_of_dissipation() const;
   Walking walking;
   HistoryTable histories;
   HistoryTable energies;

@@ -106,8 +106,12 @@ std::string fell_line(const SceneSpec& spec, const RunReport& r) {
 }
 
 std::string energy_line(const RunReport& r) {
-  return fmt::format("energy: balance error {:.2g} of {}; slip dissipated {}, damping {}", r.energy_balance_error,
-                     energy(r.energy_reference), energy(r.energy.slip), energy(r.energy.damping));
+  const double slip = r.energy.slip - r.energy_start.slip, damping = r.energy.damping - r.energy_start.damping;
+  const double put_in = r.energy_reference;
+  return fmt::format("energy: {} put in, {} dissipated (slip {}, damping {}); numerical {} ({:.2g} % of the energy "
+                     "put in)",
+                     energy(put_in), energy(slip + damping), energy(slip), energy(damping), energy(r.numerical_energy()),
+                     put_in > 0 ? 100 * r.numerical_energy() / put_in : 0.0);
 }
 
 }  // namespace

@@ -182,7 +182,11 @@ TEST(JointLaw, StoredShearTurnsWithTheNormalAndKeepsItsLength) {
 // stone lifting): Coulomb's cap falls below the stored shear, which is let go
 // down to the cap. The strain energy given up, (F² − cap²)/(2·ks·A), is all
 // slip: stored + slip stays what was stored, to round-off.
-TEST(JointLaw, ShearLetGoByAFallingCapIsSlip) {
+// A cap that falls below the stored shear within a step: the force drops
+// to the cap by a slip (2c − c)/(ks·A) under the friction force c, and
+// friction's work is c·(2c − c)/(ks·A). The elastic energy released beyond
+// it, (2c − c)²/(2·ks·A), is no slip: the ledger's numerical line shows it.
+TEST(JointLaw, AFallingCapBooksFrictionsWorkOnly) {
   const JointLaw law = law_for_test();
   OneSubcontact c(kDelta);
   const double cap = law.kn * kA * kDelta * law.tan_phi;
@@ -190,10 +194,9 @@ TEST(JointLaw, ShearLetGoByAFallingCapIsSlip) {
   c.sub.shear_force.set(0, f0);
   c.run(law);  // at rest: no increment, only the cap
   EXPECT_NEAR(c.sub.shear_force[0].norm(), cap, 1e-12 * cap);
-  const double before = 0.5 * f0.squaredNorm() / (law.ks * kA);
-  const double after = 0.5 * c.sub.shear_force[0].squaredNorm() / (law.ks * kA);
-  EXPECT_NEAR(after + c.sub.slip_energy[0], before, 1e-12 * before);
-  EXPECT_GT(c.sub.slip_energy[0], 0.0);
+  EXPECT_NEAR(c.sub.slip_energy[0], cap * cap / (law.ks * kA), 1e-12 * cap * cap / (law.ks * kA));
+  const double released = 0.5 * (f0.squaredNorm() - cap * cap) / (law.ks * kA);
+  EXPECT_GT(released - c.sub.slip_energy[0], 0.3 * released);
 }
 
 TEST(JointLaw, CoulombCapAndSlipEnergy) {
@@ -296,7 +299,9 @@ TEST(JointLaw, NoTensionWhenOpen) {
   EXPECT_EQ(joint_strain_energy(uniform_joint_laws(law, 2), c.sub), 0.0);
 }
 
-TEST(JointLaw, OpeningBooksStoredShearEnergyAsSlip) {
+// An opening lets the stored shear go with no friction acting (the cap
+// fell to zero within the step): no slip is booked for it.
+TEST(JointLaw, OpeningBooksNoSlip) {
   const JointLaw law = law_for_test();
   OneSubcontact c(-kDelta);
   const Vec3 fs(300, -400, 0);  // 500 N
@@ -304,7 +309,7 @@ TEST(JointLaw, OpeningBooksStoredShearEnergyAsSlip) {
   c.sub.slip_energy[0] = 1.0;
   c.run(law);
   EXPECT_EQ(c.sub.shear_force[0], Vec3::Zero());
-  EXPECT_DOUBLE_EQ(c.sub.slip_energy[0], 1.0 + 0.5 * 500.0 * 500.0 / (law.ks * kA));
+  EXPECT_EQ(c.sub.slip_energy[0], 1.0);
 }
 
 TEST(JointLaw, TensileBondHoldsUpToSigmaTA) {

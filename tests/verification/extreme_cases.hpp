@@ -305,10 +305,9 @@ inline Case pulse_high_friction_case(double end_time) {
   h.ground_motion = sine_pulse(10, 0.2);
   const std::string deck = header(h) + base(20) + box("stone", {1, 1, 0.5}, {0, 0, 0.25});
   Case c = named("10 g sine pulse, phi = 89 (rocks)", deck);
-  // It overturns and lands: impacts the ledger does not fully book
-  // (measured 7.0 % over 1 s; 4.3 % while the dashpot's work was booked with
-  // the lagged velocity, which over-counted and so hid part of it).
-  c.energy_tolerance = 0.1;
+  // It overturns and lands: the impacts' numerical line is 13 % of the
+  // energy put in over 1 s (docs/contact.md).
+  c.energy_tolerance = 0.16;
   c.check = [](const Final& f) { EXPECT_LT(f.position("stone").head<2>().norm(), 9.0); };
   return c;
 }
@@ -344,10 +343,11 @@ inline Case slope_high_friction_case(double end_time) {
   h.gravity = tilted_gravity(70);
   const std::string deck = header(h) + base(4) + box("stone", {1, 1, 0.25}, {0, 0, 0.125});
   Case c = named("70 deg slope, phi = 89 (sticks)", deck);
-  // The energy in play is only the joint's elastic settling under the tilted
-  // weight, which rings at the highest frequency (w dt ~ 1.6): the ledger's
-  // kinetic term lags half a step, an O((w dt)^2) error on that small energy.
-  c.energy_tolerance = 0.03;
+  // The energy put in is only the joint's elastic settling under the tilted
+  // weight (millijoules), which rings at the highest frequency (w dt ~ 1.6):
+  // the numerical line is 27 % of it (an O((w dt)^2) error of the kinetic
+  // term and the sticking joint's shear cap).
+  c.energy_tolerance = 0.35;
   c.check = [](const Final& f) { EXPECT_LT(f.displacement("stone").norm(), 1e-5); };
   return c;
 }
