@@ -1,0 +1,254 @@
+// The Winkler joint over the overlap of two blocks: face shadows, the
+// clipped cells Q_ab and their fan integrals (overlap_integral.hpp).
+#include "contact/overlap_integral.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace polydem {
+namespace {
+
+using Node = OverlapScratch::Node;
+using FaceShadow = OverlapScratch::FaceShadow;
+
+// The block's vertices in the frame: plane coordinates (x, y) about the
+// origin and height h along n. The frame's axes are taken to the body frame
+// once, so each vertex costs three dot products.
+void frame_vertices(const PosedBlock& block, const JointFrame& frame, std::vector<double>& x,
+                    std::vector<double>& y, std::vector<double>& h) {
+  const Mat3& R = block.R;
+  const Vec3 u1 = R.transpose() * frame.e1, u2 = R.transpose() * frame.e2, un = R.transpose() * frame.n;
+  const Vec3 c = block.x - frame.origin;
+  const double c1 = frame.e1.dot(c), c2 = frame.e2.dot(c), cn = frame.n.dot(c);
+  const std::vector<Vec3>& v = block.shape->vertices;
+  const std::size_t nv = v.size();
+  x.resize(nv);
+  y.resize(nv);
+  h.resize(nv);
+  for (std::size_t i = 0; i < nv; ++i) {
+    x[i] = u1.dot(v[i]) + c1;
+    y[i] = u2.dot(v[i]) + c2;
+    h[i] = un.dot(v[i]) + cn;
+  }
+}
+
+// The faces whose outward normal has a component along n of sign `sign`
+// (+1: A's upper hull, −1: B's lower hull), with their shadows' boxes and
+// height ranges. Faces perpendicular to n (component exactly 0) are left out.
+void face_shadows(const PosedBlock& block, const JointFrame& frame, int sign, const std::vector<double>& x,
+                  const std::vector<double>& y, const std::vector<double>& h, std::vector<FaceShadow>& out) {
+  const Mat3& R = block.R;
+  const Vec3 u1 = R.transpose() * frame.e1, u2 = R.transpose() * frame.e2, un = R.transpose() * frame.n;
+  const Polyhedron& p = *block.shape;
+  out.clear();
+  for (std::size_t f = 0; f < p.faces.size(); ++f) {
+    const Vec3& nf = p.normals[f];
+    const double mn = un.dot(nf);
+    if (!(sign > 0 ? mn > 0 : mn < 0)) continue;
+    FaceShadow s;
+    s.face = static_cast<int>(f);
+    s.m1 = u1.dot(nf);
+    s.m2 = u2.dot(nf);
+    s.mn = mn;
+    s.xmin = s.ymin = s.hmin = std::numeric_limits<double>::infinity();
+    s.xmax = s.ymax = s.hmax = -std::numeric_limits<double>::infinity();
+    for (int i : p.faces[f]) {
+      s.xmin = std::min(s.xmin, x[i]);
+      s.xmax = std::max(s.xmax, x[i]);
+      s.ymin = std::min(s.ymin, y[i]);
+      s.ymax = std::max(s.ymax, y[i]);
+      s.hmin = std::min(s.hmin, h[i]);
+      s.hmax = std::max(s.hmax, h[i]);
+    }
+    out.push_back(s);
+  }
+}
+
+// h clamped to [lo, hi]; a NaN becomes lo.
+double clamp_height(double h, double lo, double hi) {
+  if (!(h >= lo)) return lo;
+  if (!(h <= hi)) return hi;
+  return h;
+}
+
+// u clamped to [0, 1]; a NaN becomes 0.
+double clamp_unit(double u) {
+  if (!(u >= 0)) return 0;
+  if (!(u <= 1)) return 1;
+  return u;
+}
+
+// Adds the fan integrals of the convex polygon `poly` (nodes carry t) to `m`.
+void add_fan(const std::vector<Node>& poly, OverlapMoments& m) {
+  const std::size_t k = poly.size();
+  const double x0 = poly[0].x, y0 = poly[0].y, t0 = poly[0].t;
+  double area = 0;
+  for (std::size_t i = 1; i + 1 < k; ++i) {
+    const double x1 = poly[i].x, y1 = poly[i].y, t1 = poly[i].t;
+    const double x2 = poly[i + 1].x, y2 = poly[i + 1].y, t2 = poly[i + 1].t;
+    const double a = 0.5 * ((x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0));
+    const double a12 = a / 12.0;
+    const double st = t0 + t1 + t2, sx = x0 + x1 + x2, sy = y0 + y1 + y2;
+    area += a;
+    m.volume += a * st / 3.0;
+    m.overlap_squared += a12 * (t0 * t0 + t1 * t1 + t2 * t2 + st * st);
+    m.area_moment.x() += a * sx / 3.0;
+    m.area_moment.y() += a * sy / 3.0;
+    m.volume_moment.x() += a12 * (t0 * x0 + t1 * x1 + t2 * x2 + st * sx);
+    m.volume_moment.y() += a12 * (t0 * y0 + t1 * y1 + t2 * y2 + st * sy);
+    m.area_inertia(0, 0) += a12 * (x0 * x0 + x1 * x1 + x2 * x2 + sx * sx);
+    const double ixy = a12 * (x0 * y0 + x1 * y1 + x2 * y2 + sx * sy);
+    m.area_inertia(0, 1) += ixy;
+    m.area_inertia(1, 0) += ixy;
+    m.area_inertia(1, 1) += a12 * (y0 * y0 + y1 * y1 + y2 * y2 + sy * sy);
+  }
+  m.area += area;
+  if (area != 0) ++m.cells;
+}
+
+// Q_ab for face a of A (upper hull) and face b of B (lower hull), integrated
+// into `m`.
+void add_cell(const Polyhedron& pa, const FaceShadow& sa, const Polyhedron& pb, const FaceShadow& sb,
+              OverlapScratch& s, OverlapMoments& m) {
+  // proj(a), counter-clockwise seen from +n since a faces +n.
+  std::vector<Node>& poly = s.poly;
+  std::vector<Node>& next = s.next;
+  poly.clear();
+  for (int i : pa.faces[sa.face]) poly.push_back(Node{s.xa[i], s.ya[i], s.ha[i], 0.0, 0.0, -1});
+  // proj(b): b faces −n, so its loop is clockwise seen from +n; reversed.
+  const std::vector<int>& fb = pb.faces[sb.face];
+  const std::size_t nb = fb.size();
+  s.bx.resize(nb);
+  s.by.resize(nb);
+  s.bh.resize(nb);
+  for (std::size_t k = 0; k < nb; ++k) {
+    const int i = fb[nb - 1 - k];
+    s.bx[k] = s.xb[i];
+    s.by[k] = s.yb[i];
+    s.bh[k] = s.hb[i];
+  }
+
+  // Sutherland–Hodgman: keep the side d ≥ 0 of each edge of proj(b). A new
+  // node is made only between strictly opposite signs, so d0 − d1 ≠ 0.
+  for (std::size_t j = 0; j < nb && !poly.empty(); ++j) {
+    const std::size_t j1 = j + 1 == nb ? 0 : j + 1;
+    const double ox = s.bx[j], oy = s.by[j];
+    const double ex = s.bx[j1] - ox, ey = s.by[j1] - oy;
+    next.clear();
+    const std::size_t k = poly.size();
+    for (std::size_t i = 0; i < k; ++i) {
+      const Node& p = poly[i];
+      const Node& q = poly[i + 1 == k ? 0 : i + 1];
+      const double dp = ex * (p.y - oy) - ey * (p.x - ox);
+      const double dq = ex * (q.y - oy) - ey * (q.x - ox);
+      if (dp >= 0) next.push_back(p);
+      if ((dp >= 0) != (dq >= 0)) {
+        const double u = dp / (dp - dq);
+        next.push_back(Node{p.x + u * (q.x - p.x), p.y + u * (q.y - p.y), p.ha + u * (q.ha - p.ha), 0.0,
+                            0.0, static_cast<int>(j)});
+      }
+    }
+    poly.swap(next);
+  }
+  if (poly.size() < 3) return;
+
+  // B's height at each node: along the edge of proj(b) it was made on, or,
+  // for a vertex of a inside proj(b), from b's plane. Both lie in b's height
+  // range exactly; the clamp keeps round-off (a steep b) inside it.
+  const double x0 = s.bx[0], y0 = s.by[0], h0 = s.bh[0];
+  for (Node& p : poly) {
+    if (p.b_edge < 0) {
+      p.hb = clamp_height(h0 - (sb.m1 * (p.x - x0) + sb.m2 * (p.y - y0)) / sb.mn, sb.hmin, sb.hmax);
+    } else {
+      const std::size_t j = static_cast<std::size_t>(p.b_edge), j1 = j + 1 == nb ? 0 : j + 1;
+      // The node's place along the edge, from the edge's longer coordinate
+      // (never zero: an edge of zero length cuts nothing).
+      const double ex = s.bx[j1] - s.bx[j], ey = s.by[j1] - s.by[j];
+      const double u = std::abs(ex) >= std::abs(ey) ? (p.x - s.bx[j]) / ex : (p.y - s.by[j]) / ey;
+      p.hb = s.bh[j] + clamp_unit(u) * (s.bh[j1] - s.bh[j]);
+    }
+  }
+
+  // Clip by t ≥ 0; the new nodes lie on the zero line (t = 0).
+  for (Node& p : poly) p.t = p.ha - p.hb;
+  next.clear();
+  const std::size_t k = poly.size();
+  for (std::size_t i = 0; i < k; ++i) {
+    const Node& p = poly[i];
+    const Node& q = poly[i + 1 == k ? 0 : i + 1];
+    if (p.t >= 0) next.push_back(p);
+    if ((p.t >= 0) != (q.t >= 0)) {
+      const double u = p.t / (p.t - q.t);
+      next.push_back(Node{p.x + u * (q.x - p.x), p.y + u * (q.y - p.y), 0.0, 0.0, 0.0, -1});
+    }
+  }
+  if (next.size() < 3) return;
+  for (const Node& p : next) m.max_overlap = std::max(m.max_overlap, p.t);
+  add_fan(next, m);
+}
+
+}  // namespace
+
+JointFrame make_joint_frame(const Vec3& n, const Vec3& origin) {
+  JointFrame f;
+  f.origin = origin;
+  f.n = n;
+  int axis = 0;
+  if (std::abs(n.y()) < std::abs(n[axis])) axis = 1;
+  if (std::abs(n.z()) < std::abs(n[axis])) axis = 2;
+  Vec3 a = Vec3::Zero();
+  a[axis] = 1;
+  f.e1 = (a - a.dot(n) * n).normalized();
+  f.e2 = n.cross(f.e1);
+  return f;
+}
+
+OverlapMoments overlap_integral(const PosedBlock& a, const PosedBlock& b, const JointFrame& frame,
+                                OverlapScratch& s) {
+  OverlapMoments m;
+  frame_vertices(a, frame, s.xa, s.ya, s.ha);
+  frame_vertices(b, frame, s.xb, s.yb, s.hb);
+  // Separated along n: t < 0 everywhere, exact zeros.
+  const double top_a = *std::max_element(s.ha.begin(), s.ha.end());
+  const double bottom_b = *std::min_element(s.hb.begin(), s.hb.end());
+  if (top_a <= bottom_b) return m;
+
+  face_shadows(a, frame, +1, s.xa, s.ya, s.ha, s.top_a);
+  face_shadows(b, frame, -1, s.xb, s.yb, s.hb, s.bottom_b);
+  for (const FaceShadow& fa : s.top_a) {
+    if (fa.hmax <= bottom_b) continue;
+    for (const FaceShadow& fb : s.bottom_b) {
+      if (fa.hmax <= fb.hmin) continue;
+      if (fa.xmax <= fb.xmin || fb.xmax <= fa.xmin || fa.ymax <= fb.ymin || fb.ymax <= fa.ymin) continue;
+      add_cell(*a.shape, fa, *b.shape, fb, s, m);
+    }
+  }
+  return m;
+}
+
+Vec3 plane_point(const JointFrame& frame, const Vec2& xi) {
+  return frame.origin + xi.x() * frame.e1 + xi.y() * frame.e2;
+}
+
+Vec2 pressure_centroid(const OverlapMoments& m) {
+  if (!(m.volume > 0)) return Vec2::Zero();
+  return m.volume_moment / m.volume;
+}
+
+double polar_moment(const OverlapMoments& m, const Vec2& c) {
+  return m.area_inertia.trace() - 2.0 * c.dot(m.area_moment) + c.squaredNorm() * m.area;
+}
+
+JointLoad joint_load(const OverlapMoments& m, const JointFrame& frame, double kn, const Vec3& about) {
+  JointLoad l;
+  l.force = kn * m.volume * frame.n;
+  // Σ (r − about) × kn·t·n over Ω, r = origin + ξ1 e1 + ξ2 e2.
+  l.moment = kn * (m.volume * (frame.origin - about).cross(frame.n) + m.volume_moment.x() * frame.e1.cross(frame.n) +
+                   m.volume_moment.y() * frame.e2.cross(frame.n));
+  l.energy = 0.5 * kn * m.overlap_squared;
+  l.stiffness = kn * m.area;
+  return l;
+}
+
+}  // namespace polydem
