@@ -69,8 +69,8 @@ TEST(CollapseDiagram, TipIsMoreVulnerableThanWholeSpire) {
 TEST(CollapseDiagram, TwoChangesInOneCoarseIntervalAreBothKept) {
   // The spire's 3.4 m tip at T_p = 0.65 s: the Mode I loop closes at 1.96 g
   // and Mode II starts a few hundredths higher, inside one coarse interval
-  // of 0.046 g. Bisecting toward the lower change only used to lose the
-  // entry into Mode II (its boundary fell back to the uplift, 0.506 g).
+  // of 0.046 g. Bisecting toward the lower change only would lose the
+  // entry into Mode II (its boundary would fall back to the uplift, 0.506 g).
   const auto tip = pa::solid_cone(0.4301, 3.4, 1.0, 9.81);
   pa::CollapseScanOptions o;
   o.coarse_points = 100;

@@ -225,7 +225,7 @@ TEST(Equilibrium, RestingBlockCarriesItsWeight) {
 // Density scaling: a 2 m block and a 0.2 m one resting side by side on a
 // base. Each settles by w = ρ·g·h/kn (uniform pressure); the scaled stage
 // reaches the same state (to the stage's tolerance) in fewer steps, because
-// the heavy block no longer vibrates 3 times slower than the one that set
+// the heavy block does not vibrate 3 times slower than the one that sets
 // the step.
 TEST(Equilibrium, DensityScalingReachesTheSameStateInFewerSteps) {
   const std::string text =

@@ -182,7 +182,7 @@ TEST(CollapseSearch, AStaticSolveOutOfStepsIsNoEquilibriumNotACollapse) {
 
 // ...but a mechanism still under way when the steps run out (a block tipping
 // over slowly under local damping, already well past the damage
-// displacement) is a collapse, as before.
+// displacement) is a collapse.
 TEST(CollapseSearch, AStaticSolveOutOfStepsWithAMechanismUnderWayIsACollapse) {
   const SceneSpec s = parse_deck(kTallBlock, "block.toml");
   CollapseSearchOptions o;

@@ -360,13 +360,10 @@ inline Case slope_high_friction_case(double end_time) {
 // 5-10 m/s; at 1e13-1e14 Pa/m xi = beta*w/2 ~ 1-3, the impact is overdamped
 // and the block must not rebound faster than 1 m/s.
 // The ledger's damping term books the dashpot's work at the centred
-// velocity (contact/joint_law.hpp); booked with the velocity half a step
-// behind, as before, it over-counted what the impact dissipates by ~xi*w*dt:
-// balance errors of 7 % at 98 GPa/m and 11 % at 1e14 Pa/m (tolerance then
-// 15 %). Now (with the ledger's kinetic term the leapfrog's own,
-// integrators/simulation.cpp): 0.019 % at 1e14 Pa/m (tolerance 1 %) and
-// 3.0 % at 98 GPa/m (tolerance 4 %), whose error is the stiff elastic impact
-// itself at w*dt = 0.46, not the dashpot: without any damping it is 5.6 %.
+// velocity (contact/joint_law.hpp) and its kinetic term is the leapfrog's
+// own (integrators/energy_ledger.hpp), so the numerical line is small on
+// the overdamped impact (tolerance 1 % at 1e14 Pa/m); at 98 GPa/m it is the
+// stiff elastic impact itself at w*dt = 0.46 (tolerance 4 %).
 inline Case impact_case(double kn, double end_time) {
   Header h;
   h.end_time = end_time;
