@@ -7,7 +7,7 @@
 #pragma once
 
 #include "geometry/polyhedron.hpp"
-#include "geometry/spire.hpp"
+#include "structures/spire.hpp"
 #include "core/units.hpp"
 
 #include <limits>

@@ -1,11 +1,11 @@
-// [[arch]]: arches, barrel vaults and arcades of geometry/arch.hpp, one per
+// [[arch]]: arches, barrel vaults and arcades of structures/arch.hpp, one per
 // table. Each table's `name` prefixes its blocks' names ("nave_voussoir03"),
 // so several arches in one deck stay apart; the blocks' groups say what they
 // are ("voussoir", "pier", "abutment", "base") and the voussoirs' and piers'
 // `course` their ring or course.
 #include "io/generators.hpp"
 
-#include "geometry/arch.hpp"
+#include "structures/arch.hpp"
 
 namespace polydem {
 

@@ -1,10 +1,10 @@
-// [[column]]: columns of drums of geometry/column.hpp, one per table. Each
+// [[column]]: columns of drums of structures/column.hpp, one per table. Each
 // table's `name` prefixes its blocks' names ("portico1_drum03"); the groups
 // are "base", "plinth", "drum" and "capital", and a drum's `course` is its
 // index from the bottom.
 #include "io/generators.hpp"
 
-#include "geometry/column.hpp"
+#include "structures/column.hpp"
 
 namespace polydem {
 

@@ -1,10 +1,10 @@
-// [spire]: the octagonal spire of geometry/spire.hpp (CGAL, exact), the
+// [spire]: the octagonal spire of structures/spire.hpp (CGAL, exact), the
 // materials its joints are made of (their series stiffness sets the joint
 // defaults) and how its base block moves.
 #include "io/generators.hpp"
 
 #include "core/materials.hpp"
-#include "geometry/spire.hpp"
+#include "structures/spire.hpp"
 
 namespace polydem {
 

@@ -1,10 +1,10 @@
 // [[tower]]: hollow square or octagonal masonry towers
-// (geometry/tower.hpp), one per table, each with its openings as
+// (structures/tower.hpp), one per table, each with its openings as
 // [[tower.opening]] tables. Block names start with the tower's name; groups
 // come from what each block is (group_by) with an optional prefix.
 #include "io/generators.hpp"
 
-#include "geometry/tower.hpp"
+#include "structures/tower.hpp"
 
 #include <algorithm>
 

@@ -1,10 +1,10 @@
-// [[wall]]: straight walls of brick or stone units (geometry/wall.hpp), one
+// [[wall]]: straight walls of brick or stone units (structures/wall.hpp), one
 // per table, each with its openings as [[wall.opening]] tables. Block names
 // start with the wall's name, so several walls live in one deck; groups
 // come from what each block is (group_by) with an optional prefix.
 #include "io/generators.hpp"
 
-#include "geometry/wall.hpp"
+#include "structures/wall.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -207,7 +207,7 @@ void build_section(const Deck& deck, WallSection& w) {
 }
 
 // Wall b at a corner of the earlier wall a: b's frame from a's, and the
-// corner's cuts on both (geometry/wall.hpp, WallCorner).
+// corner's cuts on both (structures/wall.hpp, WallCorner).
 void place_at_corner(WallSection& b, WallSection& a) {
   const TableReader& r = b.readers.front();
   WallSpec& A = a.spec;

@@ -7,7 +7,7 @@
 
 #include "analytical/refined_lambda.hpp"
 #include "analytical/static_overturning.hpp"
-#include "geometry/spire.hpp"
+#include "structures/spire.hpp"
 
 namespace pa = polydem::analytical;
 using polydem::SpireSpec;

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <set>
 
-#include "geometry/wall.hpp"
+#include "structures/wall.hpp"
 
 namespace polydem {
 namespace {

@@ -31,10 +31,10 @@
 // their bed, each unit's (u, z) rectangle cut by the slopes (2D clipping,
 // the corners on the slopes computed from the same formula by both
 // neighbours) and extruded through the wall.
-#include "geometry/generator_text.hpp"
-#include "geometry/wall.hpp"
+#include "structures/generator_text.hpp"
+#include "structures/wall.hpp"
 
-#include "geometry/coursed_openings.hpp"
+#include "structures/coursed_openings.hpp"
 
 #include <algorithm>
 #include <cmath>

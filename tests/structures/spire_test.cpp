@@ -1,7 +1,7 @@
 // The spire generator: volumes against closed forms computed here (not by
 // the generator), block counts, convexity, no overlaps between neighbours,
 // windows where asked and nowhere else.
-#include "geometry/spire.hpp"
+#include "structures/spire.hpp"
 
 #include <gtest/gtest.h>
 

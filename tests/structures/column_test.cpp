@@ -1,7 +1,7 @@
 // The column generator: volumes against closed forms computed here (the
 // inscribed polygon ½ N r² sin(2π/N) times the height; the frustum's
 // h/3 (A0 + A1 + √(A0 A1))), beds shared exactly, and the spec errors.
-#include "geometry/column.hpp"
+#include "structures/column.hpp"
 
 #include <gtest/gtest.h>
 

@@ -35,8 +35,8 @@
 // which with O and the head blocks tile the face's courses. The pieces are
 // cut from S by clip(): S's corners on the kept side plus the crossings of
 // its edges, hulled again (convex_hull, CGAL).
-#include "geometry/generator_text.hpp"
-#include "geometry/spire.hpp"
+#include "structures/generator_text.hpp"
+#include "structures/spire.hpp"
 
 #include <algorithm>
 #include <cmath>

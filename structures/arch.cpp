@@ -1,7 +1,7 @@
 // The arch builder: the profile, the joints along it, a quadrilateral per
 // voussoir, the supports' polygons; every block a right prism of its convex
 // polygon (make_prism), turned and moved into place. What the blocks are
-// and why is at the top of geometry/arch.hpp.
+// and why is at the top of structures/arch.hpp.
 //
 // Exactness: neighbouring voussoirs are built from the very same joint
 // points (a(s), e(s) computed once per joint and reused), so the joint is the
@@ -9,8 +9,8 @@
 // the same way. The left half of the arch is computed, the right half is its
 // mirror image (x -> −x, exact in floating point), so the arch is symmetric to
 // the last bit.
-#include "geometry/generator_text.hpp"
-#include "geometry/arch.hpp"
+#include "structures/generator_text.hpp"
+#include "structures/arch.hpp"
 
 #include <algorithm>
 #include <cmath>

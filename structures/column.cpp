@@ -1,9 +1,9 @@
 // The column builder: base, plinth, drums and capital stacked on the axis;
 // what each block is, and the polygon standing for the circle, is at the top
-// of geometry/column.hpp. Consecutive blocks share their bed planes exactly
+// of structures/column.hpp. Consecutive blocks share their bed planes exactly
 // (the same z value ends one block and starts the next).
-#include "geometry/generator_text.hpp"
-#include "geometry/column.hpp"
+#include "structures/generator_text.hpp"
+#include "structures/column.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -35,7 +35,7 @@
 // aligned_above_windows continues the jambs' joints as before.
 //
 // Sizes, defaults and their sources: examples/spire/README.md.
-// No CGAL here; the builder (geometry/spire.cpp) uses it through
+// No CGAL here; the builder (structures/spire.cpp) uses it through
 // halfspace_intersection and convex_hull.
 #pragma once
 

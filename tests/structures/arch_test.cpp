@@ -2,7 +2,7 @@
 // (the polygonal ring: n · ½ sin(β/n) ((R+t)² − R²)), the supports' against
 // their polygons' areas, no overlaps (a separating face plane for every pair),
 // every joint shared face to face, symmetry, placement, and the spec errors.
-#include "geometry/arch.hpp"
+#include "structures/arch.hpp"
 
 #include <gtest/gtest.h>
 

@@ -8,19 +8,19 @@
 // other face's outer line and the line through the inner corner
 // perpendicular to the other face (the face that owns it). Openings and
 // their heads are worked out in the face's (s, z) plane by
-// geometry/coursed_openings; the rectangles left of a stone beside or under
+// structures/coursed_openings; the rectangles left of a stone beside or under
 // an opening only narrow its s range and its z range, so they stay prisms.
 // Voussoirs are half-space intersections through the wall
 // (halfspace_intersection, CGAL).
-#include "geometry/generator_text.hpp"
-#include "geometry/tower.hpp"
+#include "structures/generator_text.hpp"
+#include "structures/tower.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
 
-#include "geometry/coursed_openings.hpp"
+#include "structures/coursed_openings.hpp"
 
 namespace polydem {
 

@@ -4,7 +4,7 @@
 // the solid's (the box minus the openings, computed here) to 1e-9 relative.
 // Then the bonds' joint patterns, the sliver rule, the heads over openings,
 // and each validation rule.
-#include "geometry/wall.hpp"
+#include "structures/wall.hpp"
 
 #include <gtest/gtest.h>
 

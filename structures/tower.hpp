@@ -4,7 +4,7 @@
 // is the bed of course 0; the top of the last course is at origin.z +
 // height. Face k (0..sides-1) faces the horizontal direction at azimuth
 // k·360°/sides from +x, counter-clockwise (face 0 faces +x; for an
-// octagon the spire's faces, geometry/spire.hpp). Along a face, s runs
+// octagon the spire's faces, structures/spire.hpp). Along a face, s runs
 // towards increasing azimuth from the face's middle (s = 0).
 //
 // The wall is `wall_thickness` thick between the outer faces (apothem
@@ -23,7 +23,7 @@
 //
 // Openings go through the wall perpendicular to their face, centred on it,
 // with a lintel or a semicircular arch of voussoirs above (the rules and
-// the head blocks of geometry/wall.hpp's openings, with the stone length for
+// the head blocks of structures/wall.hpp's openings, with the stone length for
 // the unit length); one opening per face.
 // No CGAL here; tower.cpp uses it through halfspace_intersection.
 #pragma once
@@ -32,7 +32,7 @@
 #include <vector>
 
 #include "geometry/polyhedron.hpp"
-#include "geometry/wall.hpp"
+#include "structures/wall.hpp"
 
 namespace polydem {
 

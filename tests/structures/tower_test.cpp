@@ -3,7 +3,7 @@
 // overlapping, volumes summing to the solid's computed here to 1e-9), the
 // corners interlock course by course, the vertical joints stagger, and bad
 // specs name their field.
-#include "geometry/tower.hpp"
+#include "structures/tower.hpp"
 
 #include <gtest/gtest.h>
 
