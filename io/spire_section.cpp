@@ -140,7 +140,7 @@ void read_spire_section(const Deck& deck, Generated& out, SceneSpec& scene) {
   }
   out.parts.push_back(std::move(part));
   out.joint = spire->joint;
-  scene.spire = spire->spec;
+  out.specs.spire = spire->spec;
 }
 
 }  // namespace
