@@ -130,10 +130,10 @@ void read_spire_section(const Deck& deck, Generated& out, SceneSpec& scene) {
     b.name = sb.name;
     b.shape = spire->origin.isZero() ? sb.shape : transformed(sb.shape, Mat3::Identity(), spire->origin);
     b.density = spire->density;
-    b.motion = sb.kind == SpireBlockKind::base ? spire->base_motion : BlockMotion::free;
+    b.motion = sb.kind == BlockKind::base ? spire->base_motion : BlockMotion::free;
     b.course = sb.course;
-    b.group = sb.kind == SpireBlockKind::base  ? std::string("base")
-              : sb.kind == SpireBlockKind::tip ? std::string("tip")
+    b.group = sb.kind == BlockKind::base  ? std::string("base")
+              : sb.kind == BlockKind::tip ? std::string("tip")
                                                : course_group(sb.course);
     b.deck_line = spire->line;
     part.blocks.push_back(std::move(b));

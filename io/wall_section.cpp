@@ -261,7 +261,7 @@ void place_at_corner(WallSection& b, WallSection& a) {
   A.corners.push_back({b.corner_at_end, tb, 1 - quoin_parity(A), shared});
   B.corners.push_back({false, ta, 1 - quoin_parity(B), shared});
 }
-std::string group_of(const WallSection& w, const WallBlock& b) {
+std::string group_of(const WallSection& w, const GeneratedBlock& b) {
   std::string g = w.group_prefix;
   switch (w.group_by) {
     case GroupBy::course: g.append("course").append(two_digits(b.course)); break;
@@ -291,7 +291,7 @@ void read_wall_sections(const Deck& deck, Generated& out, SceneSpec&) {
   for (std::size_t i = 0; i < walls.size(); ++i) {
     const WallSection& w = walls[i];
     out.parts.push_back(generated_part(indexed("wall", i + 1), w.table, w.line, w.density, w.model.blocks,
-                                       [&](const WallBlock& wb) {
+                                       [&](const GeneratedBlock& wb) {
                                          BlockSpec b;
                                          b.name = wb.name;
                                          b.shape = wb.shape;

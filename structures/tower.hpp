@@ -31,7 +31,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/polyhedron.hpp"
+#include "structures/generated_block.hpp"
 #include "structures/wall.hpp"
 
 namespace polydem {
@@ -64,21 +64,12 @@ struct TowerSpecError : GeneratorSpecError {
       : GeneratorSpecError("tower", std::move(field_name), opening_index, std::move(what)) {}
 };
 
-enum class TowerBlockKind { stone, jamb, lintel, voussoir };
-
-struct TowerBlock {
-  Polyhedron shape;  // world coordinates
-  TowerBlockKind kind = TowerBlockKind::stone;
-  int course = 0;
-  int face = 0;
-  int opening = -1;
-  // "<name>_courseCC_faceF_stoneS", "..._pieceP" beside or under an opening,
-  // "<name>_faceF_openingK_lintel", "<name>_faceF_openingK_voussoirJ".
-  std::string name;
-};
-
 struct TowerModel {
-  std::vector<TowerBlock> blocks;
+  // Kinds stone, jamb, lintel, voussoir; course, face, and the opening of a
+  // head block. Names "<name>_courseCC_faceF_stoneS", "..._pieceP" beside or
+  // under an opening, "<name>_faceF_openingK_lintel",
+  // "<name>_faceF_openingK_voussoirJ".
+  std::vector<GeneratedBlock> blocks;
   int n_courses = 0;
   double course_height = 0;
   double stone_length = 0;   // nominal: the mid-wall face width / stones_per_face
@@ -88,6 +79,5 @@ struct TowerModel {
 
 void validate_tower(const TowerSpec& spec);
 TowerModel build_tower(const TowerSpec& spec);
-const char* to_string(TowerBlockKind kind);
 
 }  // namespace polydem

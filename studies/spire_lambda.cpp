@@ -13,7 +13,7 @@ namespace {
 double stone_density(const SceneSpec& scene, const SpireModel& model) {
   for (const auto& stone : model.blocks)
     for (const auto& b : scene.blocks)
-      if (b.name == stone.name && stone.kind != SpireBlockKind::base) return b.density;
+      if (b.name == stone.name && stone.kind != BlockKind::base) return b.density;
   return 2600.0;
 }
 

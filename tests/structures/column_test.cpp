@@ -42,7 +42,7 @@ TEST(Column, DrumsPlinthAndAbacusAreExact) {
   EXPECT_EQ(m.blocks.back().name, "capital");
   double drums = 0;
   for (const auto& b : m.blocks)
-    if (b.kind == ColumnBlockKind::drum) {
+    if (b.kind == BlockKind::drum) {
       drums += volume(b.shape);
       EXPECT_NEAR(volume(b.shape), polygon_area(20, 0.4) * 0.6, 1e-9 * 0.6) << b.name;
     }
