@@ -37,7 +37,7 @@ std::vector<BlockData> block_data(const SpireModel& model, double density) {
     BlockData bd;
     bd.mass = density * mp.volume;
     bd.centroid = mp.centroid;
-    bd.moves = b.kind != SpireBlockKind::base;
+    bd.moves = b.kind != BlockKind::base;
     bd.vertices = &b.shape.vertices;
     any = any || bd.moves;
     out.push_back(bd);
@@ -58,7 +58,7 @@ Frame make_frame(const SpireModel& model, const LoadDirection& dir) {
   double z_min = std::numeric_limits<double>::infinity();
   double extent = 0.0;
   for (const auto& b : model.blocks) {
-    if (b.kind == SpireBlockKind::base) continue;
+    if (b.kind == BlockKind::base) continue;
     for (const Vec3& v : b.shape.vertices) {
       z_min = std::min(z_min, v.z());
       extent = std::max(extent, v.norm());
@@ -68,7 +68,7 @@ Frame make_frame(const SpireModel& model, const LoadDirection& dir) {
   f.z_p = z_min;
   f.p_d = -std::numeric_limits<double>::infinity();
   for (const auto& b : model.blocks) {
-    if (b.kind == SpireBlockKind::base) continue;
+    if (b.kind == BlockKind::base) continue;
     for (const Vec3& v : b.shape.vertices)
       if (v.z() <= z_min + tol) f.p_d = std::max(f.p_d, f.d.dot(v));
   }
@@ -78,7 +78,7 @@ Frame make_frame(const SpireModel& model, const LoadDirection& dir) {
   f.pivot_block.assign(model.blocks.size(), 0);
   for (std::size_t i = 0; i < model.blocks.size(); ++i) {
     const auto& b = model.blocks[i];
-    if (b.kind == SpireBlockKind::base) continue;
+    if (b.kind == BlockKind::base) continue;
     for (const Vec3& v : b.shape.vertices)
       if (v.z() <= z_min + ptol && f.d.dot(v) >= f.p_d - ptol) f.pivot_block[i] = 1;
   }

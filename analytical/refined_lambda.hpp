@@ -1,6 +1,6 @@
 #pragma once
 // Model 2 of issue 4: the static collapse multiplier λ on the real block
-// geometry of the spire (geometry/spire.hpp), refining eq. 1-2.
+// geometry of the spire (structures/spire.hpp), refining eq. 1-2.
 //
 // A mechanism is a rigid set of whole blocks rotating about a pivot axis on
 // the base under the self-weight and a horizontal body force λ·m·g in the
@@ -55,7 +55,7 @@
 #include <vector>
 
 #include "analytical/constants.hpp"
-#include "geometry/spire.hpp"
+#include "structures/spire.hpp"
 
 namespace polydem::analytical {
 

@@ -3,6 +3,7 @@
 #include "core/number_text.hpp"
 #include "io/analytic_inputs.hpp"
 #include "io/analytic_report.hpp"
+#include "structures/generator_specs.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -458,7 +459,7 @@ int run_limit(LimitArgs& a) {
   const polydem::SceneSpec scene = polydem::analytic_scene(a.deck.deck, a.deck.no_windows);
   for (double phi : a.o.friction_angles_deg)
     if (!(phi >= 0.0 && phi < 90.0)) throw BadInput("--phi must be in [0, 90) degrees");
-  if (a.deck.no_windows && !scene.spire) throw BadInput("--no-windows needs a deck with a [spire]");
+  if (a.deck.no_windows && !polydem::spire_of(scene.generators)) throw BadInput("--no-windows needs a deck with a [spire]");
   a.o.pyramid_sides = whole("sides", a.sides, 3, 360);
   a.o.pyramids = *polydem::friction_pyramids_named(a.pyramid);
   a.o.method = *polydem::lp_method_named(a.method);

@@ -11,6 +11,7 @@
 #include "io/block_files.hpp"
 #include "io/deck.hpp"
 #include "io/vtk.hpp"
+#include "structures/generator_specs.hpp"
 
 namespace polydem {
 
@@ -33,10 +34,10 @@ MeshSummary summarize_mesh(const SceneSpec& scene) {
   }
   s.courses = static_cast<int>(courses.size());
   s.centroid_height = s.free_mass > 0 ? mz / s.free_mass : 0.0;
-  if (scene.spire) {
+  if (const SpireSpec* spire = spire_of(scene.generators)) {
     s.has_cone = true;
-    s.cone_radius = scene.spire->base_inradius;
-    s.cone_height = scene.spire->height;
+    s.cone_radius = spire->base_inradius;
+    s.cone_height = spire->height;
     s.lambda_eq1 = analytical::lambda_cone(s.cone_radius, s.cone_height);
     const analytical::GoverningCrack crack = analytical::governing_crack(s.cone_radius, s.cone_height);
     s.lambda_eq2 = crack.lambda;

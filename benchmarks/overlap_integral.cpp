@@ -9,7 +9,7 @@
 //   polydem_overlap_integral [--calls N] [--repeats R] [--engine LABEL]
 #include "bench_util.hpp"
 #include "contact/overlap_integral.hpp"
-#include "geometry/spire.hpp"
+#include "structures/spire.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -46,7 +46,7 @@ Pair boxes() {
 Pair spire_stones() {
   const SpireModel model = build_spire(SpireSpec{});
   const auto named = [&](const std::string& name) {
-    for (const SpireBlock& b : model.blocks)
+    for (const GeneratedBlock& b : model.blocks)
       if (b.name == name) return b.shape;
     throw std::runtime_error("no spire block " + name);
   };

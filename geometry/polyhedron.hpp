@@ -34,21 +34,6 @@ struct GeometryError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// A generator's parameters that cannot be built (the spire, wall, tower,
-// arch and column generators each derive their own type from it): what()
-// is "GENERATOR: FIELD: DETAIL"; `opening` the index of the opening at
-// fault, −1 when none.
-struct GeneratorSpecError : GeometryError {
-  GeneratorSpecError(const std::string& generator, std::string field_name, int opening_index, std::string what)
-      : GeometryError(generator + ": " + field_name + ": " + what),
-        field(std::move(field_name)),
-        opening(opening_index),
-        detail(std::move(what)) {}
-  std::string field;    // e.g. "window_width"
-  int opening = -1;
-  std::string detail;   // the message without the "GENERATOR: FIELD: " prefix
-};
-
 struct Polyhedron {
   std::vector<Vec3> vertices;
   std::vector<std::vector<int>> faces;  // CCW from outside

@@ -2,6 +2,7 @@
 
 #include "io/deck.hpp"
 #include "io/ground_motion_record.hpp"
+#include "structures/generator_specs.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -18,7 +19,7 @@ SceneSpec analytic_scene(const std::string& deck, bool no_windows) {
 
 SceneSpec analytic_spire_scene(const std::string& deck, bool no_windows) {
   SceneSpec s = analytic_scene(deck, no_windows);
-  if (!s.spire) throw std::runtime_error("the deck " + deck + " has no [spire]");
+  if (!spire_of(s.generators)) throw std::runtime_error("the deck " + deck + " has no [spire]");
   return s;
 }
 

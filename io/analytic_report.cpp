@@ -1,5 +1,7 @@
 #include "io/analytic_report.hpp"
 
+#include "structures/generator_specs.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -193,7 +195,7 @@ void report_dem_frequency(std::ostream& out, const SceneSpec& scene, const DemFr
                           const DemFrequencyResult& r) {
   out << "first natural frequency of the block model, DEM free vibration against eq. 4\n"
       << "  spire    " << scene.deck_path << ": " << r.blocks << " blocks, "
-      << (scene.spire ? scene.spire->window_faces.size() : 0) << " windows, tip block '" << r.tip << "'\n"
+      << spire_windows(scene.generators) << " windows, tip block '" << r.tip << "'\n"
       << "  run      gravity, joint damping " << (d.keep_damping ? num(scene.joint.damping) : std::string("0"))
       << " s, sine pulse " << num(d.pulse_g) << " g x " << num(d.pulse_period) << " s at t = " << num(d.settle_time)
       << " s, free vibration " << num(d.duration) << " s; " << r.steps << " steps of " << num(r.time_step) << " s, "

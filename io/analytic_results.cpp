@@ -1,6 +1,7 @@
 #include "io/analytic_results.hpp"
 
 #include "io/atomic_file.hpp"
+#include "structures/generator_specs.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -260,7 +261,7 @@ Json dem_frequency_json(const SceneSpec& scene, const DemFrequencyOptions& o, co
       .set("deck", scene.deck_path)
       .set("tip", r.tip)
       .set("blocks", r.blocks)
-      .set("windows", scene.spire ? scene.spire->window_faces.size() : 0)
+      .set("windows", spire_windows(scene.generators))
       .set("damping_s", o.keep_damping ? scene.joint.damping : 0.0)
       .set("pulse_g", o.pulse_g)
       .set("pulse_period_s", o.pulse_period)

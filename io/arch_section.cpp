@@ -1,11 +1,11 @@
-// [[arch]]: arches, barrel vaults and arcades of geometry/arch.hpp, one per
+// [[arch]]: arches, barrel vaults and arcades of structures/arch.hpp, one per
 // table. Each table's `name` prefixes its blocks' names ("nave_voussoir03"),
 // so several arches in one deck stay apart; the blocks' groups say what they
 // are ("voussoir", "pier", "abutment", "base") and the voussoirs' and piers'
 // `course` their ring or course.
 #include "io/generators.hpp"
 
-#include "geometry/arch.hpp"
+#include "structures/arch.hpp"
 
 namespace polydem {
 
@@ -110,14 +110,14 @@ void read_one_arch(const Deck& deck, const toml::table& t, std::size_t number, s
     deck.fail(path, &t, std::string("cannot build the arch: ") + e.what());
   }
 
-  out.parts.push_back(generated_part(path, &t, r.line(), density, model.blocks, [&](const ArchBlock& ab) {
+  out.parts.push_back(generated_part(path, &t, r.line(), density, model.blocks, [&](const GeneratedBlock& ab) {
     BlockSpec b;
     b.name = name;
     b.name.append("_").append(ab.name);
     b.shape = ab.shape;
-    const bool support = ab.kind == ArchBlockKind::abutment || ab.kind == ArchBlockKind::base;
+    const bool support = ab.kind == BlockKind::abutment || ab.kind == BlockKind::base;
     b.motion = support ? support_motion : BlockMotion::free;
-    b.course = ab.kind == ArchBlockKind::voussoir ? ab.ring : ab.course;
+    b.course = ab.kind == BlockKind::voussoir ? ab.ring : ab.course;
     b.group = to_string(ab.kind);
     return b;
   }));

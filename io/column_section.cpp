@@ -1,10 +1,10 @@
-// [[column]]: columns of drums of geometry/column.hpp, one per table. Each
+// [[column]]: columns of drums of structures/column.hpp, one per table. Each
 // table's `name` prefixes its blocks' names ("portico1_drum03"); the groups
 // are "base", "plinth", "drum" and "capital", and a drum's `course` is its
 // index from the bottom.
 #include "io/generators.hpp"
 
-#include "geometry/column.hpp"
+#include "structures/column.hpp"
 
 namespace polydem {
 
@@ -84,13 +84,13 @@ void read_one_column(const Deck& deck, const toml::table& t, std::size_t number,
     deck.fail(path, &t, std::string("cannot build the column: ") + e.what());
   }
 
-  out.parts.push_back(generated_part(path, &t, r.line(), density, model.blocks, [&](const ColumnBlock& cb) {
+  out.parts.push_back(generated_part(path, &t, r.line(), density, model.blocks, [&](const GeneratedBlock& cb) {
     BlockSpec b;
     b.name = name;
     b.name.append("_").append(cb.name);
     b.shape = cb.shape;
-    b.motion = cb.kind == ColumnBlockKind::base ? base_motion : BlockMotion::free;
-    b.course = cb.drum;
+    b.motion = cb.kind == BlockKind::base ? base_motion : BlockMotion::free;
+    b.course = cb.index;
     b.group = to_string(cb.kind);
     return b;
   }));

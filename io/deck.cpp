@@ -892,6 +892,7 @@ SceneSpec parse_deck(const std::string& text, const std::string& path_for_messag
   // Generators ([spire], ...) first: they may set the joints' defaults
   // (from their materials) and they stand in for [[block]] tables.
   const Generated generated = read_generators(deck, scene);
+  scene.generators = std::make_shared<const GeneratorSpecs>(generated.specs);
   scene.blocks = read_blocks(deck, !generated.parts.empty());
   append_generated_blocks(deck, generated, scene.blocks);
   // [[cut]]s next: they cut whatever the tables and generators made; joints,

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "io/deck_reader.hpp"
+#include "structures/generator_specs.hpp"
 
 #include <optional>
 #include <span>
@@ -31,6 +32,7 @@ struct Generated {
   };
   std::vector<Part> parts;
   std::optional<deck_reader::JointDefaults> joint;  // the last generator's, if it sets them
+  GeneratorSpecs specs;  // what the scene keeps of the sections (SceneSpec::generators)
 };
 
 struct GeneratorSection {

@@ -1,10 +1,10 @@
-// [spire]: the octagonal spire of geometry/spire.hpp (CGAL, exact), the
+// [spire]: the octagonal spire of structures/spire.hpp (CGAL, exact), the
 // materials its joints are made of (their series stiffness sets the joint
 // defaults) and how its base block moves.
 #include "io/generators.hpp"
 
 #include "core/materials.hpp"
-#include "geometry/spire.hpp"
+#include "structures/spire.hpp"
 
 namespace polydem {
 
@@ -130,17 +130,17 @@ void read_spire_section(const Deck& deck, Generated& out, SceneSpec& scene) {
     b.name = sb.name;
     b.shape = spire->origin.isZero() ? sb.shape : transformed(sb.shape, Mat3::Identity(), spire->origin);
     b.density = spire->density;
-    b.motion = sb.kind == SpireBlockKind::base ? spire->base_motion : BlockMotion::free;
+    b.motion = sb.kind == BlockKind::base ? spire->base_motion : BlockMotion::free;
     b.course = sb.course;
-    b.group = sb.kind == SpireBlockKind::base  ? std::string("base")
-              : sb.kind == SpireBlockKind::tip ? std::string("tip")
+    b.group = sb.kind == BlockKind::base  ? std::string("base")
+              : sb.kind == BlockKind::tip ? std::string("tip")
                                                : course_group(sb.course);
     b.deck_line = spire->line;
     part.blocks.push_back(std::move(b));
   }
   out.parts.push_back(std::move(part));
   out.joint = spire->joint;
-  scene.spire = spire->spec;
+  out.specs.spire = spire->spec;
 }
 
 }  // namespace

@@ -1,10 +1,10 @@
 // [[tower]]: hollow square or octagonal masonry towers
-// (geometry/tower.hpp), one per table, each with its openings as
+// (structures/tower.hpp), one per table, each with its openings as
 // [[tower.opening]] tables. Block names start with the tower's name; groups
 // come from what each block is (group_by) with an optional prefix.
 #include "io/generators.hpp"
 
-#include "geometry/tower.hpp"
+#include "structures/tower.hpp"
 
 #include <algorithm>
 
@@ -140,7 +140,7 @@ TowerSection read_tower(const Deck& deck, const toml::table& t, std::size_t inde
   return out;
 }
 
-std::string group_of(const TowerSection& w, const TowerBlock& b) {
+std::string group_of(const TowerSection& w, const GeneratedBlock& b) {
   std::string g = w.group_prefix;
   switch (w.group_by) {
     case GroupBy::course: g.append("course").append(two_digits(b.course)); break;
@@ -162,7 +162,7 @@ void read_tower_sections(const Deck& deck, Generated& out, SceneSpec&) {
   for (std::size_t i = 0; i < towers.size(); ++i) {
     const TowerSection& w = towers[i];
     out.parts.push_back(generated_part(indexed("tower", i + 1), w.table, w.line, w.density, w.model.blocks,
-                                       [&](const TowerBlock& tb) {
+                                       [&](const GeneratedBlock& tb) {
                                          BlockSpec b;
                                          b.name = tb.name;
                                          b.shape = tb.shape;

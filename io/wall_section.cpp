@@ -1,10 +1,10 @@
-// [[wall]]: straight walls of brick or stone units (geometry/wall.hpp), one
+// [[wall]]: straight walls of brick or stone units (structures/wall.hpp), one
 // per table, each with its openings as [[wall.opening]] tables. Block names
 // start with the wall's name, so several walls live in one deck; groups
 // come from what each block is (group_by) with an optional prefix.
 #include "io/generators.hpp"
 
-#include "geometry/wall.hpp"
+#include "structures/wall.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -207,7 +207,7 @@ void build_section(const Deck& deck, WallSection& w) {
 }
 
 // Wall b at a corner of the earlier wall a: b's frame from a's, and the
-// corner's cuts on both (geometry/wall.hpp, WallCorner).
+// corner's cuts on both (structures/wall.hpp, WallCorner).
 void place_at_corner(WallSection& b, WallSection& a) {
   const TableReader& r = b.readers.front();
   WallSpec& A = a.spec;
@@ -261,7 +261,7 @@ void place_at_corner(WallSection& b, WallSection& a) {
   A.corners.push_back({b.corner_at_end, tb, 1 - quoin_parity(A), shared});
   B.corners.push_back({false, ta, 1 - quoin_parity(B), shared});
 }
-std::string group_of(const WallSection& w, const WallBlock& b) {
+std::string group_of(const WallSection& w, const GeneratedBlock& b) {
   std::string g = w.group_prefix;
   switch (w.group_by) {
     case GroupBy::course: g.append("course").append(two_digits(b.course)); break;
@@ -291,7 +291,7 @@ void read_wall_sections(const Deck& deck, Generated& out, SceneSpec&) {
   for (std::size_t i = 0; i < walls.size(); ++i) {
     const WallSection& w = walls[i];
     out.parts.push_back(generated_part(indexed("wall", i + 1), w.table, w.line, w.density, w.model.blocks,
-                                       [&](const WallBlock& wb) {
+                                       [&](const GeneratedBlock& wb) {
                                          BlockSpec b;
                                          b.name = wb.name;
                                          b.shape = wb.shape;

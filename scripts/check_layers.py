@@ -3,7 +3,9 @@
 folder includes only itself and the folders below it.
 
     geometry <- core <- contact <- integrators <- run <- studies <- io <- apps
-    analytical stands alone (it may use geometry and core/units.hpp)
+    structures (the masonry generators) stands on geometry alone; analytical
+    and the layers from run up may use it, core and the step never do
+    analytical stands alone (it may use geometry, structures and core/units.hpp)
     python is a top layer beside apps: it may use everything but apps
 
 Prints every include that breaks the rule (file:line: include) and exits 1
@@ -13,10 +15,12 @@ import re
 import sys
 
 ORDER = ["geometry", "core", "contact", "integrators", "run", "studies", "io", "apps"]
-ALLOWED = {folder: set(ORDER[: i + 1]) | ({"analytical"} if i >= ORDER.index("run") else set())
+SIDE = {"analytical", "structures"}  # beside the pipeline, usable from run up
+ALLOWED = {folder: set(ORDER[: i + 1]) | (SIDE if i >= ORDER.index("run") else set())
            for i, folder in enumerate(ORDER)}
-ALLOWED["analytical"] = {"analytical", "geometry"}
-ALLOWED["python"] = set(ORDER[: ORDER.index("io") + 1]) | {"analytical", "python"}
+ALLOWED["structures"] = {"structures", "geometry"}
+ALLOWED["analytical"] = {"analytical", "structures", "geometry"}
+ALLOWED["python"] = set(ORDER[: ORDER.index("io") + 1]) | SIDE | {"python"}
 EXCEPTIONS = {("analytical", "core/units.hpp")}  # the one g
 
 root = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), ".."))
@@ -31,7 +35,7 @@ for folder in ALLOWED:
             with open(path, encoding="utf-8") as f:
                 for n, line in enumerate(f, 1):
                     m = include.match(line)
-                    if not m or m.group(1) not in ALLOWED and m.group(1) != "analytical":
+                    if not m or m.group(1) not in ALLOWED:
                         continue
                     target = m.group(1)
                     if target in ALLOWED[folder] or (folder, f"{target}/{m.group(2)}") in EXCEPTIONS:

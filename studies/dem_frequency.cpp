@@ -9,6 +9,7 @@
 #include "contact/joint_law.hpp"
 #include "core/blocks.hpp"
 #include "run/run_scene.hpp"
+#include "structures/generator_specs.hpp"
 
 namespace polydem {
 
@@ -124,7 +125,8 @@ double spire_joint_normal_stiffness(const SceneSpec& scene) {
 }
 
 DemFrequencyResult measure_dem_frequency(SceneSpec scene, const DemFrequencyOptions& o) {
-  if (!scene.spire) throw std::runtime_error("dem-frequency: the deck has no [spire]");
+  const SpireSpec* spire = spire_of(scene.generators);
+  if (!spire) throw std::runtime_error("dem-frequency: the deck has no [spire]");
   if (!(o.duration > 0.0) || !(o.pulse_period > 0.0) || !(o.history_interval > 0.0) || o.settle_time < 0.0)
     throw std::runtime_error("dem-frequency: duration, pulse period and interval must be > 0, settle time >= 0");
   DemFrequencyResult res;
@@ -133,17 +135,16 @@ DemFrequencyResult measure_dem_frequency(SceneSpec scene, const DemFrequencyOpti
   const double g = scene.simulation.gravity.norm() > 0 ? scene.simulation.gravity.norm() : kGravity;
 
   // The beam estimate.
-  const SpireSpec& sp = *scene.spire;
-  const SpireModel model = build_spire(sp);
+  const SpireModel model = build_spire(*spire);
   res.kn = spire_joint_normal_stiffness(scene);
   res.course_height = model.course_height;
   res.E_eq = res.kn * res.course_height;
   res.density = 2600.0;
   for (const auto& b : scene.blocks)
     if (b.name == res.tip) res.density = b.density;
-  res.wall_thickness = sp.wall_thickness;
-  res.outer_apothem = sp.base_inradius + 0.5 * sp.wall_thickness;
-  res.height = sp.height;
+  res.wall_thickness = spire->wall_thickness;
+  res.outer_apothem = spire->base_inradius + 0.5 * spire->wall_thickness;
+  res.height = spire->height;
   res.Omega1 = analytical::tapered_cantilever_omegas(1).at(0);
   res.section = analytical::hollow_octagon_section(res.outer_apothem, res.wall_thickness, res.density, res.E_eq);
   res.f_beam_hz = analytical::natural_frequency_hz(res.Omega1, res.section.mass_per_height,

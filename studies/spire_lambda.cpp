@@ -1,5 +1,7 @@
 #include "studies/spire_lambda.hpp"
 
+#include "structures/generator_specs.hpp"
+
 #include <stdexcept>
 
 namespace polydem {
@@ -11,15 +13,16 @@ namespace {
 double stone_density(const SceneSpec& scene, const SpireModel& model) {
   for (const auto& stone : model.blocks)
     for (const auto& b : scene.blocks)
-      if (b.name == stone.name && stone.kind != SpireBlockKind::base) return b.density;
+      if (b.name == stone.name && stone.kind != BlockKind::base) return b.density;
   return 2600.0;
 }
 
 }  // namespace
 
 SpireLambda spire_lambda(const SceneSpec& scene, double g) {
-  if (!scene.spire) throw std::invalid_argument("refined lambda: the deck " + scene.deck_path + " has no [spire]");
-  const SpireSpec& sp = *scene.spire;
+  const SpireSpec* spire = spire_of(scene.generators);
+  if (!spire) throw std::invalid_argument("refined lambda: the deck " + scene.deck_path + " has no [spire]");
+  const SpireSpec& sp = *spire;
   const SpireModel model = build_spire(sp);
   SpireLambda r;
   r.deck = scene.deck_path;

@@ -7,7 +7,7 @@
 
 #include "analytical/refined_lambda.hpp"
 #include "analytical/static_overturning.hpp"
-#include "geometry/spire.hpp"
+#include "structures/spire.hpp"
 
 namespace pa = polydem::analytical;
 using polydem::SpireSpec;
@@ -18,9 +18,9 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 
 polydem::SpireModel one_box(double w, double depth, double h) {
   polydem::SpireModel m;
-  polydem::SpireBlock b;
+  polydem::GeneratedBlock b;
   b.shape = polydem::make_box(polydem::Vec3(w, depth, h), polydem::Vec3(0, 0, 0.5 * h));
-  b.kind = polydem::SpireBlockKind::stone;
+  b.kind = polydem::BlockKind::stone;
   b.course = 0;
   b.face = 0;
   b.name = "box";

@@ -9,7 +9,7 @@
 // overlaps of 1e-4 to 1e-3 m, hence 1e-12 to 1e-10).
 #include "contact/overlap_integral.hpp"
 
-#include "geometry/spire.hpp"
+#include "structures/spire.hpp"
 
 #include <gtest/gtest.h>
 
@@ -158,16 +158,16 @@ Scene random_pair(std::mt19937_64& rng, double depth) {
 // shapes), the upper one pressed down by u: the pair whose joint is largest.
 Scene spire_pair(double u) {
   static const SpireModel model = build_spire(SpireSpec{});
-  const SpireBlock* lower = nullptr;
-  for (const SpireBlock& b : model.blocks)
-    if (b.kind == SpireBlockKind::stone && b.course == 2 && b.face == 1) {
+  const GeneratedBlock* lower = nullptr;
+  for (const GeneratedBlock& b : model.blocks)
+    if (b.kind == BlockKind::stone && b.course == 2 && b.face == 1) {
       lower = &b;
       break;
     }
   Scene best;
   double best_area = 0;
-  for (const SpireBlock& b : model.blocks) {
-    if (b.course != 3 || b.kind != SpireBlockKind::stone) continue;
+  for (const GeneratedBlock& b : model.blocks) {
+    if (b.course != 3 || b.kind != BlockKind::stone) continue;
     Scene s = make_scene(lower->shape, Mat3::Identity(), Vec3::Zero(), b.shape, Mat3::Identity(), Vec3(0, 0, -u));
     const Vec3 ca = mass_properties(*s.shape_a).centroid, cb = mass_properties(*s.shape_b).centroid;
     s.frame = make_joint_frame(Vec3::UnitZ(), 0.5 * (ca + cb));

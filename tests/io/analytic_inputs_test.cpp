@@ -3,6 +3,7 @@
 #include "io/analytic_inputs.hpp"
 
 #include "io/deck.hpp"
+#include "structures/generator_specs.hpp"
 
 #include <gtest/gtest.h>
 
@@ -30,11 +31,11 @@ std::string message(const std::string& path) {
 TEST(AnalyticInputs, DefaultSpireWithAndWithoutWindows) {
   const SceneSpec s = analytic_scene("", false);
   EXPECT_EQ(s.deck_path, kDefaultSpireName);
-  ASSERT_TRUE(s.spire);
-  EXPECT_FALSE(s.spire->window_faces.empty());
-  EXPECT_TRUE(analytic_scene("", true).spire->window_faces.empty());
+  ASSERT_TRUE(spire_of(s.generators));
+  EXPECT_FALSE(spire_of(s.generators)->window_faces.empty());
+  EXPECT_TRUE(spire_of(analytic_scene("", true).generators)->window_faces.empty());
   const std::string pillar = std::string(POLYDEM_SOURCE_DIR) + "/examples/verification/rocking_onset.toml";
-  EXPECT_FALSE(analytic_scene(pillar, false).spire);
+  EXPECT_FALSE(spire_of(analytic_scene(pillar, false).generators));
   try {
     analytic_spire_scene(pillar, false);
     ADD_FAILURE() << "a deck without a [spire]";

@@ -4,8 +4,8 @@
 // file, line and key.
 #include "io/deck.hpp"
 
-#include "geometry/arch.hpp"
-#include "geometry/column.hpp"
+#include "structures/arch.hpp"
+#include "structures/column.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,6 +2,7 @@
 // joint stiffness comes from the materials unless [joint] gives it, and every
 // bad key is reported with file, line and key.
 #include "io/deck.hpp"
+#include "structures/generator_specs.hpp"
 
 #include <gtest/gtest.h>
 
@@ -36,7 +37,7 @@ int count_if_name(const SceneSpec& s, const std::string& fragment) {
 
 TEST(DeckSpire, EmptySectionIsThePapersSpire) {
   const SceneSpec s = parse_deck("[simulation]\nend_time = 1\n\n[spire]\n", kFile);
-  ASSERT_TRUE(s.spire.has_value());
+  ASSERT_TRUE(spire_of(s.generators));
   const SpireModel m = build_spire(SpireSpec{});
   ASSERT_EQ(s.blocks.size(), m.blocks.size());
   for (std::size_t i = 0; i < s.blocks.size(); ++i) {
@@ -85,8 +86,8 @@ mortar_thickness = 0.02
 shear_stiffness_ratio = 0.5
 )",
                                  kFile);
-  ASSERT_TRUE(s.spire.has_value());
-  const SpireSpec& p = *s.spire;
+  ASSERT_TRUE(spire_of(s.generators));
+  const SpireSpec& p = *spire_of(s.generators);
   EXPECT_DOUBLE_EQ(p.height, 9.0);
   EXPECT_DOUBLE_EQ(p.base_inradius, 1.0);
   EXPECT_DOUBLE_EQ(p.wall_thickness, 0.3);
@@ -124,7 +125,7 @@ TEST(DeckSpire, JointKeysWinOverTheMaterials) {
   // Without [spire] nothing changes: Table 1's 98 GPa/m.
   s = parse_deck("[[block]]\nshape = \"box\"\nsize = [1, 1, 1]\n", kFile);
   EXPECT_DOUBLE_EQ(s.joint.normal_stiffness, 98e9);
-  EXPECT_FALSE(s.spire.has_value());
+  EXPECT_FALSE(spire_of(s.generators));
 }
 
 TEST(DeckSpire, ListedBlocksComeFirstAndNamesStayUnique) {
@@ -230,7 +231,7 @@ TEST(DeckSpire, BadKeysNameFileLineAndKey) {
 
 TEST(DeckSpire, ExampleDeckReads) {
   const SceneSpec s = read_deck(std::string(POLYDEM_SOURCE_DIR) + "/examples/spire/spire_geometry.toml");
-  ASSERT_TRUE(s.spire.has_value());
+  ASSERT_TRUE(spire_of(s.generators));
   EXPECT_EQ(s.blocks.size(), build_spire(SpireSpec{}).blocks.size());
   EXPECT_NEAR(s.joint.normal_stiffness, 93.75e9, 1e3);
 }

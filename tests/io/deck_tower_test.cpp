@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <set>
 
-#include "geometry/spire.hpp"
-#include "geometry/tower.hpp"
+#include "structures/spire.hpp"
+#include "structures/tower.hpp"
 
 namespace polydem {
 namespace {

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <set>
 
-#include "geometry/wall.hpp"
+#include "structures/wall.hpp"
 
 namespace polydem {
 namespace {
@@ -104,7 +104,7 @@ TEST(DeckWall, TwoWallsWithOpeningsAndGroups) {
   }
   for (const auto& b : s.blocks) EXPECT_TRUE(names.insert(b.name).second) << b.name;
   EXPECT_EQ(std::count_if(s.blocks.begin(), s.blocks.end(), [](const BlockSpec& b) { return b.group == "side_header"; }),
-            std::count_if(sm.blocks.begin(), sm.blocks.end(), [](const WallBlock& b) { return b.kind == WallBlockKind::header; }));
+            std::count_if(sm.blocks.begin(), sm.blocks.end(), [](const GeneratedBlock& b) { return b.kind == BlockKind::header; }));
   EXPECT_EQ(std::count_if(s.blocks.begin(), s.blocks.end(), [](const BlockSpec& b) { return b.name == "front_opening0_lintel"; }), 1);
 }
 

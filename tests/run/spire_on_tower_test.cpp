@@ -14,7 +14,7 @@
 #include <numbers>
 #include <string>
 
-#include "geometry/tower.hpp"
+#include "structures/tower.hpp"
 
 namespace polydem {
 namespace {

@@ -6,6 +6,7 @@
 #include "analytical/refined_lambda.hpp"
 #include "run/run_scene.hpp"
 #include "io/deck.hpp"
+#include "structures/generator_specs.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,7 +21,7 @@ TEST(SpireCollapseSlow, FullSpireUnderARamp) {
   const RunReport r = run_scene(spec, control);
   ASSERT_EQ(r.assessment.status, "collapsed");
   const double dem = r.assessment.ground_acceleration_at_damage / 9.81;
-  const SpireModel model = build_spire(*spec.spire);
+  const SpireModel model = build_spire(*spire_of(spec.generators));
   analytical::RefinedLambdaOptions opts;
   opts.directions = {{"face 0", 0.0}};
   const double limit = analytical::refined_lambda(model, spec.blocks.back().density, opts).governing.lambda;

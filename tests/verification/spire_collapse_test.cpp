@@ -12,6 +12,7 @@
 #include "analytical/refined_lambda.hpp"
 #include "run/run_scene.hpp"
 #include "io/deck.hpp"
+#include "structures/generator_specs.hpp"
 
 #include <gtest/gtest.h>
 
@@ -33,7 +34,7 @@ TEST(SpireCollapse, CoarseSpireCollapseAccelerationIsBracketedByTheLimitAnalysis
   std::vector<std::string> base = kCoarse;
   base.push_back("output.histories=[]");
   const SceneSpec probe = read_deck(spire_deck("constant_acceleration.toml"), base);
-  const SpireModel model = build_spire(*probe.spire);
+  const SpireModel model = build_spire(*spire_of(probe.generators));
   analytical::RefinedLambdaOptions opts;
   opts.directions = {{"face 0", 0.0}};
   const double limit = analytical::refined_lambda(model, probe.blocks.back().density, opts).governing.lambda;
@@ -63,7 +64,7 @@ TEST(SpireCollapse, PayOnlyForWhatTheSceneUses) {
   const SceneSpec spec = read_deck(spire_deck("pulse.toml"), o);
   EXPECT_EQ(spec.ground_motion.kind, GroundMotionKind::sine_pulse);
   EXPECT_TRUE(spec.ground_motion.record_path.empty());
-  const SpireModel model = build_spire(*spec.spire);
+  const SpireModel model = build_spire(*spire_of(spec.generators));
   EXPECT_EQ(model.stones_cut_by_windows, 0);
   EXPECT_EQ(model.window_pieces, 0);
   EXPECT_NO_THROW(run_scene(spec));

@@ -4,7 +4,7 @@
 // is the bed of course 0; the top of the last course is at origin.z +
 // height. Face k (0..sides-1) faces the horizontal direction at azimuth
 // k·360°/sides from +x, counter-clockwise (face 0 faces +x; for an
-// octagon the spire's faces, geometry/spire.hpp). Along a face, s runs
+// octagon the spire's faces, structures/spire.hpp). Along a face, s runs
 // towards increasing azimuth from the face's middle (s = 0).
 //
 // The wall is `wall_thickness` thick between the outer faces (apothem
@@ -23,7 +23,7 @@
 //
 // Openings go through the wall perpendicular to their face, centred on it,
 // with a lintel or a semicircular arch of voussoirs above (the rules and
-// the head blocks of geometry/wall.hpp's openings, with the stone length for
+// the head blocks of structures/wall.hpp's openings, with the stone length for
 // the unit length); one opening per face.
 // No CGAL here; tower.cpp uses it through halfspace_intersection.
 #pragma once
@@ -31,8 +31,8 @@
 #include <string>
 #include <vector>
 
-#include "geometry/polyhedron.hpp"
-#include "geometry/wall.hpp"
+#include "structures/generated_block.hpp"
+#include "structures/wall.hpp"
 
 namespace polydem {
 
@@ -64,21 +64,12 @@ struct TowerSpecError : GeneratorSpecError {
       : GeneratorSpecError("tower", std::move(field_name), opening_index, std::move(what)) {}
 };
 
-enum class TowerBlockKind { stone, jamb, lintel, voussoir };
-
-struct TowerBlock {
-  Polyhedron shape;  // world coordinates
-  TowerBlockKind kind = TowerBlockKind::stone;
-  int course = 0;
-  int face = 0;
-  int opening = -1;
-  // "<name>_courseCC_faceF_stoneS", "..._pieceP" beside or under an opening,
-  // "<name>_faceF_openingK_lintel", "<name>_faceF_openingK_voussoirJ".
-  std::string name;
-};
-
 struct TowerModel {
-  std::vector<TowerBlock> blocks;
+  // Kinds stone, jamb, lintel, voussoir; course, face, and the opening of a
+  // head block. Names "<name>_courseCC_faceF_stoneS", "..._pieceP" beside or
+  // under an opening, "<name>_faceF_openingK_lintel",
+  // "<name>_faceF_openingK_voussoirJ".
+  std::vector<GeneratedBlock> blocks;
   int n_courses = 0;
   double course_height = 0;
   double stone_length = 0;   // nominal: the mid-wall face width / stones_per_face
@@ -88,6 +79,5 @@ struct TowerModel {
 
 void validate_tower(const TowerSpec& spec);
 TowerModel build_tower(const TowerSpec& spec);
-const char* to_string(TowerBlockKind kind);
 
 }  // namespace polydem

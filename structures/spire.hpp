@@ -35,14 +35,14 @@
 // aligned_above_windows continues the jambs' joints as before.
 //
 // Sizes, defaults and their sources: examples/spire/README.md.
-// No CGAL here; the builder (geometry/spire.cpp) uses it through
+// No CGAL here; the builder (structures/spire.cpp) uses it through
 // halfspace_intersection and convex_hull.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "geometry/polyhedron.hpp"
+#include "structures/generated_block.hpp"
 
 namespace polydem {
 
@@ -101,23 +101,16 @@ struct SpireSpecError : GeneratorSpecError {
 // SpireSpecError naming the first bad field.
 void validate_spire(const SpireSpec& spec);
 
-enum class SpireBlockKind { base, stone, window_piece, tip };
-
-struct SpireBlock {
-  Polyhedron shape;  // world coordinates
-  SpireBlockKind kind = SpireBlockKind::stone;
-  int course = -1;   // 0.. for stones and pieces, n_courses for the tip, -1 for the base
-  int face = -1;     // 0..7 for stones and pieces, -1 for base and tip
-  int stone = -1;    // index within the face and course (pieces keep their stone's; -1 for head blocks)
-  int piece = -1;    // index among the pieces of a cut stone (or the voussoirs), -1 otherwise
-  // "base", "tip", "course03_face5_stone1", "course01_face0_stone1_piece2",
-  // and the head blocks "course04_face0_voussoir1" (0.. from the left
-  // springing; course = the lowest course they span), "course05_face0_lintel".
-  std::string name;
-};
-
 struct SpireModel {
-  std::vector<SpireBlock> blocks;  // base (if any), then course by course, face by face, then the tip
+  // The base (if any), then course by course, face by face, then the tip.
+  // Kinds base, stone, window_piece (pieces and head blocks), tip; course
+  // 0.. for stones and pieces, n_courses for the tip; face 0..7; a stone's
+  // index within its face and course (pieces keep their stone's, head
+  // blocks have none), a piece's or head voussoir's `piece`. Names "base",
+  // "tip", "course03_face5_stone1", "course01_face0_stone1_piece2", and the
+  // head blocks "course04_face0_voussoir1" (0.. from the left springing;
+  // course = the lowest course they span), "course05_face0_lintel".
+  std::vector<GeneratedBlock> blocks;
   int n_courses = 0;
   double course_height = 0;        // the actual pitch: (height - tip_height) / n_courses
   double shell_top = 0;            // z of the top of the shell = bottom of the tip
@@ -136,6 +129,5 @@ SpireModel build_spire(const SpireSpec& spec);
 double spire_outer_inradius(const SpireSpec& spec, double z);
 double spire_inner_inradius(const SpireSpec& spec, double z);
 
-const char* to_string(SpireBlockKind kind);
 
 }  // namespace polydem

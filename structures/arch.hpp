@@ -78,7 +78,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/polyhedron.hpp"
+#include "structures/generated_block.hpp"
 
 namespace polydem {
 
@@ -114,20 +114,6 @@ struct ArchSpecError : GeneratorSpecError {
       : GeneratorSpecError("arch", std::move(field_name), -1, std::move(what)) {}
 };
 
-enum class ArchBlockKind { voussoir, pier, abutment, base };
-
-struct ArchBlock {
-  Polyhedron shape;     // world coordinates
-  ArchBlockKind kind = ArchBlockKind::voussoir;
-  int span = -1;        // voussoirs: 0.. from −x; supports: -1
-  int ring = -1;        // voussoirs: 0.. from −y
-  int index = -1;       // voussoirs: 0.. from the left springing; supports: 0.. from −x
-  int course = -1;      // piers: 0.. from the bottom
-  // "voussoir03", "ring1_voussoir03", "span1_voussoir03", "abutment0",
-  // "pier1", "pier1_course2", "base" (the deck prefixes its section's name).
-  std::string name;
-};
-
 // The arch's profile, resolved from the spec (local frame, metres).
 struct ArchProfile {
   double span = 0;        // clear span at the intrados
@@ -140,7 +126,13 @@ struct ArchProfile {
 };
 
 struct ArchModel {
-  std::vector<ArchBlock> blocks;  // span by span, ring by ring, voussoirs left to right; then the supports, then the base
+  // Span by span, ring by ring, voussoirs left to right; then the supports,
+  // then the base. Kinds voussoir, abutment, pier, base; a voussoir's span,
+  // ring and index (0.. from the left springing), a support's index (0..
+  // from -x) and a pier's course (0.. from the bottom). Names "voussoir03",
+  // "ring1_voussoir03", "span1_voussoir03", "abutment0", "pier1",
+  // "pier1_course2", "base" (the deck prefixes its section's name).
+  std::vector<GeneratedBlock> blocks;
   ArchProfile profile;
   double pier_width = 0, pier_height = 0, base_thickness = 0;  // as built (defaults resolved)
   // The polygonal ring's area in each ring (the chords through its joints),
@@ -163,6 +155,5 @@ struct ArchJoint {
 };
 ArchJoint arch_joint(const ArchSpec& spec, const ArchProfile& profile, double s);
 
-const char* to_string(ArchBlockKind kind);
 
 }  // namespace polydem

@@ -1,10 +1,10 @@
 // What a coursed masonry face and its openings share between the [[wall]]
-// and [[tower]] builders (geometry/wall.cpp, geometry/tower.cpp): the row of
+// and [[tower]] builders (structures/wall.cpp, structures/tower.cpp): the row of
 // units of one course along the face, the joints an opening forces into it,
 // the rectangles left of a unit beside or under an opening, and the
 // voussoirs of an arched head. Everything here is in the face's own plane
 // (u along the face, z up); the builders turn it into blocks through the
-// thickness. Internal to geometry/.
+// thickness. Internal to structures/.
 #pragma once
 
 #include <string>

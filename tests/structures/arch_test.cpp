@@ -2,7 +2,7 @@
 // (the polygonal ring: n · ½ sin(β/n) ((R+t)² − R²)), the supports' against
 // their polygons' areas, no overlaps (a separating face plane for every pair),
 // every joint shared face to face, symmetry, placement, and the spec errors.
-#include "geometry/arch.hpp"
+#include "structures/arch.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,14 +16,14 @@ constexpr double kPi = std::numbers::pi;
 
 double volume(const Polyhedron& p) { return mass_properties(p).volume; }
 
-double total(const ArchModel& m, ArchBlockKind kind) {
+double total(const ArchModel& m, BlockKind kind) {
   double v = 0;
   for (const auto& b : m.blocks)
     if (b.kind == kind) v += volume(b.shape);
   return v;
 }
 
-int count(const ArchModel& m, ArchBlockKind kind) {
+int count(const ArchModel& m, BlockKind kind) {
   int c = 0;
   for (const auto& b : m.blocks) c += b.kind == kind;
   return c;
@@ -83,16 +83,16 @@ TEST(Arch, SemicircleVoussoirsFillThePolygonalRing) {
   s.depth = 0.8;
   s.voussoirs = 9;
   const ArchModel m = build_arch(s);
-  EXPECT_EQ(count(m, ArchBlockKind::voussoir), 9);
-  EXPECT_EQ(count(m, ArchBlockKind::abutment), 2);
+  EXPECT_EQ(count(m, BlockKind::voussoir), 9);
+  EXPECT_EQ(count(m, BlockKind::abutment), 2);
   EXPECT_EQ(m.blocks.size(), 11u);
   EXPECT_NEAR(m.profile.span, 4.0, 1e-12);
   EXPECT_NEAR(m.profile.rise, 2.0, 1e-12);
   const double expected = ring_area(2.0, 0.3, kPi, 9) * 0.8;
-  EXPECT_NEAR(total(m, ArchBlockKind::voussoir), expected, 1e-9 * expected);
+  EXPECT_NEAR(total(m, BlockKind::voussoir), expected, 1e-9 * expected);
   // The abutments: pier_width (2 t) by pier_height (span/2), flat on top.
   const double abut = 2 * (0.6 * 2.0 * 0.8);
-  EXPECT_NEAR(total(m, ArchBlockKind::abutment), abut, 1e-9 * abut);
+  EXPECT_NEAR(total(m, BlockKind::abutment), abut, 1e-9 * abut);
   for (const auto& b : m.blocks) EXPECT_NO_THROW(validate(b.shape)) << b.name;
   expect_no_overlap(m);
   // Neighbours share their whole joint: t by the depth.
@@ -149,7 +149,7 @@ TEST(Arch, EveryEmbraceAndShapeIsExact) {
                  std::to_string(c.embrace));
     const ArchModel m = build_arch(s);
     const ArchProfile& p = m.profile;
-    EXPECT_EQ(count(m, ArchBlockKind::voussoir), c.n);
+    EXPECT_EQ(count(m, BlockKind::voussoir), c.n);
     double expected = 0;
     if (c.shape == ArchShape::pointed) {
       // The outline through the joints' ends, by the shoelace formula.
@@ -173,7 +173,7 @@ TEST(Arch, EveryEmbraceAndShapeIsExact) {
       EXPECT_NEAR(p.radius, R, 1e-12 * R);
       expected = ring_area(R, 0.25, beta, c.n) * s.depth;
     }
-    EXPECT_NEAR(total(m, ArchBlockKind::voussoir), expected, 1e-9 * expected);
+    EXPECT_NEAR(total(m, BlockKind::voussoir), expected, 1e-9 * expected);
     expect_no_overlap(m);
     // The end supports' top course: pier_width by its height, plus the
     // skewback's part above the springing line, less the springing joint's
@@ -182,7 +182,7 @@ TEST(Arch, EveryEmbraceAndShapeIsExact) {
       const double th = p.springing_angle, t = 0.25;
       const double w = m.pier_width, h = m.pier_height;
       const double one = (w * h + w * t * std::sin(th) - 0.5 * t * t * std::cos(th) * std::sin(th)) * s.depth;
-      const ArchBlockKind k = c.supports == ArchSupports::piers ? ArchBlockKind::pier : ArchBlockKind::abutment;
+      const BlockKind k = c.supports == ArchSupports::piers ? BlockKind::pier : BlockKind::abutment;
       EXPECT_NEAR(total(m, k), 2 * one, 1e-9 * one);
     }
   }
@@ -200,21 +200,21 @@ TEST(Arch, VaultRingsAreStaggeredByHalfAVoussoir) {
   s.pier_height = 2.4;
   const ArchModel m = build_arch(s);
   // Rings 0 and 2: 7 voussoirs; rings 1 and 3: 8 (a half at each springing).
-  EXPECT_EQ(count(m, ArchBlockKind::voussoir), 7 + 8 + 7 + 8);
-  EXPECT_EQ(count(m, ArchBlockKind::pier), 2 * 3);
-  EXPECT_EQ(count(m, ArchBlockKind::base), 1);
+  EXPECT_EQ(count(m, BlockKind::voussoir), 7 + 8 + 7 + 8);
+  EXPECT_EQ(count(m, BlockKind::pier), 2 * 3);
+  EXPECT_EQ(count(m, BlockKind::base), 1);
   const double even = ring_area(3.0, 0.4, kPi, 7) * 0.5, odd = odd_ring_area(3.0, 0.4, kPi, 7) * 0.5;
-  EXPECT_NEAR(total(m, ArchBlockKind::voussoir), 2 * even + 2 * odd, 1e-9 * (even + odd));
+  EXPECT_NEAR(total(m, BlockKind::voussoir), 2 * even + 2 * odd, 1e-9 * (even + odd));
   ASSERT_EQ(m.ring_area.size(), 4u);
   EXPECT_NEAR(m.ring_area[1] * 0.5, odd, 1e-9 * odd);
   // Piers: 2 × (w = 0.8) × 2.4 × 2.0, flat topped.
-  EXPECT_NEAR(total(m, ArchBlockKind::pier), 2 * 0.8 * 2.4 * 2.0, 1e-9);
+  EXPECT_NEAR(total(m, BlockKind::pier), 2 * 0.8 * 2.4 * 2.0, 1e-9);
   expect_no_overlap(m);
   // No joint runs through two neighbouring rings: the smallest block is half
   // a voussoir (never a sliver).
   double smallest = 1e300, largest = 0;
   for (const auto& b : m.blocks)
-    if (b.kind == ArchBlockKind::voussoir) {
+    if (b.kind == BlockKind::voussoir) {
       smallest = std::min(smallest, volume(b.shape));
       largest = std::max(largest, volume(b.shape));
     }
@@ -234,9 +234,9 @@ TEST(Arch, ArcadeSharesItsInteriorPiers) {
   s.pier_width = 0.8;
   s.pier_height = 2.0;
   const ArchModel m = build_arch(s);
-  EXPECT_EQ(count(m, ArchBlockKind::voussoir), 18);
-  EXPECT_EQ(count(m, ArchBlockKind::pier), 3);
-  EXPECT_NEAR(total(m, ArchBlockKind::pier), 3 * 0.8 * 2.0 * 1.0, 1e-9);
+  EXPECT_EQ(count(m, BlockKind::voussoir), 18);
+  EXPECT_EQ(count(m, BlockKind::pier), 3);
+  EXPECT_NEAR(total(m, BlockKind::pier), 3 * 0.8 * 2.0 * 1.0, 1e-9);
   expect_no_overlap(m);
   // The middle pier carries the right springing of span 0 and the left of span 1.
   const Polyhedron* middle = nullptr;
@@ -250,7 +250,7 @@ TEST(Arch, ArcadeSharesItsInteriorPiers) {
   ArchSpec on_base = s;
   on_base.supports = ArchSupports::base;
   const ArchModel b = build_arch(on_base);
-  EXPECT_EQ(count(b, ArchBlockKind::base), 1);
+  EXPECT_EQ(count(b, BlockKind::base), 1);
   EXPECT_EQ(b.blocks.size(), 18u + 1);
   expect_no_overlap(b);
   EXPECT_NEAR(shared_face_area(b.blocks[8].shape, b.blocks[18].shape), 0.3, 1e-9);
@@ -279,7 +279,7 @@ TEST(Arch, PlacedAtItsOriginAlongItsDirection) {
   const ArchModel m = build_arch(s);
   Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
   for (const auto& b : m.blocks)
-    if (b.kind == ArchBlockKind::voussoir)
+    if (b.kind == BlockKind::voussoir)
       for (const Vec3& v : b.shape.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
   EXPECT_NEAR(lo.y(), 20 - 2.3, 1e-12);
   EXPECT_NEAR(hi.y(), 20 + 2.3, 1e-12);

@@ -1,7 +1,7 @@
 // The spire generator: volumes against closed forms computed here (not by
 // the generator), block counts, convexity, no overlaps between neighbours,
 // windows where asked and nowhere else.
-#include "geometry/spire.hpp"
+#include "structures/spire.hpp"
 
 #include <gtest/gtest.h>
 
@@ -151,14 +151,14 @@ int expect_no_overlaps(const SpireModel& m) {
   return pairs;
 }
 
-double sum_volume(const SpireModel& m, std::initializer_list<SpireBlockKind> kinds) {
+double sum_volume(const SpireModel& m, std::initializer_list<BlockKind> kinds) {
   double v = 0;
   for (const auto& b : m.blocks)
     if (std::find(kinds.begin(), kinds.end(), b.kind) != kinds.end()) v += volume(b.shape);
   return v;
 }
 
-int count(const SpireModel& m, SpireBlockKind kind) {
+int count(const SpireModel& m, BlockKind kind) {
   return static_cast<int>(std::count_if(m.blocks.begin(), m.blocks.end(), [&](const auto& b) { return b.kind == kind; }));
 }
 
@@ -180,10 +180,10 @@ TEST(Spire, DefaultVolumesAddUpToShellMinusWindows) {
   const SpireSpec s;
   const SpireModel m = build_spire(s);
   const double expected = shell_volume(s) - s.window_faces.size() * window_volume(s);
-  const double got = sum_volume(m, {SpireBlockKind::stone, SpireBlockKind::window_piece});
+  const double got = sum_volume(m, {BlockKind::stone, BlockKind::window_piece});
   EXPECT_NEAR(got, expected, 1e-9 * expected);
-  EXPECT_NEAR(sum_volume(m, {SpireBlockKind::tip}), tip_volume(s), 1e-9 * tip_volume(s));
-  EXPECT_NEAR(sum_volume(m, {SpireBlockKind::base}), base_volume(s), 1e-9 * base_volume(s));
+  EXPECT_NEAR(sum_volume(m, {BlockKind::tip}), tip_volume(s), 1e-9 * tip_volume(s));
+  EXPECT_NEAR(sum_volume(m, {BlockKind::base}), base_volume(s), 1e-9 * base_volume(s));
   EXPECT_EQ(m.n_courses, 20);
   EXPECT_NEAR(m.course_height, 0.3, 1e-12);
   EXPECT_NEAR(m.shell_top, 6.0, 1e-12);
@@ -198,7 +198,7 @@ TEST(Spire, FlatHeadsAndStaggeredJointsKeepTheVolume) {
   s.window_faces = {1, 6};
   const SpireModel m = build_spire(s);
   const double expected = shell_volume(s) - 2 * window_volume(s);
-  EXPECT_NEAR(sum_volume(m, {SpireBlockKind::stone, SpireBlockKind::window_piece}), expected, 1e-9 * expected);
+  EXPECT_NEAR(sum_volume(m, {BlockKind::stone, BlockKind::window_piece}), expected, 1e-9 * expected);
   EXPECT_GT(m.stones_cut_by_windows, 0);
   expect_no_overlaps(m);
 }
@@ -221,7 +221,7 @@ TEST(Spire, BlocksStayInsideTheShell) {
   const SpireSpec s;
   const SpireModel m = build_spire(s);
   for (const auto& b : m.blocks) {
-    if (b.kind == SpireBlockKind::base) continue;
+    if (b.kind == BlockKind::base) continue;
     for (const auto& v : b.shape.vertices) {
       const double tol = 1e-9;
       EXPECT_GE(v.z(), -tol) << b.name;
@@ -245,10 +245,10 @@ TEST(Spire, CoarseSpireCountsAndNoWindowSplitting) {
   EXPECT_EQ(m.blocks.size(), 1u + 10 * 8 + 1);  // base, 8 stones per course, tip
   EXPECT_EQ(m.stones_cut_by_windows, 0);
   EXPECT_EQ(m.window_pieces, 0);
-  EXPECT_EQ(count(m, SpireBlockKind::window_piece), 0);
-  EXPECT_EQ(count(m, SpireBlockKind::base), 1);
-  EXPECT_EQ(count(m, SpireBlockKind::tip), 1);
-  EXPECT_NEAR(sum_volume(m, {SpireBlockKind::stone}), shell_volume(s), 1e-9 * shell_volume(s));
+  EXPECT_EQ(count(m, BlockKind::window_piece), 0);
+  EXPECT_EQ(count(m, BlockKind::base), 1);
+  EXPECT_EQ(count(m, BlockKind::tip), 1);
+  EXPECT_NEAR(sum_volume(m, {BlockKind::stone}), shell_volume(s), 1e-9 * shell_volume(s));
   expect_no_overlaps(m);
 }
 
@@ -276,7 +276,7 @@ TEST(Spire, WindowsWhereAsked) {
   const SpireSpec s;  // windows on faces 0, 2, 4, 6
   const SpireModel m = build_spire(s);
   EXPECT_GT(m.stones_cut_by_windows, 0);
-  EXPECT_EQ(m.window_pieces, count(m, SpireBlockKind::window_piece));
+  EXPECT_EQ(m.window_pieces, count(m, BlockKind::window_piece));
   const double zmid = 0.5 * (s.window_sill + s.window_head) - 0.2;
   for (int k = 0; k < 8; ++k) {
     const bool win = k % 2 == 0;
@@ -292,7 +292,7 @@ TEST(Spire, WindowsWhereAsked) {
     EXPECT_TRUE(in_some_block(m, wall_point(s, k, 0.45 * s.window_width, s.window_head - 0.05))) << "face " << k;
   }
   for (const auto& b : m.blocks) {
-    if (b.kind == SpireBlockKind::window_piece) {
+    if (b.kind == BlockKind::window_piece) {
       EXPECT_EQ(b.face % 2, 0) << b.name;
     }
   }
@@ -331,7 +331,7 @@ TEST(Spire, CourseHeightAdjustsToAWholeNumberOfCourses) {
   EXPECT_EQ(m.n_courses, 9);
   EXPECT_NEAR(m.course_height, 6.0 / 9, 1e-12);
   s.base_thickness = 0;
-  EXPECT_EQ(count(build_spire(s), SpireBlockKind::base), 0);
+  EXPECT_EQ(count(build_spire(s), BlockKind::base), 0);
 }
 
 // Faces fa of a and fb of b lie in one plane with opposite normals and
@@ -370,7 +370,7 @@ std::vector<std::string> blocks_without_bearing(const SpireModel& m) {
   for (const auto& b : m.blocks) boxes.push_back(box_of(b.shape));
   std::vector<std::string> out;
   for (size_t i = 0; i < m.blocks.size(); ++i) {
-    if (m.blocks[i].kind == SpireBlockKind::base) continue;
+    if (m.blocks[i].kind == BlockKind::base) continue;
     const Polyhedron& a = m.blocks[i].shape;
     bool bears = false;
     for (size_t fa = 0; fa < a.faces.size() && !bears; ++fa) {

@@ -1,9 +1,9 @@
 // The column builder: base, plinth, drums and capital stacked on the axis;
 // what each block is, and the polygon standing for the circle, is at the top
-// of geometry/column.hpp. Consecutive blocks share their bed planes exactly
+// of structures/column.hpp. Consecutive blocks share their bed planes exactly
 // (the same z value ends one block and starts the next).
-#include "geometry/generator_text.hpp"
-#include "geometry/column.hpp"
+#include "structures/generator_text.hpp"
+#include "structures/column.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -53,16 +53,6 @@ double capital_width(const ColumnSpec& s) { return s.capital_width > 0 ? s.capit
 double capital_height(const ColumnSpec& s) { return s.capital_height > 0 ? s.capital_height : s.radius; }
 
 }  // namespace
-
-const char* to_string(ColumnBlockKind kind) {
-  switch (kind) {
-    case ColumnBlockKind::base: return "base";
-    case ColumnBlockKind::plinth: return "plinth";
-    case ColumnBlockKind::drum: return "drum";
-    case ColumnBlockKind::capital: return "capital";
-  }
-  return "?";
-}
 
 void validate_column(const ColumnSpec& s) {
   require(s.drums >= 1 && s.drums <= 1000, "drums", "must be in [1, 1000] (got " + std::to_string(s.drums) + ")");
@@ -132,20 +122,20 @@ ColumnModel build_column(const ColumnSpec& s) {
   if (s.capital != ColumnCapital::none) widest = std::max(widest, capital_width(s));
   const double base_width = s.base_width > 0 ? s.base_width : 2.0 * widest;
 
-  auto add = [&](Polyhedron shape, ColumnBlockKind kind, int drum, std::string name) {
-    ColumnBlock b;
+  auto add = [&](Polyhedron shape, BlockKind kind, int drum, std::string name) {
+    GeneratedBlock b;
     b.shape = std::move(shape);
     b.kind = kind;
-    b.drum = drum;
+    b.index = drum;
     b.name = std::move(name);
     m.blocks.push_back(std::move(b));
   };
-  add(make_prism(shifted(square(base_width), o), o.z() - s.base_thickness, o.z()), ColumnBlockKind::base, -1,
+  add(make_prism(shifted(square(base_width), o), o.z() - s.base_thickness, o.z()), BlockKind::base, -1,
       "base");
   double z = o.z();
   if (s.plinth_height > 0) {
     const double z1 = z + s.plinth_height;
-    add(make_prism(shifted(square(plinth_width(s)), o), z, z1), ColumnBlockKind::plinth, -1, "plinth");
+    add(make_prism(shifted(square(plinth_width(s)), o), z, z1), BlockKind::plinth, -1, "plinth");
     z = z1;
   }
   const std::vector<Vec2> section = shifted(polygon(s.sides, s.radius), o);
@@ -158,20 +148,20 @@ ColumnModel build_column(const ColumnSpec& s) {
     const double z1 = s.drum_heights.empty() && i + 1 == s.drums ? z_shaft + s.height
                       : s.drum_heights.empty()                   ? z_shaft + (i + 1) * (s.height / s.drums)
                                                                  : z + hi;
-    add(make_prism(section, z, z1), ColumnBlockKind::drum, i,
+    add(make_prism(section, z, z1), BlockKind::drum, i,
         "drum" + zero_padded(i, digits_for(std::max(10, s.drums - 1))));
     z = z1;
   }
   if (s.capital == ColumnCapital::abacus) {
     const double z1 = z + capital_height(s);
-    add(make_prism(shifted(square(capital_width(s)), o), z, z1), ColumnBlockKind::capital, -1, "capital");
+    add(make_prism(shifted(square(capital_width(s)), o), z, z1), BlockKind::capital, -1, "capital");
     z = z1;
   } else if (s.capital == ColumnCapital::frustum) {
     const double z1 = z + capital_height(s);
     std::vector<Vec3> pts;
     for (const Vec2& q : section) pts.emplace_back(q.x(), q.y(), z);
     for (const Vec2& q : shifted(polygon(s.sides, 0.5 * capital_width(s)), o)) pts.emplace_back(q.x(), q.y(), z1);
-    add(convex_hull(pts), ColumnBlockKind::capital, -1, "capital");
+    add(convex_hull(pts), BlockKind::capital, -1, "capital");
     z = z1;
   }
   m.top = z - o.z();

@@ -99,7 +99,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/polyhedron.hpp"
+#include "structures/generated_block.hpp"
 
 namespace polydem {
 
@@ -161,23 +161,15 @@ struct WallSpecError : GeneratorSpecError {
       : GeneratorSpecError("wall", std::move(field_name), opening_index, std::move(what)) {}
 };
 
-// closer: a queen closer at a quoin of an English, Flemish or header bond corner.
-enum class WallBlockKind { unit, header, through_stone, jamb, lintel, voussoir, apex, closer };
-
-struct WallBlock {
-  Polyhedron shape;  // world coordinates
-  WallBlockKind kind = WallBlockKind::unit;
-  int course = 0;    // the (lowest) course it lies in
-  int leaf = -1;     // 0.. from v = -thickness/2; -1 for blocks through the whole wall
-  int opening = -1;  // the opening whose head it is (lintel, voussoir), -1 otherwise
-  // "<name>_course03_leaf1_unit4", "<name>_course03_unit4" (through the
-  // wall), "..._piece1" for a piece beside or under an opening,
-  // "<name>_opening0_lintel", "<name>_opening0_voussoir3", "<name>_apex".
-  std::string name;
-};
-
 struct WallModel {
-  std::vector<WallBlock> blocks;  // course by course, unit by unit; head blocks after their lowest course
+  // Course by course, unit by unit; head blocks after their lowest course.
+  // Kinds unit, header, through_stone, closer (a queen closer at a quoin),
+  // jamb, lintel, voussoir, apex; course, leaf, and the opening of a head
+  // block. Names "<name>_course03_leaf1_unit4", "<name>_course03_unit4"
+  // (through the wall), "..._piece1" for a piece beside or under an
+  // opening, "<name>_opening0_lintel", "<name>_opening0_voussoir3",
+  // "<name>_apex".
+  std::vector<GeneratedBlock> blocks;
   int n_courses = 0;         // up to `height`
   int gable_courses = 0;     // above it, under the slopes (the apex stone not counted)
   double course_height = 0;
@@ -203,6 +195,5 @@ int quoin_parity(const WallSpec& spec);
 // Validates and builds. Every block has passed validate().
 WallModel build_wall(const WallSpec& spec);
 
-const char* to_string(WallBlockKind kind);
 
 }  // namespace polydem

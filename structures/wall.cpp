@@ -31,10 +31,10 @@
 // their bed, each unit's (u, z) rectangle cut by the slopes (2D clipping,
 // the corners on the slopes computed from the same formula by both
 // neighbours) and extruded through the wall.
-#include "geometry/generator_text.hpp"
-#include "geometry/wall.hpp"
+#include "structures/generator_text.hpp"
+#include "structures/wall.hpp"
 
-#include "geometry/coursed_openings.hpp"
+#include "structures/coursed_openings.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -59,7 +59,7 @@ void require(bool ok, const char* field, int opening, const std::string& what) {
 using masonry::Segment;
 using masonry::kSliver;
 
-int kind_id(WallBlockKind k) { return static_cast<int>(k); }
+int kind_id(BlockKind k) { return static_cast<int>(k); }
 
 struct PatternElement {
   double s, e;
@@ -98,16 +98,16 @@ Pattern course_pattern(const WallSpec& s, int c, bool at_quoin) {
   const double L = s.unit_length, w = s.unit_width;
   if (s.bond == WallBond::flemish && at_quoin)
     return {3 * w, (odd ? 1.5 * w : 0.0) + 0.5 * w,
-            {{0, w, true, kind_id(WallBlockKind::header)}, {w, 3 * w, false, kind_id(WallBlockKind::unit)}}};
+            {{0, w, true, kind_id(BlockKind::header)}, {w, 3 * w, false, kind_id(BlockKind::unit)}}};
   switch (s.bond) {
-    case WallBond::stretcher: return {L, odd ? 0.5 * L : 0.0, {{0, L, false, kind_id(WallBlockKind::unit)}}};
-    case WallBond::header: return {w, odd ? 0.5 * w : 0.0, {{0, w, true, kind_id(WallBlockKind::header)}}};
+    case WallBond::stretcher: return {L, odd ? 0.5 * L : 0.0, {{0, L, false, kind_id(BlockKind::unit)}}};
+    case WallBond::header: return {w, odd ? 0.5 * w : 0.0, {{0, w, true, kind_id(BlockKind::header)}}};
     case WallBond::english:
-      if (!odd) return {L, 0.0, {{0, L, false, kind_id(WallBlockKind::unit)}}};
-      return {w, 0.5 * w, {{0, w, true, kind_id(WallBlockKind::header)}}};
+      if (!odd) return {L, 0.0, {{0, L, false, kind_id(BlockKind::unit)}}};
+      return {w, 0.5 * w, {{0, w, true, kind_id(BlockKind::header)}}};
     case WallBond::flemish:
       return {3 * w, odd ? 1.5 * w : 0.0,
-              {{0, w, true, kind_id(WallBlockKind::header)}, {w, 3 * w, false, kind_id(WallBlockKind::unit)}}};
+              {{0, w, true, kind_id(BlockKind::header)}, {w, 3 * w, false, kind_id(BlockKind::unit)}}};
   }
   return {};
 }
@@ -140,15 +140,15 @@ std::vector<Segment> bond_segments(const WallSpec& s, int c, double a, double b,
     const double w = s.unit_width;
     if (out.size() < 2 || std::abs(out[0].u1 - 0.5 * w) > 1e-9 * w || std::abs(out[1].u1 - 1.5 * w) > 1e-9 * w)
       throw GeometryError("wall: internal: the quoin's course does not start with half a header");
-    out[0] = {0.0, w, true, kind_id(WallBlockKind::header)};
-    out[1] = {w, out[1].u1, true, kind_id(WallBlockKind::closer)};
+    out[0] = {0.0, w, true, kind_id(BlockKind::header)};
+    out[1] = {w, out[1].u1, true, kind_id(BlockKind::closer)};
   }
   // Through-stones: every Nth unit of a course, staggered course by course.
   if (s.bond == WallBond::stretcher && s.through_every > 0) {
     const int N = s.through_every;
     const int shift = c % 2 == 1 ? N / 2 : 0;
     for (std::size_t i = 0; i < out.size(); ++i)
-      if ((static_cast<int>(i) + shift) % N == 0) out[i].through = true, out[i].kind = kind_id(WallBlockKind::through_stone);
+      if ((static_cast<int>(i) + shift) % N == 0) out[i].through = true, out[i].kind = kind_id(BlockKind::through_stone);
   }
   // The sliver rule at the ends.
   const double min_len = kSliver * s.unit_length * (1 - 1e-9);
@@ -265,13 +265,13 @@ void build_gable(const WallSpec& s, WallModel& m, const PlaceUz& place_uz) {
       poly = masonry::cleaned(masonry::clip(masonry::clip(poly, left), right), tol);
       const std::string base = s.name + "_course" + zero_padded(c, digits);
       const auto make = [&](double v0, double v1, int leaf, const std::string& name) {
-        WallBlock blk;
+        GeneratedBlock blk;
         try {
           blk.shape = place_uz(poly, v0, v1);
         } catch (const GeometryError& e) {
           throw GeometryError("wall: cannot build " + name + ": " + e.what());
         }
-        blk.kind = static_cast<WallBlockKind>(seg.kind);
+        blk.kind = static_cast<BlockKind>(seg.kind);
         blk.course = c;
         blk.leaf = leaf;
         blk.name = name;
@@ -291,29 +291,15 @@ void build_gable(const WallSpec& s, WallModel& m, const PlaceUz& place_uz) {
   }
   m.gable_courses = c - m.n_courses;
   const double a = 0.5 * (L - width_at(z0));
-  WallBlock apex;
+  GeneratedBlock apex;
   apex.shape = place_uz({{a, z0}, {L - a, z0}, {0.5 * L, H + g}}, -0.5 * T, 0.5 * T);
-  apex.kind = WallBlockKind::apex;
+  apex.kind = BlockKind::apex;
   apex.course = c;
   apex.name = s.name + "_apex";
   m.blocks.push_back(std::move(apex));
 }
 
 }  // namespace
-
-const char* to_string(WallBlockKind kind) {
-  switch (kind) {
-    case WallBlockKind::unit: return "unit";
-    case WallBlockKind::header: return "header";
-    case WallBlockKind::through_stone: return "through_stone";
-    case WallBlockKind::jamb: return "jamb";
-    case WallBlockKind::lintel: return "lintel";
-    case WallBlockKind::voussoir: return "voussoir";
-    case WallBlockKind::apex: return "apex";
-    case WallBlockKind::closer: return "closer";
-  }
-  return "?";
-}
 
 int quoin_parity(const WallSpec& s) {
   if (!closes_with_closers(s)) return -1;
@@ -485,7 +471,7 @@ WallModel build_wall(const WallSpec& s) {
     std::vector<Segment> segs = course_segments(s, c, ca, cb);
     // The joints the openings need in this course.
     for (const auto& g : openings)
-      masonry::fit_course(segs, g, c, z0, z1, ch, min_len, tol, kind_id(WallBlockKind::jamb));
+      masonry::fit_course(segs, g, c, z0, z1, ch, min_len, tol, kind_id(BlockKind::jamb));
     int unit_index = 0;
     for (const auto& seg : segs) {
       const int i = unit_index++;
@@ -497,18 +483,18 @@ WallModel build_wall(const WallSpec& s) {
         const masonry::Rect& r = rects[p];
         const std::string piece = cut ? "_piece" + std::to_string(p) : std::string();
         if (seg.through) {
-          WallBlock b;
+          GeneratedBlock b;
           b.shape = box(r.u0, r.u1, -0.5 * T, 0.5 * T, r.z0, r.z1);
-          b.kind = static_cast<WallBlockKind>(seg.kind);
+          b.kind = static_cast<BlockKind>(seg.kind);
           b.course = c;
           b.name = base_name + "_unit" + std::to_string(i) + piece;
           m.blocks.push_back(std::move(b));
         } else {
           for (int l = 0; l < leaves; ++l) {
-            WallBlock b;
+            GeneratedBlock b;
             const double v0 = -0.5 * T + l * leaf_w, v1 = l + 1 == leaves ? 0.5 * T : v0 + leaf_w;
             b.shape = box(r.u0, r.u1, v0, v1, r.z0, r.z1);
-            b.kind = static_cast<WallBlockKind>(seg.kind);
+            b.kind = static_cast<BlockKind>(seg.kind);
             b.course = c;
             b.leaf = l;
             b.name = base_name + "_leaf" + std::to_string(l) + "_unit" + std::to_string(i) + piece;
@@ -523,9 +509,9 @@ WallModel build_wall(const WallSpec& s) {
       if (g.head_lo != c) continue;
       const std::string prefix = s.name + "_opening" + std::to_string(k);
       if (!g.arch) {
-        WallBlock b;
+        GeneratedBlock b;
         b.shape = box(g.zone_a, g.zone_b, -0.5 * T, 0.5 * T, g.head, g.head_top);
-        b.kind = WallBlockKind::lintel;
+        b.kind = BlockKind::lintel;
         b.course = c;
         b.opening = static_cast<int>(k);
         b.name = prefix + "_lintel";
@@ -546,14 +532,14 @@ WallModel build_wall(const WallSpec& s) {
         normals.push_back(face), offsets.push_back(0.5 * T + face.dot(s.origin));
         normals.push_back(-face), offsets.push_back(0.5 * T - face.dot(s.origin));
         const Vec3 interior = s.origin + m.rotation * Vec3(inside.x(), 0, inside.y());
-        WallBlock b;
+        GeneratedBlock b;
         const std::string name = prefix + "_voussoir" + std::to_string(j);
         try {
           b.shape = halfspace_intersection(normals, offsets, interior);
         } catch (const GeometryError& e) {
           throw GeometryError("wall: cannot build " + name + ": " + e.what());
         }
-        b.kind = WallBlockKind::voussoir;
+        b.kind = BlockKind::voussoir;
         b.course = c;
         b.opening = static_cast<int>(k);
         b.name = name;

@@ -1,5 +1,5 @@
 // The face-plane work shared by the wall and tower builders (see the header).
-#include "geometry/coursed_openings.hpp"
+#include "structures/coursed_openings.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 // overlapping, volumes summing to the solid's computed here to 1e-9), the
 // corners interlock course by course, the vertical joints stagger, and bad
 // specs name their field.
-#include "geometry/tower.hpp"
+#include "structures/tower.hpp"
 
 #include <gtest/gtest.h>
 
@@ -179,8 +179,8 @@ TEST(Tower, BelfryOpeningsWithLintelsAndArches) {
   const TowerModel m = expect_exact_tiling(s);
   int lintels = 0, voussoirs = 0;
   for (const auto& b : m.blocks) {
-    lintels += b.kind == TowerBlockKind::lintel;
-    voussoirs += b.kind == TowerBlockKind::voussoir;
+    lintels += b.kind == BlockKind::lintel;
+    voussoirs += b.kind == BlockKind::voussoir;
   }
   EXPECT_EQ(lintels, 2);
   EXPECT_EQ(voussoirs, 10);

@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/polyhedron.hpp"
+#include "structures/generated_block.hpp"
 
 namespace polydem {
 
@@ -55,17 +55,11 @@ struct ColumnSpecError : GeneratorSpecError {
       : GeneratorSpecError("column", std::move(field_name), -1, std::move(what)) {}
 };
 
-enum class ColumnBlockKind { base, plinth, drum, capital };
-
-struct ColumnBlock {
-  Polyhedron shape;  // world coordinates
-  ColumnBlockKind kind = ColumnBlockKind::drum;
-  int drum = -1;     // drums: 0.. from the bottom
-  std::string name;  // "base", "plinth", "drum0", "capital" (the deck prefixes its section's name)
-};
-
 struct ColumnModel {
-  std::vector<ColumnBlock> blocks;  // base, plinth, drums bottom up, capital
+  // Base, plinth, drums bottom up, capital (their kinds); a drum's index 0..
+  // from the bottom. Names "base", "plinth", "drum0", "capital" (the deck
+  // prefixes its section's name).
+  std::vector<GeneratedBlock> blocks;
   std::vector<double> drum_heights;
   double drum_area = 0;             // of the drums' polygon, m²
   double top = 0;                   // z of the top of the column above origin, m
@@ -76,6 +70,5 @@ void validate_column(const ColumnSpec& spec);
 
 ColumnModel build_column(const ColumnSpec& spec);
 
-const char* to_string(ColumnBlockKind kind);
 
 }  // namespace polydem

@@ -8,19 +8,19 @@
 // other face's outer line and the line through the inner corner
 // perpendicular to the other face (the face that owns it). Openings and
 // their heads are worked out in the face's (s, z) plane by
-// geometry/coursed_openings; the rectangles left of a stone beside or under
+// structures/coursed_openings; the rectangles left of a stone beside or under
 // an opening only narrow its s range and its z range, so they stay prisms.
 // Voussoirs are half-space intersections through the wall
 // (halfspace_intersection, CGAL).
-#include "geometry/generator_text.hpp"
-#include "geometry/tower.hpp"
+#include "structures/generator_text.hpp"
+#include "structures/tower.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
 
-#include "geometry/coursed_openings.hpp"
+#include "structures/coursed_openings.hpp"
 
 namespace polydem {
 
@@ -59,16 +59,6 @@ masonry::Opening opening_of(const TowerSpec& s, const TowerOpening& o, int cours
 }
 
 }  // namespace
-
-const char* to_string(TowerBlockKind kind) {
-  switch (kind) {
-    case TowerBlockKind::stone: return "stone";
-    case TowerBlockKind::jamb: return "jamb";
-    case TowerBlockKind::lintel: return "lintel";
-    case TowerBlockKind::voussoir: return "voussoir";
-  }
-  return "?";
-}
 
 void validate_tower(const TowerSpec& s) {
   auto finite_positive = [&](double v, const char* field) {
@@ -201,11 +191,11 @@ TowerModel build_tower(const TowerSpec& s) {
       std::erase_if(joints, [&](double x) { return std::abs(x) > Ai * tn - min_len; });
       std::vector<Segment> segs;
       double prev = -s_end;
-      for (double x : joints) segs.push_back({prev, x, true, static_cast<int>(TowerBlockKind::stone)}), prev = x;
-      segs.push_back({prev, s_end, true, static_cast<int>(TowerBlockKind::stone)});
+      for (double x : joints) segs.push_back({prev, x, true, static_cast<int>(BlockKind::stone)}), prev = x;
+      segs.push_back({prev, s_end, true, static_cast<int>(BlockKind::stone)});
       const auto& openings = face_openings[static_cast<std::size_t>(k)];
       for (const auto& g : openings)
-        masonry::fit_course(segs, g, c, z0, z1, ch, min_len, tol, static_cast<int>(TowerBlockKind::jamb));
+        masonry::fit_course(segs, g, c, z0, z1, ch, min_len, tol, static_cast<int>(BlockKind::jamb));
 
       const std::string base_name = s.name + "_course" + zero_padded(c, course_digits) + "_face" + std::to_string(k);
       for (std::size_t i = 0; i < segs.size(); ++i) {
@@ -235,10 +225,10 @@ TowerModel build_tower(const TowerSpec& s) {
               lines.push_back({tk, Ai * tn});
             }
           }
-          TowerBlock b;
+          GeneratedBlock b;
           b.name = base_name + "_stone" + std::to_string(i) + (cut ? "_piece" + std::to_string(p) : std::string());
           b.shape = prism(lines, r.z0, r.z1, b.name);
-          b.kind = static_cast<TowerBlockKind>(seg.kind);
+          b.kind = static_cast<BlockKind>(seg.kind);
           b.course = c;
           b.face = k;
           m.blocks.push_back(std::move(b));
@@ -251,10 +241,10 @@ TowerModel build_tower(const TowerSpec& s) {
         const std::string prefix =
             s.name + "_face" + std::to_string(k) + "_opening" + std::to_string(face_opening_index[static_cast<std::size_t>(k)][q]);
         if (!g.arch) {
-          TowerBlock b;
+          GeneratedBlock b;
           b.name = prefix + "_lintel";
           b.shape = prism({{nk, A}, {-nk, -Ai}, {-tk, -g.zone_a}, {tk, g.zone_b}}, g.head, g.head_top, b.name);
-          b.kind = TowerBlockKind::lintel;
+          b.kind = BlockKind::lintel;
           b.course = c;
           b.face = k;
           b.opening = face_opening_index[static_cast<std::size_t>(k)][q];
@@ -273,14 +263,14 @@ TowerModel build_tower(const TowerSpec& s) {
           normals.push_back(n3), offsets.push_back(A + n3.dot(s.origin));
           normals.push_back(-n3), offsets.push_back(-Ai - n3.dot(s.origin));
           const Vec3 interior = s.origin + Am * n3 + inside.x() * t3 + inside.y() * ez;
-          TowerBlock b;
+          GeneratedBlock b;
           b.name = prefix + "_voussoir" + std::to_string(j);
           try {
             b.shape = halfspace_intersection(normals, offsets, interior);
           } catch (const GeometryError& e) {
             throw GeometryError("tower: cannot build " + b.name + ": " + e.what());
           }
-          b.kind = TowerBlockKind::voussoir;
+          b.kind = BlockKind::voussoir;
           b.course = c;
           b.face = k;
           b.opening = face_opening_index[static_cast<std::size_t>(k)][q];

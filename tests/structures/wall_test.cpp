@@ -4,7 +4,7 @@
 // the solid's (the box minus the openings, computed here) to 1e-9 relative.
 // Then the bonds' joint patterns, the sliver rule, the heads over openings,
 // and each validation rule.
-#include "geometry/wall.hpp"
+#include "structures/wall.hpp"
 
 #include <gtest/gtest.h>
 
@@ -195,10 +195,10 @@ TEST(Wall, EnglishBondAlternatesStretcherAndHeaderCourses) {
   WallSpec s = small_wall();
   s.bond = WallBond::english;
   const WallModel m = build_wall(s);
-  std::map<int, std::set<WallBlockKind>> kinds;
+  std::map<int, std::set<BlockKind>> kinds;
   for (const auto& b : m.blocks) kinds[b.course].insert(b.kind);
   for (int c = 0; c < m.n_courses; ++c)
-    EXPECT_EQ(kinds[c], (std::set<WallBlockKind>{c % 2 ? WallBlockKind::header : WallBlockKind::unit})) << c;
+    EXPECT_EQ(kinds[c], (std::set<BlockKind>{c % 2 ? BlockKind::header : BlockKind::unit})) << c;
   // A header course: a closer (half a header) at each end, whole headers between.
   const auto joints = face_joints(s, m);
   EXPECT_DOUBLE_EQ(joints.at(1).front(), 0.1);
@@ -214,7 +214,7 @@ TEST(Wall, FlemishBondCentresEachHeaderOnAStretcher) {
   for (const auto& b : m.blocks) {
     if (b.course > 1 || b.leaf == 1) continue;
     const double u = (m.rotation.transpose() * (mass_properties(b.shape).centroid - s.origin)).x();
-    (b.kind == WallBlockKind::header ? header_centres : stretcher_centres)[b.course].push_back(u);
+    (b.kind == BlockKind::header ? header_centres : stretcher_centres)[b.course].push_back(u);
   }
   // Course 1's headers that are whole sit over the middle of course 0's stretchers.
   int centred = 0;
@@ -232,7 +232,7 @@ TEST(Wall, LeavesWithThroughStonesCrossTheWholeWall) {
   int through = 0;
   std::set<int> courses_with;
   for (const auto& b : m.blocks) {
-    if (b.kind != WallBlockKind::through_stone) continue;
+    if (b.kind != BlockKind::through_stone) continue;
     ++through;
     courses_with.insert(b.course);
     EXPECT_EQ(b.leaf, -1);
@@ -278,7 +278,7 @@ TEST(Wall, WindowWithALintel) {
   s.openings = {WallOpening{.position = 0.9, .sill = 0.4, .width = 0.6, .height = 0.7}};
   const WallModel m = expect_exact_tiling(s);
   const auto lintel = std::find_if(m.blocks.begin(), m.blocks.end(),
-                                   [](const WallBlock& b) { return b.kind == WallBlockKind::lintel; });
+                                   [](const GeneratedBlock& b) { return b.kind == BlockKind::lintel; });
   ASSERT_NE(lintel, m.blocks.end());
   EXPECT_EQ(lintel->name, "w_opening0_lintel");
   Eigen::AlignedBox3d box;
@@ -308,7 +308,7 @@ TEST(Wall, DoorAndWindowWithArchesOfVoussoirs) {
     const Vec3 centre = s.origin + m.rotation * Vec3(o.position + 0.5 * o.width, 0, o.sill + o.height - 0.5 * o.width);
     int n = 0;
     for (const auto& b : m.blocks) {
-      if (b.kind != WallBlockKind::voussoir || b.opening != k) continue;
+      if (b.kind != BlockKind::voussoir || b.opening != k) continue;
       ++n;
       // Radial joints: two faces whose planes hold the arch's centre line.
       int radial = 0;
@@ -343,7 +343,7 @@ TEST(Wall, GableCoursesCutByTheSlopesUnderAnApexStone) {
     // Gable courses while the gable is 1.5 units (0.6 m) wide at their bed:
     // width 3 (1 - (z - 1.2)/1.1) >= 0.6 up to z = 2.08, so beds 1.2 .. 2.0.
     EXPECT_EQ(m.gable_courses, 5);
-    const auto apex = std::find_if(m.blocks.begin(), m.blocks.end(), [](const WallBlock& b) { return b.kind == WallBlockKind::apex; });
+    const auto apex = std::find_if(m.blocks.begin(), m.blocks.end(), [](const GeneratedBlock& b) { return b.kind == BlockKind::apex; });
     ASSERT_NE(apex, m.blocks.end());
     EXPECT_EQ(apex->name, "w_apex");
     EXPECT_EQ(apex->shape.vertices.size(), 6u);  // a triangle through the wall
@@ -386,12 +386,12 @@ CornerPair corner_pair(WallBond bond_a, WallBond bond_b, bool at_end, bool left,
 // valid, no two overlapping (separating axes, 1e-9), volumes summing to
 // (a's plan + b's plan less the shared corner square) x height, less the
 // openings, to 1e-9 relative.
-std::vector<WallBlock> expect_exact_walls(const std::vector<WallSpec>& walls, int corners) {
+std::vector<GeneratedBlock> expect_exact_walls(const std::vector<WallSpec>& walls, int corners) {
   std::vector<WallModel> models;
   for (const auto& s : walls) models.push_back(build_wall(s));
   const double T = models.front().thickness;
   double expected = -corners * T * T * walls.front().height, solid = 0;
-  std::vector<WallBlock> all;
+  std::vector<GeneratedBlock> all;
   for (std::size_t i = 0; i < walls.size(); ++i) {
     EXPECT_DOUBLE_EQ(models[i].thickness, T);
     expected += box_minus_openings(walls[i], T);
@@ -423,7 +423,7 @@ std::vector<WallBlock> expect_exact_walls(const std::vector<WallSpec>& walls, in
   return all;
 }
 
-std::vector<WallBlock> expect_exact_corner(const CornerPair& p) { return expect_exact_walls({p.a, p.b}, 1); }
+std::vector<GeneratedBlock> expect_exact_corner(const CornerPair& p) { return expect_exact_walls({p.a, p.b}, 1); }
 
 // The vertical joints, course by course, on one face of wall s (side -1:
 // v = -T/2, +1: v = +T/2) from the blocks of both walls, as distances from
@@ -431,7 +431,7 @@ std::vector<WallBlock> expect_exact_corner(const CornerPair& p) { return expect_
 // from the inner corner on the inner face (where the visible face starts).
 // Joints at the face's ends are left out.
 std::map<int, std::vector<double>> corner_face_joints(const WallSpec& s, const WallSpec& other,
-                                                      const std::vector<WallBlock>& all, int side, double ch,
+                                                      const std::vector<GeneratedBlock>& all, int side, double ch,
                                                       int corner = 0) {
   const double T = wall_thickness(s);
   const double th = s.direction * kPi / 180.0;
@@ -487,11 +487,11 @@ TEST(Wall, EnglishFlemishAndHeaderBondCornersTileAndKeepTheQuarterLapAtTheQuoin)
                         Case{WallBond::header, WallBond::header}})
     for (bool at_end : {true, false})
       for (bool left : {true, false}) {
-        SCOPED_TRACE(std::string(to_string(WallBlockKind::unit)) + " bonds " + std::to_string(static_cast<int>(k.a)) +
+        SCOPED_TRACE(std::string(to_string(BlockKind::unit)) + " bonds " + std::to_string(static_cast<int>(k.a)) +
                      "/" + std::to_string(static_cast<int>(k.b)) + (at_end ? " at end" : " at start") +
                      (left ? " left" : " right"));
         const CornerPair p = corner_pair(k.a, k.b, at_end, left, 6);
-        const std::vector<WallBlock> all = expect_exact_corner(p);
+        const std::vector<GeneratedBlock> all = expect_exact_corner(p);
         // Every piece at least a quarter unit along its wall; the closers
         // exactly a quarter unit.
         int closers = 0;
@@ -499,7 +499,7 @@ TEST(Wall, EnglishFlemishAndHeaderBondCornersTileAndKeepTheQuarterLapAtTheQuoin)
           const WallModel m = build_wall(*s);
           EXPECT_GE(shortest_piece(*s, m), 0.25 * s->unit_length - 1e-12);
           for (const auto& b : m.blocks) {
-            if (b.kind != WallBlockKind::closer) continue;
+            if (b.kind != BlockKind::closer) continue;
             ++closers;
             double u0 = 1e300, u1 = -1e300;
             for (const auto& x : local(*s, m, b.shape)) u0 = std::min(u0, x.x()), u1 = std::max(u1, x.x());
@@ -525,7 +525,7 @@ TEST(Wall, EnglishFlemishAndHeaderBondCornersTileAndKeepTheQuarterLapAtTheQuoin)
 // has straight joints over the course below at the quoin.
 TEST(Wall, WithoutTheQueenClosersAnEnglishCornerHasStraightJoints) {
   const CornerPair p = corner_pair(WallBond::english, WallBond::english, true, true, 6);
-  const std::vector<WallBlock> all = expect_exact_corner(p);
+  const std::vector<GeneratedBlock> all = expect_exact_corner(p);
   const auto joints = corner_face_joints(p.a, p.b, all, -1, 0.2);  // a's outer face
   EXPECT_NEAR(smallest_lap_near_corner(joints, 6, 1.2), 0.1, 1e-9);
   auto without = joints;
@@ -567,7 +567,7 @@ TEST(Wall, EnglishCornerWithAnOpeningAndCornersAtBothEnds) {
     r.b.corners.push_back({false, T, 1 - quoin_parity(r.b), 6});
     q.b = r.a;
     SCOPED_TRACE(length);
-    const std::vector<WallBlock> all = expect_exact_walls({q.a, r.a, r.b}, 2);
+    const std::vector<GeneratedBlock> all = expect_exact_walls({q.a, r.a, r.b}, 2);
     for (const CornerPair* pair : {&q, &r})
       for (const WallSpec* s : {&pair->a, &pair->b}) {
         const WallSpec& other = s == &pair->a ? pair->b : pair->a;

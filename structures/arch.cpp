@@ -1,7 +1,7 @@
 // The arch builder: the profile, the joints along it, a quadrilateral per
 // voussoir, the supports' polygons; every block a right prism of its convex
 // polygon (make_prism), turned and moved into place. What the blocks are
-// and why is at the top of geometry/arch.hpp.
+// and why is at the top of structures/arch.hpp.
 //
 // Exactness: neighbouring voussoirs are built from the very same joint
 // points (a(s), e(s) computed once per joint and reused), so the joint is the
@@ -9,8 +9,8 @@
 // the same way. The left half of the arch is computed, the right half is its
 // mirror image (x -> −x, exact in floating point), so the arch is symmetric to
 // the last bit.
-#include "geometry/generator_text.hpp"
-#include "geometry/arch.hpp"
+#include "structures/generator_text.hpp"
+#include "structures/arch.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -84,16 +84,6 @@ double shoelace(const std::vector<Vec2>& p) {
 }
 
 }  // namespace
-
-const char* to_string(ArchBlockKind kind) {
-  switch (kind) {
-    case ArchBlockKind::voussoir: return "voussoir";
-    case ArchBlockKind::pier: return "pier";
-    case ArchBlockKind::abutment: return "abutment";
-    case ArchBlockKind::base: return "base";
-  }
-  return "?";
-}
 
 ArchProfile arch_profile(const ArchSpec& s) {
   ArchProfile p;
@@ -309,14 +299,14 @@ ArchModel build_arch(const ArchSpec& s) {
       for (std::size_t i = 0; i + 1 < js.size(); ++i) {
         const std::vector<Vec2> quad = {js[i].intrados + shift, js[i + 1].intrados + shift,
                                         js[i + 1].extrados + shift, js[i].extrados + shift};
-        ArchBlock b;
+        GeneratedBlock b;
         try {
           b.shape = prism(quad, y0, y1);
         } catch (const GeometryError& e) {
           throw ArchSpecError("thickness", std::string("voussoir ") + std::to_string(i) +
                                                 " is not a convex quadrilateral (" + e.what() + ")");
         }
-        b.kind = ArchBlockKind::voussoir;
+        b.kind = BlockKind::voussoir;
         b.span = sp;
         b.ring = r;
         b.index = static_cast<int>(i);
@@ -366,14 +356,14 @@ ArchModel build_arch(const ArchSpec& s) {
           poly.push_back({xl, ztop});
         }
       }
-      ArchBlock b;
+      GeneratedBlock b;
       try {
         b.shape = prism(corners_only(poly, tol), -0.5 * s.depth, 0.5 * s.depth);
       } catch (const GeometryError& e) {
         throw ArchSpecError("pier_width", std::string("support ") + std::to_string(i) +
                                               " cannot carry its springing joints (" + e.what() + ")");
       }
-      b.kind = pier ? ArchBlockKind::pier : ArchBlockKind::abutment;
+      b.kind = pier ? BlockKind::pier : BlockKind::abutment;
       b.index = i;
       b.course = pier ? c : -1;
       b.name = (pier ? "pier" : "abutment") + zero_padded(i, digits_for(s.spans));
@@ -395,9 +385,9 @@ ArchModel build_arch(const ArchSpec& s) {
     }
     lo -= m;
     hi += m;
-    ArchBlock b;
+    GeneratedBlock b;
     b.shape = prism({{lo, z0}, {hi, z0}, {hi, z1}, {lo, z1}}, -0.5 * s.depth - m, 0.5 * s.depth + m);
-    b.kind = ArchBlockKind::base;
+    b.kind = BlockKind::base;
     b.name = "base";
     model.blocks.push_back(std::move(b));
   }

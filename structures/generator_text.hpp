@@ -1,5 +1,5 @@
 // Text the block generators (spire, wall, tower, arch, column) put in block
-// names and error messages. Internal to geometry/.
+// names and error messages. Internal to structures/.
 #pragma once
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 // The column generator: volumes against closed forms computed here (the
 // inscribed polygon ½ N r² sin(2π/N) times the height; the frustum's
 // h/3 (A0 + A1 + √(A0 A1))), beds shared exactly, and the spec errors.
-#include "geometry/column.hpp"
+#include "structures/column.hpp"
 
 #include <gtest/gtest.h>
 
@@ -42,7 +42,7 @@ TEST(Column, DrumsPlinthAndAbacusAreExact) {
   EXPECT_EQ(m.blocks.back().name, "capital");
   double drums = 0;
   for (const auto& b : m.blocks)
-    if (b.kind == ColumnBlockKind::drum) {
+    if (b.kind == BlockKind::drum) {
       drums += volume(b.shape);
       EXPECT_NEAR(volume(b.shape), polygon_area(20, 0.4) * 0.6, 1e-9 * 0.6) << b.name;
     }

@@ -35,8 +35,8 @@
 // which with O and the head blocks tile the face's courses. The pieces are
 // cut from S by clip(): S's corners on the kept side plus the crossings of
 // its edges, hulled again (convex_hull, CGAL).
-#include "geometry/generator_text.hpp"
-#include "geometry/spire.hpp"
+#include "structures/generator_text.hpp"
+#include "structures/spire.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -273,16 +273,6 @@ double spire_outer_inradius(const SpireSpec& s, double z) {
 
 double spire_inner_inradius(const SpireSpec& s, double z) { return spire_outer_inradius(s, z) - thickness_at(s, z); }
 
-const char* to_string(SpireBlockKind kind) {
-  switch (kind) {
-    case SpireBlockKind::base: return "base";
-    case SpireBlockKind::stone: return "stone";
-    case SpireBlockKind::window_piece: return "window_piece";
-    case SpireBlockKind::tip: return "tip";
-  }
-  return "?";
-}
-
 void validate_spire(const SpireSpec& s) {
   require_finite_positive(s.height, "height");
   require_finite_positive(s.tip_height, "tip_height");
@@ -371,9 +361,9 @@ SpireModel build_spire(const SpireSpec& s) {
       const double phi = k * kPi / 4.0 + kPi / 8.0;
       octagon.emplace_back(R * std::cos(phi), R * std::sin(phi));
     }
-    SpireBlock b;
+    GeneratedBlock b;
     b.shape = make_prism(octagon, -s.base_thickness, 0.0);
-    b.kind = SpireBlockKind::base;
+    b.kind = BlockKind::base;
     b.name = "base";
     model.blocks.push_back(std::move(b));
   }
@@ -512,12 +502,12 @@ SpireModel build_spire(const SpireSpec& s) {
         if (!cut) pieces.push_back(std::move(stone));
         if (cut) ++model.stones_cut_by_windows;
         for (size_t p = 0; p < pieces.size(); ++p) {
-          SpireBlock b;
+          GeneratedBlock b;
           b.shape = std::move(pieces[p]);
-          b.kind = cut ? SpireBlockKind::window_piece : SpireBlockKind::stone;
+          b.kind = cut ? BlockKind::window_piece : BlockKind::stone;
           b.course = c;
           b.face = k;
-          b.stone = i;
+          b.index = i;
           b.piece = cut ? static_cast<int>(p) : -1;
           b.name = cut ? name + "_piece" + std::to_string(p) : name;
           if (cut) ++model.window_pieces;
@@ -543,9 +533,9 @@ SpireModel build_spire(const SpireSpec& s) {
             throw GeometryError("spire: cannot build " + name + ": " + e.what());
           }
           if (!shape) throw GeometryError("spire: " + name + " is empty");
-          SpireBlock b;
+          GeneratedBlock b;
           b.shape = std::move(*shape);
-          b.kind = SpireBlockKind::window_piece;
+          b.kind = BlockKind::window_piece;
           b.course = c;
           b.face = k;
           b.piece = static_cast<int>(v);
@@ -560,9 +550,9 @@ SpireModel build_spire(const SpireSpec& s) {
   std::vector<Plane> tip_planes;
   for (int k = 0; k < 8; ++k) tip_planes.push_back(outer_plane(s, k));
   tip_planes.push_back(z_at_least(model.shell_top));
-  SpireBlock tip;
+  GeneratedBlock tip;
   tip.shape = intersect(tip_planes, Vec3(0, 0, model.shell_top + 0.25 * s.tip_height));
-  tip.kind = SpireBlockKind::tip;
+  tip.kind = BlockKind::tip;
   tip.course = model.n_courses;
   tip.name = "tip";
   model.blocks.push_back(std::move(tip));
