@@ -26,6 +26,9 @@ The CSVs:
                  value, unit (benchmarks/spire_speed.py, benchmarks/build_time.sh
                  and by hand from .ci/run's log)
   error_vs_time.csv, throughput.csv   written by the benchmark programs
+  convergence.csv  the spire's answers per numerical setting: machine, cpu,
+                 commit, date, case, setting, quantity, value, unit
+                 (benchmarks/convergence.py)
 The tables show the commit each figure was measured at; the machine and the
 date stay in the CSV.
 
@@ -191,6 +194,61 @@ def table_wall_scaling():
     return body + f'\nFrom `benchmarks/wall_scaling.py` at {csv_comment("wall_scaling.csv", "polydem")}, one run a case.\n'
 
 
+def table_convergence():
+    """benchmarks/convergence.py's runs: one row per numerical setting, the
+    answers of each case as columns."""
+    path = os.path.join(RESULTS, "convergence.csv")
+    if not os.path.exists(path):
+        return "(not measured yet)\n"
+    rows = read_csv("convergence.csv")
+    got = {}
+    for r in rows:
+        got.setdefault((r["case"], r["setting"]), {})[r["quantity"]] = r["value"]
+    order = ["default", "safety factor 0.4", "safety factor 0.2", "margin x0.5", "margin x2", "split damping"]
+    settings = sorted({r["setting"] for r in rows}, key=lambda s: (order.index(s) if s in order else len(order), s))
+
+    def crack(q):
+        if "crack angle" not in q:
+            return "none"
+        return f'{q["crack angle"]}°, z {q["crack lowest z"]}–{q["crack highest z"]} m ({q["opened joints"]} joints)'
+
+    def outcome(q):
+        text = q["status"] + (f' {q["collapse mode"]}' if q["collapse mode"] != "-" else "")
+        if "collapse time" in q:
+            text += f' at {q["collapse time"]} s'
+        return text + f', {q["dislodged"]} fell'
+
+    def setting_name(s):
+        name = s.replace(" x", " ×")
+        margin = got.get(("main", s), {}).get("contact margin")
+        return f"{name} ({1000 * float(margin):.2f} mm)" if s.startswith("margin") and margin else name
+
+    header = ["setting", "time step (µs)", "mechanism (g)", "crack", "stones fallen", "main job",
+              "pulse 0.25 g", "pulse 0.35 g", "pulse 0.5 g", "λ onto a window face (g, bracket)"]
+    table = []
+    for s in settings:
+        m = got.get(("main", s))
+        line = [setting_name(s)]
+        if m:
+            line += [f'{1e6 * float(m["time step"]):.2f}', m["mechanism acceleration"], crack(m),
+                     m["dislodged"], m["status"] + (f' {m["collapse mode"]}' if m["collapse mode"] != "-" else "")]
+        else:
+            line += ["not run"] * 5
+        for case in ("pulse25", "pulse35", "pulse50"):
+            q = got.get((case, s))
+            line.append(outcome(q) if q else "not run")
+        q = got.get(("lambda", s))
+        line.append(f'{q["lambda"]} ({q["lambda bracket low"]}–{q["lambda bracket high"]}); crack {crack(q)}'
+                    if q else "not run")
+        table.append(line)
+    commits = sorted({r["commit"] for r in rows})
+    return (markdown(header, table) +
+            f"\nFrom `benchmarks/convergence.py build/polydem` at {', '.join(commits)}, one run per cell on "
+            "1 thread (λ: five trials, the bracket halved to 0.00625 g); the wall times, steps, margins and "
+            "energy lines are in benchmarks/results/convergence.csv. The crack counts the detected joints open "
+            "by more than 2.5 mm (half the damage displacement), which a margin below that never keeps.\n")
+
+
 SOURCE_EXT = (".cpp", ".hpp", ".inc", ".h")
 NOT_SOURCE = {"tests", "benchmarks", "fuzz", "examples", "docs", "scripts"}
 
@@ -260,6 +318,7 @@ TABLES = {
     "throughput": table_throughput,
     "layout": table_layout,
     "wall_scaling": table_wall_scaling,
+    "convergence": table_convergence,
     "deck_example": table_deck_example,
     "python_example": table_python_example,
     "python_example_output": table_python_example_output,
