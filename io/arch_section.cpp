@@ -33,115 +33,87 @@ int small_integer(const TableReader& r, std::string_view key, int fallback, int 
   return static_cast<int>(*n);
 }
 
-void read_one_arch(const Deck& deck, const toml::table& t, std::size_t number, std::size_t count, Generated& out) {
-  const std::string path = indexed("arch", number);
-  const TableReader r(deck, t, path, kArchKeys);
-  ArchSpec s;
-  std::string name = count > 1 ? "arch" + std::to_string(number) : "arch";
-  if (const auto n = r.string("name")) {
-    if (n->empty()) r.fail("name", "must not be empty (it prefixes the blocks' names)");
-    name = *n;
-  }
-  s.shape = r.choice<ArchShape>("shape",
-                                {{"circular", ArchShape::circular},
-                                 {"segmental", ArchShape::segmental},
-                                 {"pointed", ArchShape::pointed}},
-                                s.shape);
-  const std::string shape_name = r.string("shape").value_or("circular");
-  const std::string not_for = "is not used by shape = \"" + shape_name + "\"";
-  switch (s.shape) {
-    case ArchShape::circular:
-      refuse(r, "rise", not_for + " (a segmental arch: shape = \"segmental\")");
-      refuse(r, "pointedness", not_for + " (shape = \"pointed\")");
-      if (r.has("span") && r.has("radius"))
-        r.fail("radius", "give span or radius, not both (span = 2 radius sin(embrace/2))");
-      s.radius = r.number("radius", 0.0, Range::positive);
-      s.span = r.number("span", r.has("radius") ? 0.0 : 2.0, Range::positive);
-      s.embrace = r.number("embrace", s.embrace, Range::positive);
-      break;
-    case ArchShape::segmental:
-      refuse(r, "radius", not_for + ": a segmental arch is given by span and rise");
-      refuse(r, "embrace", not_for + ": a segmental arch is given by span and rise");
-      refuse(r, "pointedness", not_for);
-      s.span = r.number("span", 2.0, Range::positive);
-      if (!r.has("rise")) r.missing("rise", "a segmental arch needs its rise (intrados, springing line to crown)");
-      s.rise = r.number("rise", 0.0, Range::positive);
-      break;
-    case ArchShape::pointed:
-      refuse(r, "radius", not_for + ": a pointed arch is given by span and pointedness");
-      refuse(r, "embrace", not_for);
-      refuse(r, "rise", not_for);
-      s.span = r.number("span", 2.0, Range::positive);
-      s.pointedness = r.number("pointedness", s.pointedness, Range::positive);
-      break;
-  }
-  s.voussoirs = small_integer(r, "voussoirs", s.voussoirs, 3, 1000);
-  s.thickness = r.number("thickness", s.thickness, Range::positive);
-  s.depth = r.number("depth", s.depth, Range::positive);
-  s.rings = small_integer(r, "rings", s.rings, 1, 200);
-  s.spans = small_integer(r, "spans", s.spans, 1, 50);
-  s.supports = r.choice<ArchSupports>("supports",
-                                      {{"abutments", ArchSupports::abutments},
-                                       {"piers", ArchSupports::piers},
-                                       {"base", ArchSupports::base}},
-                                      s.supports);
-  if (s.supports != ArchSupports::piers)
-    refuse(r, "pier_courses", "only piers have courses (supports = \"piers\")");
-  if (s.supports == ArchSupports::base)
-    refuse(r, "pier_height", "there are no piers on a fixed base (supports = \"base\")");
-  if (s.supports == ArchSupports::abutments)
-    refuse(r, "base_thickness", "abutments stand on nothing: there is no base slab (supports = \"abutments\")");
-  s.pier_width = r.number("pier_width", 0.0, Range::positive);
-  s.pier_height = r.number("pier_height", 0.0, Range::positive);
-  s.pier_courses = small_integer(r, "pier_courses", s.pier_courses, 1, 100);
-  s.base_thickness = r.number("base_thickness", 0.0, Range::positive);
-  s.origin = r.vec3("origin").value_or(s.origin);
-  s.direction = r.vec3("direction").value_or(s.direction);
-  const double density = r.number("density", 2600.0, Range::positive);
-  const BlockMotion support_motion = r.choice<BlockMotion>(
-      "support_motion", {{"fixed", BlockMotion::fixed}, {"kinematic", BlockMotion::kinematic}}, BlockMotion::fixed);
+struct ArchSection {
+  using Spec = ArchSpec;
 
-  ArchModel model;
-  try {
-    model = build_arch(s);
-  } catch (const ArchSpecError& e) {
-    r.fail(e.field, e.detail);
-  } catch (const GeometryError& e) {
-    deck.fail(path, &t, std::string("cannot build the arch: ") + e.what());
+  static constexpr GeneratorRules rules{.section = "arch",
+                                        .keys = kArchKeys,
+                                        .order = 40,
+                                        .single = false,
+                                        .naming = Naming::prefix,
+                                        .motion_key = "support_motion",
+                                        .grouping = Grouping::kind,
+                                        .group_by = {},
+                                        .max_blocks = 20000};
+
+  static ArchSpec read(GeneratorTable& table, std::vector<ArchSpec>&) {
+    const TableReader& r = table.reader();
+    ArchSpec s;
+    s.shape = r.choice<ArchShape>("shape",
+                                  {{"circular", ArchShape::circular},
+                                   {"segmental", ArchShape::segmental},
+                                   {"pointed", ArchShape::pointed}},
+                                  s.shape);
+    const std::string shape_name = r.string("shape").value_or("circular");
+    const std::string not_for = "is not used by shape = \"" + shape_name + "\"";
+    switch (s.shape) {
+      case ArchShape::circular:
+        refuse(r, "rise", not_for + " (a segmental arch: shape = \"segmental\")");
+        refuse(r, "pointedness", not_for + " (shape = \"pointed\")");
+        if (r.has("span") && r.has("radius"))
+          r.fail("radius", "give span or radius, not both (span = 2 radius sin(embrace/2))");
+        s.radius = r.number("radius", 0.0, Range::positive);
+        s.span = r.number("span", r.has("radius") ? 0.0 : 2.0, Range::positive);
+        s.embrace = r.number("embrace", s.embrace, Range::positive);
+        break;
+      case ArchShape::segmental:
+        refuse(r, "radius", not_for + ": a segmental arch is given by span and rise");
+        refuse(r, "embrace", not_for + ": a segmental arch is given by span and rise");
+        refuse(r, "pointedness", not_for);
+        s.span = r.number("span", 2.0, Range::positive);
+        if (!r.has("rise")) r.missing("rise", "a segmental arch needs its rise (intrados, springing line to crown)");
+        s.rise = r.number("rise", 0.0, Range::positive);
+        break;
+      case ArchShape::pointed:
+        refuse(r, "radius", not_for + ": a pointed arch is given by span and pointedness");
+        refuse(r, "embrace", not_for);
+        refuse(r, "rise", not_for);
+        s.span = r.number("span", 2.0, Range::positive);
+        s.pointedness = r.number("pointedness", s.pointedness, Range::positive);
+        break;
+    }
+    s.voussoirs = small_integer(r, "voussoirs", s.voussoirs, 3, 1000);
+    s.thickness = r.number("thickness", s.thickness, Range::positive);
+    s.depth = r.number("depth", s.depth, Range::positive);
+    s.rings = small_integer(r, "rings", s.rings, 1, 200);
+    s.spans = small_integer(r, "spans", s.spans, 1, 50);
+    s.supports = r.choice<ArchSupports>("supports",
+                                        {{"abutments", ArchSupports::abutments},
+                                         {"piers", ArchSupports::piers},
+                                         {"base", ArchSupports::base}},
+                                        s.supports);
+    if (s.supports != ArchSupports::piers)
+      refuse(r, "pier_courses", "only piers have courses (supports = \"piers\")");
+    if (s.supports == ArchSupports::base)
+      refuse(r, "pier_height", "there are no piers on a fixed base (supports = \"base\")");
+    if (s.supports == ArchSupports::abutments)
+      refuse(r, "base_thickness", "abutments stand on nothing: there is no base slab (supports = \"abutments\")");
+    s.pier_width = r.number("pier_width", 0.0, Range::positive);
+    s.pier_height = r.number("pier_height", 0.0, Range::positive);
+    s.pier_courses = small_integer(r, "pier_courses", s.pier_courses, 1, 100);
+    s.base_thickness = r.number("base_thickness", 0.0, Range::positive);
+    s.origin = r.vec3("origin").value_or(s.origin);
+    s.direction = r.vec3("direction").value_or(s.direction);
+    return s;
   }
 
-  out.parts.push_back(generated_part(path, &t, r.line(), density, model.blocks, [&](const GeneratedBlock& ab) {
-    BlockSpec b;
-    b.name = name;
-    b.name.append("_").append(ab.name);
-    b.shape = ab.shape;
-    const bool support = ab.kind == BlockKind::abutment || ab.kind == BlockKind::base;
-    b.motion = support ? support_motion : BlockMotion::free;
-    b.course = ab.kind == BlockKind::voussoir ? ab.ring : ab.course;
-    b.group = to_string(ab.kind);
-    return b;
-  }));
-}
+  static ArchModel build(const ArchSpec& s) { return build_arch(s); }
+};
 
-// All the [[arch]] tables of a deck together build at most this many blocks
+// All the [[arch]] tables of a deck together build at most 20000 blocks
 // (each at most 5000): a short deck cannot ask for millions.
-constexpr std::size_t kMaxArchBlocks = 20000;
-
-void read_arch_sections(const Deck& deck, Generated& out, SceneSpec&) {
-  const auto tables = section_tables(deck, "arch");
-  std::size_t total = 0;
-  for (std::size_t i = 0; i < tables.size(); ++i) {
-    read_one_arch(deck, *tables[i], i + 1, tables.size(), out);
-    total += out.parts.back().blocks.size();
-    if (total > kMaxArchBlocks)
-      deck.fail(indexed("arch", i + 1), tables[i],
-                "the [[arch]] tables up to this one build " + std::to_string(total) + " blocks (at most " +
-                    std::to_string(kMaxArchBlocks) + " in a deck)");
-  }
-}
+const RegisteredSection registered(generator_section<ArchSection>());
 
 }  // namespace
-
-const GeneratorSection kArchSection{"arch", kArchKeys, read_arch_sections};
 
 }  // namespace polydem

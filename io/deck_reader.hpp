@@ -138,6 +138,11 @@ class TableReader {
   // One of `names` (mapped to `values`); `fallback` when absent.
   template <class E>
   E choice(std::string_view key, std::initializer_list<std::pair<std::string_view, E>> options, E fallback) const {
+    return choice(key, std::span<const std::pair<std::string_view, E>>(options.begin(), options.size()), fallback);
+  }
+
+  template <class E>
+  E choice(std::string_view key, std::span<const std::pair<std::string_view, E>> options, E fallback) const {
     const auto s = string(key);
     if (!s) return fallback;
     std::vector<std::string_view> names;

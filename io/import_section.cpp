@@ -176,8 +176,10 @@ void read_import_sections(const Deck& deck, Generated& out, SceneSpec& scene) {
   for (std::size_t i = 0; i < tables.size(); ++i) read_import(deck, *tables[i], i + 1, out, scene);
 }
 
-}  // namespace
+// Read after the generators of structures/: its parts' names are checked against their blocks'.
+const RegisteredSection registered(
+    {.name = "import", .keys = kImportKeys, .order = 90, .read = read_import_sections});
 
-const GeneratorSection kImportSection{"import", kImportKeys, read_import_sections};
+}  // namespace
 
 }  // namespace polydem

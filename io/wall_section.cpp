@@ -23,65 +23,26 @@ constexpr std::string_view kWallKeys[] = {
     "density", "group_by",      "group",  "gable_height", "corner_with", "corner_at", "turn",          "opening",         "opening.position", "opening.sill",
     "opening.width", "opening.height", "opening.head", "opening.bearing", "opening.voussoirs", "opening.ring"};
 
-std::vector<std::string_view> table_keys() {
-  std::vector<std::string_view> out;
-  for (std::string_view k : kWallKeys)
-    if (k.find('.') == std::string_view::npos) out.push_back(k);
-  return out;
-}
+constexpr std::pair<std::string_view, Grouping> kWallGroupings[] = {
+    {"course", Grouping::course}, {"leaf", Grouping::leaf}, {"kind", Grouping::kind}, {"wall", Grouping::section}};
 
-std::vector<std::string_view> opening_keys() {
-  std::vector<std::string_view> out;
-  for (std::string_view k : kWallKeys)
-    if (k.rfind("opening.", 0) == 0) out.push_back(k.substr(8));
-  return out;
-}
-
-enum class GroupBy { course, leaf, kind, wall };
-
-struct WallSection {
+// A wall as its table gives it, and where it meets an earlier wall.
+struct WallTable {
   WallSpec spec;
-  WallModel model;
-  double density = 2600.0;
-  GroupBy group_by = GroupBy::course;
-  std::string group_prefix;
-  int line = 0;
-  const toml::table* table = nullptr;
-  std::string path;                  // "wall[2]"
-  std::vector<TableReader> readers;  // [0]: the wall's, then its openings'
   // A corner with an earlier wall: its name, at its end or start, turning left or right.
   std::string corner_with;
   bool corner_at_end = true;
   bool turn_left = true;
 };
 
-std::string two_digits(int v) {
-  std::string s = std::to_string(v);
-  if (s.size() < 2) s.insert(s.begin(), '0');
-  return s;
-}
-
-WallSection read_wall(const Deck& deck, const toml::table& t, std::size_t index) {
-  const std::string path = indexed("wall", index + 1);
-  static const std::vector<std::string_view> keys = table_keys();
-  WallSection out;
-  out.path = path;
-  // The openings' readers go after the wall's: room for all of them first,
-  // so that `r` below stays valid.
-  const toml::node* openings_node = t.get("opening");
-  const auto* openings_array = openings_node ? openings_node->as_array() : nullptr;
-  out.readers.reserve(1 + (openings_array ? openings_array->size() : 0));
-  out.readers.emplace_back(deck, t, path, keys);
-  const TableReader& r = out.readers.front();
-  out.line = r.line();
-  out.table = &t;
+WallTable read_wall(const GeneratorRules& rules, GeneratorTable& table) {
+  const TableReader& r = table.reader();
+  WallTable out;
   WallSpec& s = out.spec;
-  s.name = r.string("name").value_or("wall" + std::to_string(index + 1));
-  if (s.name.empty() || s.name.find_first_of(" \t\n\"") != std::string::npos)
-    r.fail("name", "must be a non-empty name without spaces or quotes (it starts every block's name)");
+  s.name = table.name;
 
   // Where the wall stands: origin + direction + length, start + end, or at
-  // a corner of an earlier wall (placed by read_wall_sections).
+  // a corner of an earlier wall (placed by WallSection::read).
   if (r.has("corner_with")) {
     for (const char* k : {"origin", "direction", "start", "end"})
       if (r.has(k)) r.fail(k, "a wall at a corner (corner_with) is placed by the wall it meets: give only its length");
@@ -139,77 +100,23 @@ WallSection read_wall(const Deck& deck, const toml::table& t, std::size_t index)
     s.through_every = static_cast<int>(*n);
   }
   s.gable_height = r.number("gable_height", s.gable_height, Range::non_negative);
-  out.density = r.number("density", out.density, Range::positive);
-  out.group_by = r.choice<GroupBy>(
-      "group_by", {{"course", GroupBy::course}, {"leaf", GroupBy::leaf}, {"kind", GroupBy::kind}, {"wall", GroupBy::wall}},
-      out.group_by);
-  out.group_prefix = r.string("group").value_or("");
 
-  // [[wall.opening]] tables.
-  std::vector<const toml::table*> opening_tables;
-  if (const toml::node* n = t.get("opening")) {
-    const auto* arr = n->as_array();
-    if (!arr) r.fail("opening", "must be an array of tables: write [[wall.opening]] under its [[wall]] (got " + describe(*n) + ")");
-    for (std::size_t i = 0; i < arr->size(); ++i) {
-      const auto* ot = arr->get(i)->as_table();
-      if (!ot)
-        deck.fail(indexed(r.key_path("opening"), i + 1), arr->get(i),
-                  "must be a table: write [[wall.opening]] (got " + describe(*arr->get(i)) + ")");
-      opening_tables.push_back(ot);
-    }
-  }
-  static const std::vector<std::string_view> okeys = opening_keys();
-  const std::string opening_path = r.key_path("opening");
-  for (std::size_t i = 0; i < opening_tables.size(); ++i) {
-    out.readers.emplace_back(deck, *opening_tables[i], indexed(opening_path, i + 1), okeys);
-    const TableReader& o = out.readers.back();
+  open_openings(rules, table);
+  for (std::size_t i = 1; i < table.readers.size(); ++i) {
+    const TableReader& o = table.readers[i];
     WallOpening op;
     for (const char* k : {"position", "width", "height"})
       if (!o.has(k)) o.missing(k, "an opening needs position, width and height");
     op.position = o.number("position", 0.0, Range::any);
-    op.sill = o.number("sill", 0.0, Range::non_negative);
-    op.width = o.number("width", 0.0, Range::positive);
-    op.height = o.number("height", 0.0, Range::positive);
-    op.head = o.choice<OpeningHead>("head", {{"lintel", OpeningHead::lintel}, {"arch", OpeningHead::arch}}, op.head);
-    if (op.head == OpeningHead::lintel) {
-      for (const char* k : {"voussoirs", "ring"})
-        if (o.has(k)) o.fail(k, "applies to head = \"arch\" only");
-      op.bearing = o.number("bearing", 0.0, Range::positive);
-    } else {
-      if (o.has("bearing")) o.fail("bearing", "applies to head = \"lintel\" only");
-      if (const auto n = o.integer("voussoirs")) {
-        if (*n < 3 || *n > 64) o.fail("voussoirs", "must be in [3, 64] (got " + std::to_string(*n) + ")");
-        op.voussoirs = static_cast<int>(*n);
-      }
-      op.ring = o.number("ring", 0.0, Range::positive);
-    }
+    read_opening(o, op);
     s.openings.push_back(op);
   }
-
   return out;
-}
-
-void build_section(const Deck& deck, WallSection& w) {
-  const TableReader& r = w.readers.front();
-  try {
-    w.model = build_wall(w.spec);
-  } catch (const WallSpecError& e) {
-    std::string key = e.field;
-    if (key == "unit_length" || key == "unit_height" || key == "unit_width") key = "unit_size";
-    if ((key == "corners" || key == "course_shift") && r.has("corner_with")) key = "corner_with";
-    if (e.opening >= 0) w.readers[static_cast<std::size_t>(e.opening) + 1].fail(key, e.detail);
-    if (key == "length" && !r.has("length") && r.has("end")) key = "end";
-    if (key == "height" && !r.has("height") && r.has("courses")) key = "courses";
-    r.fail(key, e.detail);
-  } catch (const GeometryError& e) {
-    deck.fail(w.path, w.table, std::string("cannot build the wall: ") + e.what());
-  }
 }
 
 // Wall b at a corner of the earlier wall a: b's frame from a's, and the
 // corner's cuts on both (structures/wall.hpp, WallCorner).
-void place_at_corner(WallSection& b, WallSection& a) {
-  const TableReader& r = b.readers.front();
+void place_at_corner(const TableReader& r, WallTable& b, WallTable& a) {
   WallSpec& A = a.spec;
   WallSpec& B = b.spec;
   const bool a_running = A.bond == WallBond::stretcher, b_running = B.bond == WallBond::stretcher;
@@ -261,49 +168,49 @@ void place_at_corner(WallSection& b, WallSection& a) {
   A.corners.push_back({b.corner_at_end, tb, 1 - quoin_parity(A), shared});
   B.corners.push_back({false, ta, 1 - quoin_parity(B), shared});
 }
-std::string group_of(const WallSection& w, const GeneratedBlock& b) {
-  std::string g = w.group_prefix;
-  switch (w.group_by) {
-    case GroupBy::course: g.append("course").append(two_digits(b.course)); break;
-    case GroupBy::leaf: g.append(b.leaf >= 0 ? "leaf" + std::to_string(b.leaf) : std::string("through")); break;
-    case GroupBy::kind: g.append(to_string(b.kind)); break;
-    case GroupBy::wall: g.append(w.spec.name); break;
-  }
-  return g;
-}
+struct WallSection {
+  using Spec = WallTable;
 
-void read_wall_sections(const Deck& deck, Generated& out, SceneSpec&) {
-  const std::vector<const toml::table*> tables = section_tables(deck, "wall");
-  std::vector<WallSection> walls;
-  for (std::size_t i = 0; i < tables.size(); ++i) {
-    WallSection w = read_wall(deck, *tables[i], i);
+  static constexpr GeneratorRules rules{.section = "wall",
+                                        .keys = kWallKeys,
+                                        .order = 20,
+                                        .single = false,
+                                        .naming = Naming::owned,
+                                        .motion_key = "",
+                                        .grouping = Grouping::course,
+                                        .group_by = kWallGroupings,
+                                        .max_blocks = 0};
+
+  static WallTable read(GeneratorTable& table, std::vector<WallTable>& earlier) {
+    WallTable w = read_wall(rules, table);
     if (!w.corner_with.empty()) {
       std::size_t j = 0;
-      while (j < walls.size() && walls[j].spec.name != w.corner_with) ++j;
-      if (j == walls.size())
-        w.readers.front().fail("corner_with", "no [[wall]] above this one is named " + in_quotes(w.corner_with));
-      place_at_corner(w, walls[j]);
+      while (j < earlier.size() && earlier[j].spec.name != w.corner_with) ++j;
+      if (j == earlier.size())
+        table.reader().fail("corner_with", "no [[wall]] above this one is named " + in_quotes(w.corner_with));
+      place_at_corner(table.reader(), w, earlier[j]);
     }
-    require_new_section_name(deck, "wall", *tables[i], i, w.spec.name, walls);
-    walls.push_back(std::move(w));
+    return w;
   }
-  for (WallSection& w : walls) build_section(deck, w);
-  for (std::size_t i = 0; i < walls.size(); ++i) {
-    const WallSection& w = walls[i];
-    out.parts.push_back(generated_part(indexed("wall", i + 1), w.table, w.line, w.density, w.model.blocks,
-                                       [&](const GeneratedBlock& wb) {
-                                         BlockSpec b;
-                                         b.name = wb.name;
-                                         b.shape = wb.shape;
-                                         b.course = wb.course;
-                                         b.group = group_of(w, wb);
-                                         return b;
-                                       }));
+
+  static WallModel build(const WallTable& w) { return build_wall(w.spec); }
+
+  // The deck key of a field: the unit's sizes are one key, a corner's
+  // fields the corner's, and the length or height the key that gave it.
+  static std::string key_of(const GeneratorTable& table, const GeneratorSpecError& e) {
+    const TableReader& r = table.reader();
+    std::string key = e.field;
+    if (key == "unit_length" || key == "unit_height" || key == "unit_width") key = "unit_size";
+    if ((key == "corners" || key == "course_shift") && r.has("corner_with")) key = "corner_with";
+    if (e.opening >= 0) return key;
+    if (key == "length" && !r.has("length") && r.has("end")) key = "end";
+    if (key == "height" && !r.has("height") && r.has("courses")) key = "courses";
+    return key;
   }
-}
+};
+
+const RegisteredSection registered(generator_section<WallSection>());
 
 }  // namespace
-
-const GeneratorSection kWallSection{"wall", kWallKeys, read_wall_sections};
 
 }  // namespace polydem
