@@ -3,6 +3,61 @@
 // so several arches in one deck stay apart; the blocks' groups say what they
 // are ("voussoir", "pier", "abutment", "base") and the voussoirs' and piers'
 // `course` their ring or course.
+//
+// The section's reference in docs/deck.md is the comment below
+// (scripts/doc_tables.py copies it there).
+/* docs/deck.md
+## `[[arch]]`
+
+Arches of voussoirs with radial joints, barrel vaults and arcades
+(`structures/arch.hpp`; what each block is, pictures and the verification:
+docs/structures.md, "Arches"). Each `[[arch]]` table builds one arch (or one
+arcade of `spans` arches); a deck may hold several. The blocks are appended
+after any `[[block]]` tables, named `NAME_…` with the table's `name`:
+`NAME_voussoirVV` (VV from 00 at the left springing), with `spanS_` and
+`ringR_` before it when there are several spans or rings, `NAME_abutmentI`,
+`NAME_pierI` (`NAME_pierI_courseC` with several courses; I from 0 at −x) and
+`NAME_base`. Their `group` is `voussoir`, `abutment`, `pier` or `base`;
+a voussoir's `course` is its ring, a pier block's its course. Two tables
+whose blocks would share a name are an error.
+
+Frame: x along the span (`direction`), z up, y along the arch's axis; the
+origin is the middle of the springing line (of the whole arcade) at
+mid-depth. Every voussoir is the quadrilateral of its two joints' ends
+extruded over its ring's depth: the intrados and extrados arcs are replaced by
+chords, so the voussoirs fill the polygonal ring through the joints exactly.
+
+| Key | Type | Unit | Default | Meaning |
+|---|---|---|---|---|
+| `name` | string | – | `"arch"` (`"archN"` when the deck has several) | Prefix of the blocks' names; must not be empty. |
+| `shape` | string | – | `"circular"` | `"circular"` (one circle, any `embrace`), `"segmental"` (by `span` and `rise`) or `"pointed"` (two centres, by `span` and `pointedness`). |
+| `span` | float | m | `2` | Clear span between the springings at the intrados; > 0. A circular arch takes `span` or `radius`, not both. |
+| `radius` | float | m | from `span` | Circular only: the intrados radius R; > 0. span = 2 R sin(embrace/2). |
+| `embrace` | float | deg | `180` | Circular only: the arc's angle, in (0, 360): 180 a semicircle on the springing line, less a segmental arch, more a horseshoe. |
+| `rise` | float | m | required | Segmental only: the intrados rise from the springing line to the crown, in (0, span/2). |
+| `pointedness` | float | – | `1` | Pointed only: each arc's centre lies on the springing line at c = pointedness × span/2 from the middle, on the far side (radius span/2 + c); 1 the equilateral arch, < 1 a drop arch, > 1 a lancet. In (0, 2]. |
+| `voussoirs` | integer | – | `9` | Voussoirs per ring, in [3, 1000], of equal angle (pointed: per arc, half each; an even count puts a vertical crown joint at the apex, an odd one a keystone with flat chords under and over the apex). |
+| `thickness` | float | m | `0.3` | Ring thickness t along the radius; > 0 and less than the intrados radius. |
+| `depth` | float | m | `1` | Width of the arch along its axis (all rings together); > 0. |
+| `rings` | integer | – | `1` | A barrel vault: rings of equal depth along the axis, in [1, 200]. Odd rings are shifted by half a voussoir (`voussoirs` + 1 voussoirs, a half one at each springing). |
+| `spans` | integer | – | `1` | Arches side by side along x, `pier_width` apart, sharing their interior supports; in [1, 50]. |
+| `supports` | string | – | `"abutments"` | `"abutments"`: a fixed block under each springing; `"piers"`: free piers in `pier_courses` courses on one fixed base slab; `"base"`: one fixed slab under the arch (horizontal springing joints only: semicircular or pointed arches). A horseshoe arch takes abutments. |
+| `pier_width` | float | m | `2 × thickness` | Width of each support along the span, its inner face flush with the intrados springing; at least the springing joint's horizontal run t cos θ (θ its angle above the horizontal), twice that for an interior pier. Not for horseshoe arches (their abutments are as wide as the springing joint). |
+| `pier_height` | float | m | `span / 2` | Height of the abutments or piers below the springing line; > 0. Not with `supports = "base"`. |
+| `pier_courses` | integer | – | `1` | Piers only: courses of equal height, in [1, 100]. |
+| `base_thickness` | float | m | `thickness` | Piers or base: thickness of the fixed base slab, which reaches half a pier width beyond what it carries on every side; > 0. |
+| `support_motion` | string | – | `"fixed"` | Motion of the abutments or the base slab: `"fixed"` or `"kinematic"` (moves with the ground motion when `applied_as = "kinematic"`). |
+| `origin` | [x, y, z] | m | `[0, 0, 0]` | Where the middle of the springing line goes. |
+| `direction` | [x, y, z] | – | `[1, 0, 0]` | The span's direction; its horizontal part is used (must not be zero). |
+| `density` | float | kg/m³ | `2600` | Density of every block of the table; > 0. |
+
+A geometry that cannot be built (a voussoir count below 3, a ring thicker
+than the radius, an embrace of 360°, a pier too narrow for its springing
+joints, ...) is an error naming the `[[arch]]` key responsible. Spans run
+from 1 mm to 100 km; one table builds at most about 5000 blocks and all the
+`[[arch]]` tables of a deck at most 20000 (a short deck cannot ask for
+millions by accident).
+*/
 #include "io/generators.hpp"
 
 #include "structures/arch.hpp"

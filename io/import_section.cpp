@@ -2,6 +2,66 @@
 // placed (scale, rotation about the file's origin, offset), given their
 // density, motion and group, and checked: every part a closed convex solid,
 // no two parts overlapping by more than simulation.overlap_tolerance.
+//
+// The section's reference in docs/deck.md is the comment below
+// (scripts/doc_tables.py copies it there).
+/* docs/deck.md
+## `[[import]]`
+
+Blocks from a mesh file (`io/block_files.hpp`), one block per closed convex
+part. The blocks of each `[[import]]` are appended after the `[[block]]`
+tables and the generators' blocks, in the file's order, before any
+`[[cut]]`. The format is taken from the extension:
+
+| Extension | Format | What is a part |
+|---|---|---|
+| .obj | Wavefront OBJ (text): `v x y z`, `f a b c …` (also `a/t/n`, `a//n`; negative indices count back), `o`/`g` names; `vt`, `vn`, `vp`, `s`, `usemtl`, `mtllib`, `l`, `p` are skipped, any other statement is an error | a connected set of faces (sharing vertices) within one object: `o` objects if the file has any (a `g` inside one, e.g. a material group, stays in it), else `g` groups; its name is the object's (`NAME_1`, `NAME_2`, … if the object holds several solids); faces of different objects are never joined |
+| .ply | Stanford PLY, ASCII or binary (either byte order): `vertex` (x, y, z) and `face` (`vertex_indices` list); other elements and properties are skipped | a connected set of faces (PLY has no objects or names) |
+| .vtu | VTK XML unstructured grid, ASCII data arrays, polyhedral cells (`VTK_POLYHEDRON` = 42, `faces`/`faceoffsets`): what polydem writes (`polydem mesh`'s `blocks.vtu`, a run's snapshots); binary, appended or compressed arrays and VTK 9.4's `face_connectivity` layout are not read | one cell; polydem's cell data `course` and `motion` (written by `polydem mesh`) come with it |
+
+Each part must be closed (every edge shared by exactly two faces),
+orientable (faces are turned to agree with their neighbours; a part whose
+faces all point inward is turned outside in) and convex (no corner more than
+1e-6 of the part's size in front of a face's plane). When the part's faces
+already make a valid block (planar, no two neighbours coplanar: what polydem
+writes) the block keeps them, and the vertices, in the file's order;
+otherwise (faces split into triangles, as many tools write them) the block
+is the CGAL hull of its corners, numbered canonically like every hull. So a
+file written with shortest round-trip coordinates (`polydem mesh` writes
+`blocks.obj` and `blocks.vtu` so) gives back the deck's very blocks, bit for
+bit, and the same run (`examples/verification/imported_wall.toml`). A
+`.vtu` has no block names: its parts are `part1`, `part2`, ….
+No two parts of a file may overlap by more than
+`simulation.overlap_tolerance` (penetration depth); overlaps with other
+blocks are found when the run is set up. A snapshot of a loaded model has
+its joints closed by their elastic overlap (weight over kn·area, about
+1 µm for 4 m of rock at 98 GPa/m): raise `overlap_tolerance` (e.g. 1e-5)
+to import it. Anything else is an error naming
+the deck's line and key, the file, the part (number from 1, and name) and
+why: `blocks.obj: part 3 "s7": not convex: vertex 12 lies 0.0032 m outside
+the face at line 57`, `open: edge (3,7) belongs to one face (at line 40)`,
+`part 6 overlaps part 5 by 0.012 m (penetration depth; shared volume
+0.0012 m³ …)`; a malformed file (a bad count, an index out of range) is a
+clear error with the file's line.
+
+Vertices are used as written: faces that are coplanar only to the file's
+precision (6 digits from many tools) stay separate, slightly folded faces
+of the block. Names are `name_prefix` + the part's name, or `partN` (N from
+1) for unnamed parts; a name another block has is an error.
+
+| Key | Type | Unit | Default | Meaning |
+|---|---|---|---|---|
+| `file` | string | – | **required** | Path of the `.obj`, `.ply` or `.vtu` file, relative to the deck's directory. |
+| `scale` | float | – | `1` | Every coordinate is multiplied by this first (e.g. `0.001` for a file in mm). Must be > 0. |
+| `rotation` | [rx, ry, rz] | degrees | none | Then rotated about the file's origin: R = Rz·Ry·Rx, as a `[[block]]`'s. |
+| `offset` | [x, y, z] | m | `[0, 0, 0]` | Then translated: x → R·(scale·x) + offset. |
+| `density` | float | kg/m³ | `2600` | Every part's density. Must be > 0. |
+| `motion` | string | – | `"free"` (or the `.vtu`'s `motion`) | `"free"`, `"fixed"` or `"kinematic"`, for every part not fixed below. |
+| `fixed_below` | float | m | none | Every part whose highest corner is at or below this z (after the placement) is fixed: the base. At least one part must be. |
+| `fixed` | [string or integer, ...] | – | `[]` | Parts fixed by name (as in the file) or number (from 1). |
+| `group` | string | – | none | Every part's group. |
+| `name_prefix` | string | – | `""` | Put before every part's name. |
+*/
 #include "io/generators.hpp"
 
 #include "geometry/cut.hpp"

@@ -2,6 +2,101 @@
 // per table, each with its openings as [[wall.opening]] tables. Block names
 // start with the wall's name, so several walls live in one deck; groups
 // come from what each block is (group_by) with an optional prefix.
+//
+// The section's reference in docs/deck.md is the comment below
+// (scripts/doc_tables.py copies it there).
+/* docs/deck.md
+## `[[wall]]`
+
+Straight walls of brick or stone units, generated unit by unit
+(`structures/wall.hpp`; pictures in `docs/structures.md`). Each `[[wall]]`
+table is one wall; a deck may have several. Their blocks are appended after
+any `[[block]]` tables, wall by wall; a `[[block]]` is usually the fixed
+ground they stand on.
+
+Frame: the wall's own (u, v, z): u along the wall from its start (u = 0) to
+its end (u = `length`), v across it from −thickness/2 to +thickness/2 (to the
+left looking along u), z up from the bed of the first course. The world
+point of (u, v, z) is `origin` + u·e_u + v·e_v + z·e_z, e_u at azimuth
+`direction`. Units are dry (no mortar): neighbours touch on shared joint
+planes, and the blocks' volumes sum to the wall's (minus its openings) to
+round-off.
+
+Bonds: `"stretcher"` (or `"running"`): every unit a stretcher, `leaves`
+leaves side by side, odd courses shifted by half a unit with half units at
+their ends; `"header"`: every unit a header across the wall (thickness =
+unit length), odd courses shifted by half a header; `"english"`: stretcher
+courses (two leaves) alternating with header courses shifted by a quarter
+unit (a queen closer, half a header, at each end); `"flemish"`: header,
+stretcher, header ... in every course, odd courses shifted by 1.5 headers so
+that each header sits centred on a stretcher (three-quarter units at the
+ends). English and Flemish bonds need `unit_width` = `unit_length`/2: two
+stretchers side by side fill a header's length, or the bond cannot close
+across the wall. The sliver rule: no piece of a course is shorter than a
+quarter of the unit length: a shorter leftover at a wall's end joins its
+neighbour, and a joint an opening needs moves an existing joint closer than
+a quarter unit onto itself rather than leave a sliver.
+
+Blocks are named `NAME_courseCC_leafL_unitI` (one unit of leaf L, 0 at
+v = −thickness/2), `NAME_courseCC_unitI` (a block through the whole wall: a
+header, a through-stone, a jamb stone), `..._pieceP` (a unit cut by an
+opening) and `NAME_openingK_lintel`, `NAME_openingK_voussoirJ` (J from 0 at
+the left springing). Their `course` is the course they lie in (a head
+block's: the lowest). Their `group` is `group` (a prefix, default empty)
+followed by, according to `group_by`: `courseCC`; `leafL` or `through`; the
+kind (`unit`, `header`, `through_stone`, `jamb`, `lintel`, `voussoir`, `apex`, `closer`); or
+the wall's name.
+
+| Key | Type | Unit | Default | Meaning |
+|---|---|---|---|---|
+| `name` | string | – | `"wallN"` | The wall's name (N: its index from 1), the start of every block's name; unique among the walls, no spaces. |
+| `origin` | [x, y, z] | m | `[0, 0, 0]` | World point of the start of the wall's centre line at its base. |
+| `direction` | float | degrees | `0` | Azimuth of the wall's length, from +x counter-clockwise. |
+| `length` | float | m | `2` | Length along the wall; must be > 0 and at least one unit length. |
+| `start` | [x, y, z] | m | – | Instead of `origin`, `direction` and `length`: the start of the centre line at the base. Needs `end`. |
+| `end` | [x, y, z] | m | – | The end of the centre line at the base, at the height of `start`. |
+| `corner_with` | string | – | – | Instead of `origin` and `direction` (or `start` and `end`): this wall starts at a corner of the earlier `[[wall]]` of that name, at a right angle, and the two interlock course by course: one wall's units run through the corner square in each course and the other stops at it (quoins), in the courses both walls have. Both walls have the same course height on the same base, and either both are stretcher bond walls (the earlier wall owns the corner in even courses, this one in odd ones) or each is an English, Flemish or header bond wall: then both have the same `unit_size` with unit width = unit length / 2 (both one unit length thick), and in the courses a wall owns it starts at the quoin with a quoin header and a queen closer (a quarter unit in the face, kind `closer`), then its bond; in the others it stops at the corner and lays its bond from it, so that the joints of consecutive courses stay a quarter unit apart at the quoin. This wall's bond is then turned by one course if needed so that the two own the corner in alternate courses, and each wall must reach two unit lengths beyond its corner squares. Other pairs are refused ("bonds that cannot close a corner"). The corner square is part of both lengths, so `length` here is measured from the earlier wall's outer face. Openings keep a quarter unit clear of the corner. docs/structures.md ("Wall corners") shows English and Flemish corners. |
+| `corner_at` | string | – | `"end"` | With `corner_with`: at the earlier wall's `"end"` or `"start"`; each end has at most one corner. |
+| `turn` | string | – | `"left"` | With `corner_with`: this wall runs to the `"left"` (+v) or `"right"` (−v) of the earlier wall. |
+| `height` | float | m | `1.5` | Height of the wall; the number of courses is the nearest whole number to height / unit height, and the course height is height / courses. Must be at least one unit height. |
+| `courses` | integer | – | – | Instead of `height`: the number of courses (height = courses × unit height), in [1, 2000]. |
+| `unit_size` | [length, height, width] | m | `[0.4, 0.2, 0.2]` | The unit: length along the wall (a stretcher's face), height, width across the wall (a stretcher's depth, a header's face width). A header is `length` deep. |
+| `bond` | string | – | `"stretcher"` | `"stretcher"` (= `"running"`), `"header"`, `"english"` or `"flemish"` (above). |
+| `leaves` | integer | – | `1` | Leaves side by side (stretcher bond only), in [1, 16]; the wall is leaves × unit width thick. The leaves share their vertical joints. |
+| `gable_height` | float | m | `0` | A gable on top: the wall rises from `height` at its ends to `height` + gable_height at its middle. The courses continue above `height` at the same course height, each starting and ending where the slopes cross its bed (the sliver rule there) and its end units cut by the slopes; the top is one apex stone `NAME_apex` (kind `apex`), a triangle from the lowest bed joint at which the gable is less than 1.5 units wide. Openings stay below `height`. In [0, 100·height]. |
+| `through_every` | integer | – | `0` | Stretcher bond with at least 2 leaves: every Nth unit of a course is one through-stone crossing all leaves, shifted by N/2 units in odd courses so that they stagger; `0` = none. |
+| `density` | float | kg/m³ | `2600` | Density of every block of the wall; must be > 0. |
+| `group_by` | string | – | `"course"` | What the blocks' group says: `"course"`, `"leaf"`, `"kind"` or `"wall"` (above). |
+| `group` | string | – | `""` | Prefix of every group name of this wall (e.g. `"front_"`). |
+| `opening` | tables | – | none | The wall's openings, one `[[wall.opening]]` table each (below). |
+
+## `[[wall.opening]]`
+
+An opening through the whole wall, in the `[[wall]]` written above it. Its
+head carries the masonry above it under gravity with no tension: a lintel
+(one block spanning the opening and `bearing` onto each jamb, from the head
+up to the first bed joint at least half a course above it) or a semicircular
+arch of voussoirs (radius width/2, springing at sill + height − width/2) with
+radial joints through the arch's centre, reaching from the intrados (one
+straight chord per voussoir) up to the first bed joint at least half a course
+above the crown and `ring` beyond each jamb. In the courses the head spans,
+the masonry between its ends below the head becomes one jamb stone each side,
+through the wall. Openings, each with its head's extent, must not overlap,
+must leave a quarter unit between them and at the wall's ends, and must
+leave half a course above the head; the sill and the head (an arch's
+springing) must lie on a bed joint or at least a quarter course above one.
+
+| Key | Type | Unit | Default | Meaning |
+|---|---|---|---|---|
+| `position` | float | m | required | u of the left jamb (from the wall's start). |
+| `sill` | float | m | `0` | Height of the sill above the wall's base; `0` is a door. Must be ≥ 0. |
+| `width` | float | m | required | Between the jambs; must be > 0. |
+| `height` | float | m | required | From the sill to the top of the opening (an arch's crown); must be > 0, and for an arch at least width/2. |
+| `head` | string | – | `"lintel"` | `"lintel"` or `"arch"`. |
+| `bearing` | float | m | half a unit length | Lintel only: its length on each jamb; at least a quarter unit. |
+| `voussoirs` | integer | – | `7` | Arch only: the number of voussoirs, in [3, 64]. |
+| `ring` | float | m | half a unit length | Arch only: how far the voussoirs reach beyond each jamb; at least a quarter unit. |
+*/
 #include "io/generators.hpp"
 
 #include "structures/wall.hpp"

@@ -32,6 +32,10 @@ The CSVs:
 The tables show the commit each figure was measured at; the machine and the
 date stay in the CSV.
 
+The `generator_sections` block (docs/deck.md) is the reference each
+generator section keeps in its io/*_section.cpp, in a `/* docs/deck.md */`
+comment: a new generator's file brings its own documentation.
+
 The `layout` table (docs/architecture.md) counts the source tree: C++ files
 and lines per top-level folder. --check accepts its counts within 10 % (the
 tree moves with every change; the folders must match exactly), and checks
@@ -308,6 +312,21 @@ def table_two_commands():
             "has each figure's machine; docs/benchmarks.md).\n")
 
 
+def table_generator_sections():
+    """docs/deck.md's reference of the generator sections: the
+    `/* docs/deck.md ... */` comment of each io/*_section.cpp, in the order
+    the deck reader reads the sections (their `.order`)."""
+    sections = []
+    for path in glob.glob(os.path.join(ROOT, "io", "*_section.cpp")):
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+        doc = re.search(r"^/\* docs/deck\.md\n(.*?)\n\*/$", text, re.S | re.M)
+        order = re.search(r"\.order = (\d+)", text)
+        if doc and order:
+            sections.append((int(order.group(1)), doc.group(1).rstrip("\n")))
+    return "\n\n".join(doc for _, doc in sorted(sections)) + "\n"
+
+
 TABLES = {
     "two_commands": table_two_commands,
     "checks": table_checks,
@@ -322,6 +341,7 @@ TABLES = {
     "deck_example": table_deck_example,
     "python_example": table_python_example,
     "python_example_output": table_python_example_output,
+    "generator_sections": table_generator_sections,
 }
 for _name in ("build", "spire_speed", "ci", "governor", "yade"):
     TABLES[f"timings_{_name}"] = (lambda n: lambda: timings(n))(_name)
