@@ -80,26 +80,12 @@ void refuse(const TableReader& r, std::string_view key, const std::string& why) 
   if (r.has(key)) r.fail(key, why);
 }
 
-int small_integer(const TableReader& r, std::string_view key, int fallback, int lo, int hi) {
-  const auto n = r.integer(key);
-  if (!n) return fallback;
-  if (*n < lo || *n > hi)
-    r.fail(key, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " + std::to_string(*n) + ")");
-  return static_cast<int>(*n);
-}
-
 struct ArchSection {
   using Spec = ArchSpec;
 
-  static constexpr GeneratorRules rules{.section = "arch",
-                                        .keys = kArchKeys,
-                                        .order = 40,
-                                        .single = false,
-                                        .naming = Naming::prefix,
-                                        .motion_key = "support_motion",
-                                        .grouping = Grouping::kind,
-                                        .group_by = {},
-                                        .max_blocks = 20000};
+  static constexpr GeneratorRules rules{.section = "arch", .keys = kArchKeys, .order = 40, .single = false,
+                                        .naming = Naming::prefix, .motion_key = "support_motion",
+                                        .grouping = Grouping::kind, .group_by = {}, .max_blocks = 20000};
 
   static ArchSpec read(GeneratorTable& table, std::vector<ArchSpec>&) {
     const TableReader& r = table.reader();
@@ -137,11 +123,11 @@ struct ArchSection {
         s.pointedness = r.number("pointedness", s.pointedness, Range::positive);
         break;
     }
-    s.voussoirs = small_integer(r, "voussoirs", s.voussoirs, 3, 1000);
+    s.voussoirs = integer_in(r, "voussoirs", s.voussoirs, 3, 1000);
     s.thickness = r.number("thickness", s.thickness, Range::positive);
     s.depth = r.number("depth", s.depth, Range::positive);
-    s.rings = small_integer(r, "rings", s.rings, 1, 200);
-    s.spans = small_integer(r, "spans", s.spans, 1, 50);
+    s.rings = integer_in(r, "rings", s.rings, 1, 200);
+    s.spans = integer_in(r, "spans", s.spans, 1, 50);
     s.supports = r.choice<ArchSupports>("supports",
                                         {{"abutments", ArchSupports::abutments},
                                          {"piers", ArchSupports::piers},
@@ -155,7 +141,7 @@ struct ArchSection {
       refuse(r, "base_thickness", "abutments stand on nothing: there is no base slab (supports = \"abutments\")");
     s.pier_width = r.number("pier_width", 0.0, Range::positive);
     s.pier_height = r.number("pier_height", 0.0, Range::positive);
-    s.pier_courses = small_integer(r, "pier_courses", s.pier_courses, 1, 100);
+    s.pier_courses = integer_in(r, "pier_courses", s.pier_courses, 1, 100);
     s.base_thickness = r.number("base_thickness", 0.0, Range::positive);
     s.origin = r.vec3("origin").value_or(s.origin);
     s.direction = r.vec3("direction").value_or(s.direction);

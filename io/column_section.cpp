@@ -58,28 +58,16 @@ constexpr std::string_view kColumnKeys[] = {
 struct ColumnSection {
   using Spec = ColumnSpec;
 
-  static constexpr GeneratorRules rules{.section = "column",
-                                        .keys = kColumnKeys,
-                                        .order = 50,
-                                        .single = false,
-                                        .naming = Naming::prefix,
-                                        .motion_key = "base_motion",
-                                        .grouping = Grouping::kind,
-                                        .group_by = {},
-                                        .max_blocks = 20000};
+  static constexpr GeneratorRules rules{.section = "column", .keys = kColumnKeys, .order = 50, .single = false,
+                                        .naming = Naming::prefix, .motion_key = "base_motion",
+                                        .grouping = Grouping::kind, .group_by = {}, .max_blocks = 20000};
 
   static ColumnSpec read(GeneratorTable& table, std::vector<ColumnSpec>&) {
     const TableReader& r = table.reader();
     ColumnSpec s;
-    if (const auto n = r.integer("drums")) {
-      if (*n < 1 || *n > 1000) r.fail("drums", "must be in [1, 1000] (got " + std::to_string(*n) + ")");
-      s.drums = static_cast<int>(*n);
-    }
+    s.drums = integer_in(r, "drums", s.drums, 1, 1000);
     s.radius = r.number("radius", s.radius, Range::positive);
-    if (const auto n = r.integer("sides")) {
-      if (*n < 4 || *n > 128) r.fail("sides", "must be in [4, 128] (got " + std::to_string(*n) + ")");
-      s.sides = static_cast<int>(*n);
-    }
+    s.sides = integer_in(r, "sides", s.sides, 4, 128);
     if (r.has("height") && r.has("drum_heights"))
       r.fail("drum_heights", "give height (equal drums) or drum_heights, not both");
     s.height = r.number("height", s.height, Range::positive);

@@ -109,7 +109,16 @@ std::vector<const toml::table*> generator_tables(const Deck& deck, const Generat
   return t ? std::vector<const toml::table*>{t} : std::vector<const toml::table*>{};
 }
 
-void open_openings(const GeneratorRules& rules, GeneratorTable& table) {
+int integer_in(const TableReader& r, std::string_view key, int fallback, int lo, int hi) {
+  const auto n = r.integer(key);
+  if (!n) return fallback;
+  if (*n < lo || *n > hi)
+    r.fail(key, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " + std::to_string(*n) + ")");
+  return static_cast<int>(*n);
+}
+
+void open_openings(const GeneratorRules& rules, GeneratorTable& table, std::initializer_list<std::string_view> required,
+                   const std::string& why) {
   const toml::node* n = table.table->get("opening");
   if (!n) return;
   const TableReader& r = table.reader();
@@ -128,7 +137,11 @@ void open_openings(const GeneratorRules& rules, GeneratorTable& table) {
   }
   const std::vector<std::string_view> keys = keys_under(rules.keys, "opening.");
   const std::string path = r.key_path("opening");
-  for (std::size_t i = 0; i < openings.size(); ++i) table.readers.emplace_back(r.deck(), *openings[i], indexed(path, i + 1), keys);
+  for (std::size_t i = 0; i < openings.size(); ++i) {
+    const TableReader& o = table.readers.emplace_back(r.deck(), *openings[i], indexed(path, i + 1), keys);
+    for (std::string_view k : required)
+      if (!o.has(k)) o.missing(k, why);
+  }
 }
 
 GeneratorTable open_generator_table(const Deck& deck, const GeneratorRules& rules, const toml::table& table,

@@ -119,9 +119,14 @@ struct GeneratorTable {
 // starting with `prefix` ("opening."), without it.
 std::vector<std::string_view> keys_under(std::span<const std::string_view> keys, std::string_view prefix);
 
+// An integer key in [lo, hi]; `fallback` when absent.
+int integer_in(const deck_reader::TableReader& r, std::string_view key, int fallback, int lo, int hi);
+
 // The [[SECTION.opening]] tables of the table: a reader for each is added to
-// table.readers (keys: those of `rules.keys` under "opening.").
-void open_openings(const GeneratorRules& rules, GeneratorTable& table);
+// table.readers (keys: those of `rules.keys` under "opening."); each must
+// have the keys `required` (`why` says which).
+void open_openings(const GeneratorRules& rules, GeneratorTable& table,
+                   std::initializer_list<std::string_view> required, const std::string& why);
 
 // An opening's sill, width, height and head (a lintel's bearing, an arch's
 // voussoirs and ring), as [[wall.opening]] and [[tower.opening]] give them.
@@ -139,10 +144,7 @@ void read_opening(const deck_reader::TableReader& o, Opening& op) {
     op.bearing = o.number("bearing", 0.0, Range::positive);
   } else {
     if (o.has("bearing")) o.fail("bearing", "applies to head = \"lintel\" only");
-    if (const auto n = o.integer("voussoirs")) {
-      if (*n < 3 || *n > 64) o.fail("voussoirs", "must be in [3, 64] (got " + std::to_string(*n) + ")");
-      op.voussoirs = static_cast<int>(*n);
-    }
+    op.voussoirs = integer_in(o, "voussoirs", op.voussoirs, 3, 64);
     op.ring = o.number("ring", 0.0, Range::positive);
   }
 }

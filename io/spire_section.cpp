@@ -94,15 +94,9 @@ struct SpireSection {
     Vec3 origin = Vec3::Zero();  // where the spire's frame origin (the axis at the bed of course 0) stands
   };
 
-  static constexpr GeneratorRules rules{.section = "spire",
-                                        .keys = kSpireKeys,
-                                        .order = 10,
-                                        .single = true,
-                                        .naming = Naming::none,
-                                        .motion_key = "base_motion",
-                                        .grouping = Grouping::course,
-                                        .group_by = {},
-                                        .max_blocks = 0};
+  static constexpr GeneratorRules rules{.section = "spire", .keys = kSpireKeys, .order = 10, .single = true,
+                                        .naming = Naming::none, .motion_key = "base_motion",
+                                        .grouping = Grouping::course, .group_by = {}, .max_blocks = 0};
 
   static Spec read(GeneratorTable& table, std::vector<Spec>&) {
     const TableReader& r = table.reader();
@@ -115,10 +109,7 @@ struct SpireSection {
     s.wall_thickness_top = r.number("wall_thickness_top", s.wall_thickness_top, Range::positive);
     s.course_height = r.number("course_height", s.course_height, Range::positive);
     s.tip_height = r.number("tip_height", s.tip_height, Range::positive);
-    if (const auto n = r.integer("stones_per_face")) {
-      if (*n < 1 || *n > 64) r.fail("stones_per_face", "must be in [1, 64] (got " + std::to_string(*n) + ")");
-      s.stones_per_face = static_cast<int>(*n);
-    }
+    s.stones_per_face = integer_in(r, "stones_per_face", s.stones_per_face, 1, 64);
     s.joint_pattern = r.choice<SpireJointPattern>("joint_pattern",
                                                   {{"staggered", SpireJointPattern::staggered},
                                                    {"aligned", SpireJointPattern::aligned},
@@ -146,10 +137,7 @@ struct SpireSection {
     s.window_head_shape = r.choice<WindowHead>("window_head_shape",
                                                {{"pointed", WindowHead::pointed}, {"flat", WindowHead::flat}},
                                                s.window_head_shape);
-    if (const auto n = r.integer("window_arch_segments")) {
-      if (*n < 1 || *n > 64) r.fail("window_arch_segments", "must be in [1, 64] (got " + std::to_string(*n) + ")");
-      s.window_arch_segments = static_cast<int>(*n);
-    }
+    s.window_arch_segments = integer_in(r, "window_arch_segments", s.window_arch_segments, 1, 64);
     s.base_thickness = r.number("base_thickness", s.base_thickness, Range::non_negative);
     s.base_apothem = r.number("base_apothem", s.base_apothem, Range::non_negative);
     if (r.has("base_apothem") && s.base_thickness == 0)

@@ -95,15 +95,9 @@ constexpr std::pair<std::string_view, Grouping> kTowerGroupings[] = {
 struct TowerSection {
   using Spec = TowerSpec;
 
-  static constexpr GeneratorRules rules{.section = "tower",
-                                        .keys = kTowerKeys,
-                                        .order = 30,
-                                        .single = false,
-                                        .naming = Naming::owned,
-                                        .motion_key = "",
-                                        .grouping = Grouping::course,
-                                        .group_by = kTowerGroupings,
-                                        .max_blocks = 0};
+  static constexpr GeneratorRules rules{.section = "tower", .keys = kTowerKeys, .order = 30, .single = false,
+                                        .naming = Naming::owned, .motion_key = "", .grouping = Grouping::course,
+                                        .group_by = kTowerGroupings, .max_blocks = 0};
 
   static TowerSpec read(GeneratorTable& table, std::vector<TowerSpec>&) {
     const TableReader& r = table.reader();
@@ -115,16 +109,11 @@ struct TowerSection {
     s.wall_thickness = r.number("wall_thickness", s.wall_thickness, Range::positive);
     s.height = r.number("height", s.height, Range::positive);
     s.course_height = r.number("course_height", s.course_height, Range::positive);
-    if (const auto n = r.integer("stones_per_face")) {
-      if (*n < 1 || *n > 32) r.fail("stones_per_face", "must be in [1, 32] (got " + std::to_string(*n) + ")");
-      s.stones_per_face = static_cast<int>(*n);
-    }
-    open_openings(rules, table);
+    s.stones_per_face = integer_in(r, "stones_per_face", s.stones_per_face, 1, 32);
+    open_openings(rules, table, {"faces", "width", "height"}, "an opening needs faces, width and height");
     for (std::size_t i = 1; i < table.readers.size(); ++i) {
       const TableReader& o = table.readers[i];
       TowerOpening op;
-      for (const char* k : {"faces", "width", "height"})
-        if (!o.has(k)) o.missing(k, "an opening needs faces, width and height");
       const toml::node* fn = o.table().get("faces");
       const auto* arr = fn->as_array();
       if (!arr) o.fail("faces", "must be an array of face indices (got " + describe(*fn) + ")");

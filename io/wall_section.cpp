@@ -166,10 +166,9 @@ WallTable read_wall(const GeneratorRules& rules, GeneratorTable& table) {
     s.length = r.number("length", s.length, Range::positive);
   }
   s.height = r.number("height", s.height, Range::positive);
-  if (const auto n = r.integer("courses")) {
-    if (*n < 1 || *n > 2000) r.fail("courses", "must be in [1, 2000] (got " + std::to_string(*n) + ")");
+  if (r.has("courses")) {
+    s.courses = integer_in(r, "courses", s.courses, 1, 2000);
     if (r.has("height")) r.fail("courses", "give height or courses (height = courses × unit height), not both");
-    s.courses = static_cast<int>(*n);
   }
   if (const auto u = r.numbers("unit_size", 3, "[length, height, width]")) {
     for (std::size_t i = 0; i < 3; ++i)
@@ -186,22 +185,14 @@ WallTable read_wall(const GeneratorRules& rules, GeneratorTable& table) {
                                {"english", WallBond::english},
                                {"flemish", WallBond::flemish}},
                               s.bond);
-  if (const auto n = r.integer("leaves")) {
-    if (*n < 1 || *n > 16) r.fail("leaves", "must be in [1, 16] (got " + std::to_string(*n) + ")");
-    s.leaves = static_cast<int>(*n);
-  }
-  if (const auto n = r.integer("through_every")) {
-    if (*n < 0 || *n > 1000) r.fail("through_every", "must be in [0, 1000] (got " + std::to_string(*n) + ")");
-    s.through_every = static_cast<int>(*n);
-  }
+  s.leaves = integer_in(r, "leaves", s.leaves, 1, 16);
+  s.through_every = integer_in(r, "through_every", s.through_every, 0, 1000);
   s.gable_height = r.number("gable_height", s.gable_height, Range::non_negative);
 
-  open_openings(rules, table);
+  open_openings(rules, table, {"position", "width", "height"}, "an opening needs position, width and height");
   for (std::size_t i = 1; i < table.readers.size(); ++i) {
     const TableReader& o = table.readers[i];
     WallOpening op;
-    for (const char* k : {"position", "width", "height"})
-      if (!o.has(k)) o.missing(k, "an opening needs position, width and height");
     op.position = o.number("position", 0.0, Range::any);
     read_opening(o, op);
     s.openings.push_back(op);
@@ -266,15 +257,9 @@ void place_at_corner(const TableReader& r, WallTable& b, WallTable& a) {
 struct WallSection {
   using Spec = WallTable;
 
-  static constexpr GeneratorRules rules{.section = "wall",
-                                        .keys = kWallKeys,
-                                        .order = 20,
-                                        .single = false,
-                                        .naming = Naming::owned,
-                                        .motion_key = "",
-                                        .grouping = Grouping::course,
-                                        .group_by = kWallGroupings,
-                                        .max_blocks = 0};
+  static constexpr GeneratorRules rules{.section = "wall", .keys = kWallKeys, .order = 20, .single = false,
+                                        .naming = Naming::owned, .motion_key = "", .grouping = Grouping::course,
+                                        .group_by = kWallGroupings, .max_blocks = 0};
 
   static WallTable read(GeneratorTable& table, std::vector<WallTable>& earlier) {
     WallTable w = read_wall(rules, table);
