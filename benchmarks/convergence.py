@@ -11,7 +11,9 @@ deck's own (safety factor 0.8, automatic contact margin, explicit damping):
   settings  default; safety factor 0.4 and 0.2 (`simulation.safety_factor`);
             margin x0.5 and x2 (`simulation.contact_margin`, the automatic
             margin a short run of the same deck reports in summary.json,
-            scaled); split damping (`simulation.damping_scheme = "split"`)
+            scaled); split damping (`simulation.damping_scheme = "split"`);
+            the overlap joint model (`simulation.joint_model = "overlap"`)
+            at the margin x1, x0.5 and x2
   cases     main      `polydem run --default`, the 0.1 g/s ramp: the ground
                       acceleration when the mechanism formed, the crack (angle
                       of the opened joints' principal axis, their heights,
@@ -59,6 +61,9 @@ SETTINGS = {
     "margin x0.5": ([], 0.5),
     "margin x2": ([], 2.0),
     "split damping": (['simulation.damping_scheme="split"'], None),
+    "overlap model": (['simulation.joint_model="overlap"'], None),
+    "overlap model, margin x0.5": (['simulation.joint_model="overlap"'], 0.5),
+    "overlap model, margin x2": (['simulation.joint_model="overlap"'], 2.0),
 }
 
 PULSE = "examples/spire/pulse.toml"

@@ -130,7 +130,7 @@ bool find_patch(const PosedBlock& a, const PosedBlock& b, double margin, int pre
 }
 
 bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const NarrowPhaseHit& hit,
-                 int prev_ref_side, int prev_ref_face, Patch& out, PatchScratch& s) {
+                 int prev_ref_side, int prev_ref_face, Patch& out, PatchScratch& s, bool keep_without_points) {
   world_vertices(a, s.world_a);
   world_vertices(b, s.world_b);
   const double mpr_overlap = hit.overlap;  // of the real (uninflated) blocks
@@ -254,7 +254,14 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
     std::swap(s.poly, s.next);
     std::swap(s.poly_id, s.next_id);
   }
-  if (s.poly.empty()) return false;
+  if (s.poly.empty()) {  // the incident face misses the reference face
+    out.ref_face = ref_face;
+    out.inc_face = inc_face;
+    out.normal = n;
+    out.offset = offset;
+    out.area = 0;
+    return keep_without_points;
+  }
 
   // Patch area and tributary areas, on the common plane.
   const std::size_t np = s.poly.size();
@@ -309,7 +316,7 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
     }
   out.points.resize(kept);
   out.area = kept_area;
-  return kept > 0;
+  return kept > 0 || keep_without_points;
 }
 
 }  // namespace polydem

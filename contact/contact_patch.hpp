@@ -79,9 +79,13 @@ void world_vertices(const PosedBlock& block, std::vector<Vec3>& world);
 // Steps 2-4 for a pair the narrow phase found within the margin (`hit`).
 // Returns false if the pair is farther apart than `margin` after all.
 // prev_ref_side / prev_ref_face: the previous detection's choice for this
-// pair (-1 if none).
+// pair (-1 if none). `keep_without_points`: a pair that the face test puts
+// within the margin is kept with its plane even when the incident face's
+// clip leaves no point within it (a corner of another face may be the
+// closest point: the overlap joint model integrates every face).
 bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const NarrowPhaseHit& hit,
-                 int prev_ref_side, int prev_ref_face, Patch& out, PatchScratch& scratch);
+                 int prev_ref_side, int prev_ref_face, Patch& out, PatchScratch& scratch,
+                 bool keep_without_points = false);
 
 // Narrow phase and patch in one call (steps 1-4).
 bool find_patch(const PosedBlock& a, const PosedBlock& b, double margin, int prev_ref_side, int prev_ref_face,

@@ -1,5 +1,7 @@
 #include "contact/detection.hpp"
 
+#include "contact/overlap_joint.hpp"
+
 #include "contact/broad_phase.hpp"
 #include "contact/contact_patch.hpp"
 #include "contact/gather.hpp"
@@ -27,6 +29,7 @@ struct ContactDetector::Impl {
   ContactSet previous;
   std::vector<int> count;
   CarryScratch carry;
+  OverlapScratch overlap;
 };
 
 namespace {
@@ -251,7 +254,7 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
       prev_face = op->ref_face;
     }
     im.found[k] = build_patch(posed(b, i), posed(b, j), margin_, im.hits[k], prev_side, prev_face, im.patches[k],
-                              im.scratch[omp_get_thread_num()]);
+                              im.scratch[omp_get_thread_num()], pair_joints_);
   }
   const Clock::time_point t3 = Clock::now();
 
@@ -262,13 +265,19 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
     for (std::size_t s = 0; s < contacts.sub.size(); ++s)
       if (!laws.between(contacts.sub.ref_block[s], contacts.sub.inc_block[s]).bonds()) contacts.sub.bonded[s] = 0;
   }
-  carry_history(b, old, contacts, laws, margin_, im.carry, threads);
-  // Re-sampling may lower a pair's normal strain at this pose but not raise
-  // it (joint_law.hpp); what it changes is the re-sampling's, not motion's,
-  // and goes to the ledger.
-  hold_normal_strain(laws, b.state, old, contacts, threads);
-  contacts.resampled_normal_energy += normal_strain_energy_now(laws, b.state, old.sub, threads) -
-                                      normal_strain_energy_now(laws, b.state, contacts.sub, threads);
+  if (pair_joints_) {  // the overlap model: each joint's history goes with its pair
+    carry_pair_joints(old, contacts);
+    find_joint_cells(b.props.local_shape, b.state, contacts.pairs, contacts.sub, margin_, contacts.joints,
+                     im.overlap);
+  } else {
+    carry_history(b, old, contacts, laws, margin_, im.carry, threads);
+    // Re-sampling may lower a pair's normal strain at this pose but not
+    // raise it (joint_law.hpp); what it changes is the re-sampling's, not
+    // motion's, and goes to the ledger.
+    hold_normal_strain(laws, b.state, old, contacts, threads);
+    contacts.resampled_normal_energy += normal_strain_energy_now(laws, b.state, old.sub, threads) -
+                                        normal_strain_energy_now(laws, b.state, contacts.sub, threads);
+  }
   contacts.detections = old.detections + 1;
   const Clock::time_point t4 = Clock::now();
 

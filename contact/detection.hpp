@@ -74,6 +74,10 @@ class ContactDetector {
   // passes its governor's choice (integrators/thread_governor.hpp).
   void set_threads(int threads) { threads_ = threads; }
   int threads() const { return threads_; }  // 0: not set (OpenMP's default)
+  // Under the overlap joint model (contact/overlap_joint.hpp) a detection
+  // hands each joint's state on by its pair, and the subcontacts only
+  // sample the joint's opening.
+  void set_pair_joints(bool on) { pair_joints_ = on; }
   // True when some pair may have closed by more than half the margin since
   // detect(), counting the coming step of length dt at the current speeds.
   // `bound_first`: a cheap bound settles the clear cases (the same answer;
@@ -114,6 +118,7 @@ class ContactDetector {
   std::unique_ptr<Impl> impl_;
   double margin_;
   int threads_ = 0;
+  bool pair_joints_ = false;
 };
 
 }  // namespace polydem

@@ -33,36 +33,56 @@ void frame_vertices(const PosedBlock& block, const JointFrame& frame, std::vecto
   }
 }
 
-// The faces whose outward normal has a component along n of sign `sign`
-// (+1: A's upper hull, −1: B's lower hull), with their shadows' boxes and
-// height ranges. Faces perpendicular to n (component exactly 0) are left out.
+// Face f's shadow if its outward normal has a component along n of sign
+// `sign` (+1: A's upper hull, −1: B's lower hull); false for a face
+// perpendicular to n (component exactly 0) or facing the other way.
+bool face_shadow(const Polyhedron& p, const Vec3& u1, const Vec3& u2, const Vec3& un, int f, int sign,
+                 const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& h,
+                 FaceShadow& s) {
+  const Vec3& nf = p.normals[static_cast<std::size_t>(f)];
+  const double mn = un.dot(nf);
+  if (!(sign > 0 ? mn > 0 : mn < 0)) return false;
+  s.face = f;
+  s.m1 = u1.dot(nf);
+  s.m2 = u2.dot(nf);
+  s.mn = mn;
+  s.xmin = s.ymin = s.hmin = std::numeric_limits<double>::infinity();
+  s.xmax = s.ymax = s.hmax = -std::numeric_limits<double>::infinity();
+  for (int i : p.faces[static_cast<std::size_t>(f)]) {
+    s.xmin = std::min(s.xmin, x[i]);
+    s.xmax = std::max(s.xmax, x[i]);
+    s.ymin = std::min(s.ymin, y[i]);
+    s.ymax = std::max(s.ymax, y[i]);
+    s.hmin = std::min(s.hmin, h[i]);
+    s.hmax = std::max(s.hmax, h[i]);
+  }
+  return true;
+}
+
+// The frame's axes in the block's body frame.
+void body_axes(const PosedBlock& block, const JointFrame& frame, Vec3& u1, Vec3& u2, Vec3& un) {
+  u1 = block.R.transpose() * frame.e1;
+  u2 = block.R.transpose() * frame.e2;
+  un = block.R.transpose() * frame.n;
+}
+
+// The faces of sign `sign` (face_shadow), with their shadows.
 void face_shadows(const PosedBlock& block, const JointFrame& frame, int sign, const std::vector<double>& x,
                   const std::vector<double>& y, const std::vector<double>& h, std::vector<FaceShadow>& out) {
-  const Mat3& R = block.R;
-  const Vec3 u1 = R.transpose() * frame.e1, u2 = R.transpose() * frame.e2, un = R.transpose() * frame.n;
+  Vec3 u1, u2, un;
+  body_axes(block, frame, u1, u2, un);
   const Polyhedron& p = *block.shape;
   out.clear();
-  for (std::size_t f = 0; f < p.faces.size(); ++f) {
-    const Vec3& nf = p.normals[f];
-    const double mn = un.dot(nf);
-    if (!(sign > 0 ? mn > 0 : mn < 0)) continue;
-    FaceShadow s;
-    s.face = static_cast<int>(f);
-    s.m1 = u1.dot(nf);
-    s.m2 = u2.dot(nf);
-    s.mn = mn;
-    s.xmin = s.ymin = s.hmin = std::numeric_limits<double>::infinity();
-    s.xmax = s.ymax = s.hmax = -std::numeric_limits<double>::infinity();
-    for (int i : p.faces[f]) {
-      s.xmin = std::min(s.xmin, x[i]);
-      s.xmax = std::max(s.xmax, x[i]);
-      s.ymin = std::min(s.ymin, y[i]);
-      s.ymax = std::max(s.ymax, y[i]);
-      s.hmin = std::min(s.hmin, h[i]);
-      s.hmax = std::max(s.hmax, h[i]);
-    }
-    out.push_back(s);
-  }
+  FaceShadow s;
+  for (std::size_t f = 0; f < p.faces.size(); ++f)
+    if (face_shadow(p, u1, u2, un, static_cast<int>(f), sign, x, y, h, s)) out.push_back(s);
+}
+
+// True when the cell of the two shadows can be non-empty: a above b
+// somewhere, their boxes overlapping.
+bool may_overlap(const FaceShadow& fa, const FaceShadow& fb) {
+  if (fa.hmax <= fb.hmin) return false;
+  return !(fa.xmax <= fb.xmin || fb.xmax <= fa.xmin || fa.ymax <= fb.ymin || fb.ymax <= fa.ymin);
 }
 
 // h clamped to [lo, hi]; a NaN becomes lo.
@@ -111,6 +131,26 @@ void add_fan(const std::vector<Node>& poly, OverlapMoments& m) {
 // into `m`.
 void add_cell(const Polyhedron& pa, const FaceShadow& sa, const Polyhedron& pb, const FaceShadow& sb,
               OverlapScratch& s, OverlapMoments& m) {
+  // t is linear over the cell: its largest value is at most the largest at
+  // a's vertices against b's plane, and at b's vertices against a's. Where
+  // either is negative the cell is empty, without clipping.
+  {
+    const std::vector<int>& fa = pa.faces[sa.face];
+    const std::vector<int>& fb = pb.faces[sb.face];
+    const int a0 = fa[0], b0 = fb[0];
+    double top = -std::numeric_limits<double>::infinity();
+    for (int i : fa) {
+      const double hb = s.hb[b0] - (sb.m1 * (s.xa[i] - s.xb[b0]) + sb.m2 * (s.ya[i] - s.yb[b0])) / sb.mn;
+      top = std::max(top, s.ha[i] - hb);
+    }
+    if (top < 0) return;
+    top = -std::numeric_limits<double>::infinity();
+    for (int i : fb) {
+      const double ha = s.ha[a0] - (sa.m1 * (s.xb[i] - s.xa[a0]) + sa.m2 * (s.yb[i] - s.ya[a0])) / sa.mn;
+      top = std::max(top, ha - s.hb[i]);
+    }
+    if (top < 0) return;
+  }
   // proj(a), counter-clockwise seen from +n since a faces +n.
   std::vector<Node>& poly = s.poly;
   std::vector<Node>& next = s.next;
@@ -218,13 +258,77 @@ OverlapMoments overlap_integral(const PosedBlock& a, const PosedBlock& b, const 
   face_shadows(b, frame, -1, s.xb, s.yb, s.hb, s.bottom_b);
   for (const FaceShadow& fa : s.top_a) {
     if (fa.hmax <= bottom_b) continue;
-    for (const FaceShadow& fb : s.bottom_b) {
-      if (fa.hmax <= fb.hmin) continue;
-      if (fa.xmax <= fb.xmin || fb.xmax <= fa.xmin || fa.ymax <= fb.ymin || fb.ymax <= fa.ymin) continue;
-      add_cell(*a.shape, fa, *b.shape, fb, s, m);
-    }
+    for (const FaceShadow& fb : s.bottom_b)
+      if (may_overlap(fa, fb)) add_cell(*a.shape, fa, *b.shape, fb, s, m);
   }
   return m;
+}
+
+OverlapMoments overlap_integral(const PosedBlock& a, const PosedBlock& b, const JointFrame& frame,
+                                const FacePair* begin, const FacePair* end, OverlapScratch& s) {
+  OverlapMoments m;
+  if (begin == end) return m;
+  frame_vertices(a, frame, s.xa, s.ya, s.ha);
+  frame_vertices(b, frame, s.xb, s.yb, s.hb);
+  Vec3 a1, a2, an, b1, b2, bn;
+  body_axes(a, frame, a1, a2, an);
+  body_axes(b, frame, b1, b2, bn);
+  FaceShadow fa, fb;
+  int face_a = -1;
+  bool up = false;
+  for (const FacePair* c = begin; c != end; ++c) {
+    if (c->a != face_a) {  // the pairs come sorted by A's face: its shadow once
+      face_a = c->a;
+      up = face_shadow(*a.shape, a1, a2, an, face_a, +1, s.xa, s.ya, s.ha, fa);
+    }
+    if (!up || !face_shadow(*b.shape, b1, b2, bn, c->b, -1, s.xb, s.yb, s.hb, fb)) continue;
+    if (may_overlap(fa, fb)) add_cell(*a.shape, fa, *b.shape, fb, s, m);
+  }
+  return m;
+}
+
+void overlap_face_pairs(const PosedBlock& a, const PosedBlock& b, const Vec3& n, double reach,
+                        std::vector<FacePair>& out, OverlapScratch& s) {
+  out.clear();
+  const JointFrame frame = make_joint_frame(n, 0.5 * (a.x + b.x));
+  frame_vertices(a, frame, s.xa, s.ya, s.ha);
+  frame_vertices(b, frame, s.xb, s.yb, s.hb);
+  // Each face's shadow as a disc about its vertices' mean, and its height
+  // range: both unchanged by a turn of the frame about n.
+  struct Disc {
+    double x, y, r, hmin, hmax;
+  };
+  auto disc = [](const std::vector<int>& face, const std::vector<double>& x, const std::vector<double>& y,
+                 const std::vector<double>& h) {
+    Disc d{0, 0, 0, std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+    for (int i : face) {
+      d.x += x[i];
+      d.y += y[i];
+      d.hmin = std::min(d.hmin, h[i]);
+      d.hmax = std::max(d.hmax, h[i]);
+    }
+    d.x /= static_cast<double>(face.size());
+    d.y /= static_cast<double>(face.size());
+    for (int i : face) d.r = std::max(d.r, std::hypot(x[i] - d.x, y[i] - d.y));
+    return d;
+  };
+  const Polyhedron& pa = *a.shape;
+  const Polyhedron& pb = *b.shape;
+  const Vec3 na = a.R.transpose() * n, nb = b.R.transpose() * n;
+  // A face may take part if it could face the right way after a turn of
+  // the joint by reach/size, far more than between two detections.
+  const double turn = 1e-2;
+  for (std::size_t fa = 0; fa < pa.faces.size(); ++fa) {
+    if (na.dot(pa.normals[fa]) < -turn) continue;
+    const Disc da = disc(pa.faces[fa], s.xa, s.ya, s.ha);
+    for (std::size_t fb = 0; fb < pb.faces.size(); ++fb) {
+      if (nb.dot(pb.normals[fb]) > turn) continue;
+      const Disc db = disc(pb.faces[fb], s.xb, s.yb, s.hb);
+      if (da.hmax + reach < db.hmin) continue;
+      if (std::hypot(da.x - db.x, da.y - db.y) > da.r + db.r + reach) continue;
+      out.push_back(FacePair{static_cast<int>(fa), static_cast<int>(fb)});
+    }
+  }
 }
 
 Vec3 plane_point(const JointFrame& frame, const Vec2& xi) {

@@ -114,6 +114,11 @@ struct OverlapMoments {
   int cells = 0;                         // face pairs with a non-empty clipped polygon
 };
 
+// A face of A and a face of B whose cell may be non-empty.
+struct FacePair {
+  int a, b;
+};
+
 // Buffers reused across calls (one per thread): no allocation once warmed up.
 struct OverlapScratch {
   struct FaceShadow {
@@ -132,6 +137,7 @@ struct OverlapScratch {
   std::vector<FaceShadow> top_a, bottom_b;     // A's faces facing +n, B's facing −n
   std::vector<Node> poly, next;
   std::vector<double> bx, by, bh;              // proj(b), counter-clockwise
+  std::vector<FacePair> face_pairs;            // overlap_face_pairs' callers' buffer
 };
 
 // The integrals of the Winkler joint between A (below) and B (above) on the
@@ -145,6 +151,21 @@ Vec3 plane_point(const JointFrame& frame, const Vec2& xi);
 // The pressure centroid ∫tξ/∫t in plane coordinates (the frame's origin when
 // Ω is empty).
 Vec2 pressure_centroid(const OverlapMoments& m);
+
+// The face pairs of A and B that can have a cell while the blocks move
+// relative to each other by less than `reach` (m) and the normal n (world)
+// turns with A by less than a hundredth of a radian: every pair but those
+// whose shadows' discs (about their vertices' mean, so whatever the in-plane
+// axes) are farther apart than `reach`, whose heights are `reach` apart, or
+// whose faces face away. Sorted by A's face, then B's.
+void overlap_face_pairs(const PosedBlock& a, const PosedBlock& b, const Vec3& n, double reach,
+                        std::vector<FacePair>& out, OverlapScratch& scratch);
+
+// overlap_integral over the cells of the face pairs [begin, end) (sorted by
+// A's face) only: the same integrals, to the bit, while every non-empty cell
+// is among them.
+OverlapMoments overlap_integral(const PosedBlock& a, const PosedBlock& b, const JointFrame& frame,
+                                const FacePair* begin, const FacePair* end, OverlapScratch& scratch);
 
 // Polar moment of area of Ω about the plane point c: ∫|ξ − c|² dA, m⁴.
 double polar_moment(const OverlapMoments& m, const Vec2& c);

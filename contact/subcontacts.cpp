@@ -42,6 +42,8 @@ void ContactSet::save(ByteWriter& w) const {
     w.put(p.first);
     w.put(p.count);
     w.put(p.patch_area);
+    w.put(p.normal_local);
+    w.put(p.offset_local);
   }
   w.put(sub.pair);
   w.put(sub.ref_block);
@@ -69,6 +71,8 @@ void ContactSet::save(ByteWriter& w) const {
   w.put(dropped_shear_energy);
   w.put(resampled_normal_energy);
   w.put(detections);
+  w.put(static_cast<std::uint64_t>(joints.size()));
+  if (joints.size() > 0) joints.save(w);
 }
 
 void ContactSet::load(ByteReader& r, int blocks) {
@@ -85,6 +89,8 @@ void ContactSet::load(ByteReader& r, int blocks) {
     r.get(p.first);
     r.get(p.count);
     r.get(p.patch_area);
+    r.get(p.normal_local);
+    r.get(p.offset_local);
   }
   r.get(sub.pair);
   const std::size_t n = sub.pair.size();
@@ -113,6 +119,12 @@ void ContactSet::load(ByteReader& r, int blocks) {
   r.get(dropped_shear_energy);
   r.get(resampled_normal_energy);
   r.get(detections);
+  std::uint64_t nj = 0;
+  r.get(nj);
+  if (nj != 0 && nj != np)
+    throw StateFormatError("the joints of " + std::to_string(nj) + " pairs, " + std::to_string(np) + " pairs");
+  joints = PairJoints{};
+  if (nj > 0) joints.load(r, np);
 
   // Indices in range: a checkpoint that passed its checksum but was written
   // for another scene must not index out of bounds.
@@ -176,6 +188,8 @@ void build_subcontacts(const Blocks& b, const std::vector<std::pair<int, int>>& 
     const Mat3& Ri = b.state.rotation[inc];
     const Vec3 n_local = Rr.transpose() * patch.normal;
     const double off_local = patch.offset - patch.normal.dot(b.state.position[cp.ref_block]);
+    cp.normal_local = n_local;
+    cp.offset_local = off_local;
     for (const PatchPoint& pt : patch.points) {
       sc.pair[s] = static_cast<int>(contacts.pairs.size());
       sc.ref_block[s] = cp.ref_block;

@@ -29,6 +29,7 @@
 #pragma once
 
 #include "contact/contact_patch.hpp"
+#include "contact/pair_joints.hpp"
 #include "core/blocks.hpp"
 #include "core/byte_stream.hpp"
 #include "geometry/polyhedron.hpp"
@@ -49,6 +50,10 @@ struct ContactPair {
   int inc_face = 0;        // face of the other block
   int first = 0, count = 0;  // range in Subcontacts
   double patch_area = 0;   // m²
+  // The common plane this detection found, in ref_block's frame: unit
+  // normal and offset (normal·x = offset).
+  Vec3 normal_local = Vec3::UnitZ();
+  double offset_local = 0;
 };
 
 struct Subcontacts {
@@ -92,6 +97,8 @@ struct Subcontacts {
 struct ContactSet {
   std::vector<ContactPair> pairs;
   Subcontacts sub;
+  // Per pair, under the overlap joint model only (contact/overlap_joint.hpp).
+  PairJoints joints;
   // CSR list of the subcontacts acting on each block, in a fixed order:
   // gather_offset[i] .. gather_offset[i+1] index gather_sub/gather_sign.
   std::vector<int> gather_offset, gather_sub;
@@ -108,6 +115,9 @@ struct ContactSet {
   // cumulative: a ledger line of its own.
   double resampled_normal_energy = 0;
   int detections = 0;
+  // True under the overlap joint model once it has pairs: the joints'
+  // forces and energies are the pairs' (`joints`), not the subcontacts'.
+  bool pair_joints_in_use() const { return !pairs.empty() && joints.size() == pairs.size(); }
 
   // Checkpoints: every array above, bit for bit (see core/byte_stream.hpp).
   // load() checks that the arrays agree in length and that every block and

@@ -38,6 +38,13 @@ enum class StepBound { block, joint };
 // spire's ξ = 0.83, for a second pass over the subcontacts each step.
 enum class DampingScheme { explicit_lagged, split };
 
+// How a joint's forces are computed (contact/joint_law.hpp,
+// contact/overlap_joint.hpp): `subcontacts` samples it at points fixed in the
+// blocks between detections, 3DEC style; `overlap` integrates a Winkler
+// layer over the blocks' current overlap at every step, with the shear and
+// twist of the joint taken whole.
+enum class JointModel { subcontacts, overlap };
+
 // [simulation]
 struct SimulationSpec {
   double end_time = 1.0;          // s, > 0
@@ -45,6 +52,7 @@ struct SimulationSpec {
   double safety_factor = 0.8;     // fraction of the critical step, in (0, 1]
   StepBound time_step_bound = StepBound::block;
   DampingScheme damping_scheme = DampingScheme::explicit_lagged;
+  JointModel joint_model = JointModel::subcontacts;
   Vec3 gravity{0.0, 0.0, -kGravity};  // m/s²
   double contact_margin = 0.0;    // m; 0 = automatic (2 % of the smallest block's size)
   int threads = 0;                // 0 = OpenMP default

@@ -12,6 +12,11 @@ namespace {
 // Blocks i and i + 1 (when below end) gathered, two sums in flight.
 void gather_two_blocks(const BlockUpdate& u, int i, int end) {
   auto& st = u.blocks.state;
+  if (u.pair_gather) {
+    for (int k = i; k < std::min(i + 2, end); ++k)
+      u.pair_gather->sum(k, *u.pair_wrench, st.contact_force[k], st.contact_torque[k]);
+    return;
+  }
   const gather_lanes::GatherArrays a = gather_lane_arrays(u.contacts, st.position, st.contact_force, st.contact_torque);
   if (i + 1 < end)
     u.gather.two(a, i, i + 1);
@@ -231,6 +236,11 @@ void gather_and_predict(BlockUpdate& u, DashpotRest& rest, int begin, int end) {
 
 void gather_all_blocks(const BlockUpdate& u) {
   auto& st = u.blocks.state;
+  if (u.pair_gather) {
+    for (int i = 0; i < u.blocks.count; ++i)
+      u.pair_gather->sum(i, *u.pair_wrench, st.contact_force[i], st.contact_torque[i]);
+    return;
+  }
   const gather_lanes::GatherArrays a = gather_lane_arrays(u.contacts, st.position, st.contact_force, st.contact_torque);
   for (int i = 0; i < u.blocks.count; ++i) u.gather.block(a, i);
 }

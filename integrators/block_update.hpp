@@ -17,6 +17,7 @@
 #pragma once
 
 #include "contact/gather.hpp"
+#include "contact/pair_gather.hpp"
 #include "core/blocks.hpp"
 #include "core/ground_motion.hpp"
 #include "integrators/applied_loads.hpp"
@@ -47,6 +48,10 @@ struct BlockUpdate {
   StepClock clock;
   gather_lanes::GatherKernels gather;
   block_lanes::AdvanceFour advance_four;
+  // The overlap joint model: the joints' wrenches per pair, gathered by pair
+  // (contact/pair_gather.hpp) in place of the subcontacts' forces.
+  const PairGather* pair_gather = nullptr;
+  const std::vector<lanes::PairRest>* pair_wrench = nullptr;
 };
 
 // Gathers and advances the free blocks [begin, end) (the calling thread's).

@@ -15,6 +15,7 @@
 #pragma once
 
 #include "contact/joint_law.hpp"
+#include "contact/pair_gather.hpp"
 #include "core/blocks.hpp"
 #include "integrators/energy_ledger.hpp"
 
@@ -28,7 +29,7 @@ struct DashpotRest {
   std::vector<std::uint8_t> dashpot_state;    // per subcontact (DashpotState)
   std::vector<lanes::PairRest> pair_rest;     // per pair
   Vec3Array force_sub;                        // per subcontact: the rest force (Simulation::subcontact_force)
-  std::vector<int> block_offset, block_pair;  // each block's pairs, 2·pair + 1 where it is the reference
+  PairGather pairs;                           // each block's pairs
   std::vector<Vec3> velocity_next, omega_next;  // per block: predicted after the step's forces
   std::vector<Vec3> force, torque;              // per block: the gathered rest
   std::vector<double> work;                     // per block, J (the ledger's: −Σ is dissipation)

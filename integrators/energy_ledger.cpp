@@ -1,5 +1,7 @@
 #include "integrators/energy_ledger.hpp"
 
+#include "contact/overlap_joint.hpp"
+
 namespace polydem {
 
 void LedgerKinematics::start(const BlockState& st) {
@@ -41,12 +43,19 @@ EnergyLedger energies(const Blocks& blocks, const LedgerKinematics& k, const Joi
     e.kinetic += 0.5 * wb0.dot(pr.principal_inertia[i].cwiseProduct(wb1));
     e.gravitational += -m * gravity.dot(k.position_prev[i] - blocks.initial_position[i]);
   }
-  e.strain = joint_strain_energy(laws, contacts.sub);
-  e.slip = contacts.retired_slip_energy;
-  e.damping = contacts.retired_damping_energy;
-  for (std::size_t s = 0; s < contacts.sub.size(); ++s) {
-    e.slip += contacts.sub.slip_energy[s];
-    e.damping += contacts.sub.damping_energy[s];
+  if (contacts.pair_joints_in_use()) {
+    const PairJointEnergies j = pair_joint_energies(contacts);
+    e.strain = j.strain;
+    e.slip = j.slip;
+    e.damping = j.damping;
+  } else {
+    e.strain = joint_strain_energy(laws, contacts.sub);
+    e.slip = contacts.retired_slip_energy;
+    e.damping = contacts.retired_damping_energy;
+    for (std::size_t s = 0; s < contacts.sub.size(); ++s) {
+      e.slip += contacts.sub.slip_energy[s];
+      e.damping += contacts.sub.damping_energy[s];
+    }
   }
   for (double w : rest_work) e.damping -= w;
   for (double w : k.load_work) e.load_work += w;

@@ -73,18 +73,28 @@ void check_health(Guard& g, const Blocks& blocks, const ContactSet& contacts, do
   // other. A hard impact sinks a joint by about v·sqrt(m/(kn·A)), a few mm for
   // a stone falling metres onto a corner: more than the margin, which is
   // therefore not the limit (only its floor).
+  // Under the overlap joint model the overlap judged is the blocks' true
+  // one (the largest over the joint); otherwise the subcontacts'.
   const auto& sub = contacts.sub;
   const auto& size = blocks.props.size;
-  for (std::size_t s = 0; s < sub.size(); ++s) {
-    const double smaller = std::min(size[sub.ref_block[s]], size[sub.inc_block[s]]);
+  auto judge = [&](int ref, int inc, double overlap) {
+    const double smaller = std::min(size[ref], size[inc]);
     const double limit = std::max(margin, g.penetration_limit * smaller);
-    const double overlap = sub.geometric_overlap(s);
-    if (overlap <= limit) continue;
+    if (overlap <= limit) return;
     std::ostringstream what;
-    what << "blocks '" << blocks.props.name[sub.ref_block[s]] << "' and '" << blocks.props.name[sub.inc_block[s]]
-         << "' overlap by " << overlap << " m, beyond the penetration limit " << limit << " m ("
-         << 100 * g.penetration_limit << " % of the smaller block's size, at least the contact margin)";
+    what << "blocks '" << blocks.props.name[ref] << "' and '" << blocks.props.name[inc] << "' overlap by "
+         << overlap << " m, beyond the penetration limit " << limit << " m (" << 100 * g.penetration_limit
+         << " % of the smaller block's size, at least the contact margin)";
     stop(what.str());
+  };
+  if (contacts.pair_joints_in_use()) {
+    for (std::size_t q = 0; q < contacts.pairs.size(); ++q) {
+      const ContactPair& cp = contacts.pairs[q];
+      const int r = contacts.joints.ref_block[q];
+      judge(r, r == cp.a ? cp.b : cp.a, contacts.joints.overlap[q]);
+    }
+  } else {
+    for (std::size_t s = 0; s < sub.size(); ++s) judge(sub.ref_block[s], sub.inc_block[s], sub.geometric_overlap(s));
   }
   const double mechanical = e.kinetic + e.gravitational + e.strain - e.load_work;
   if (!g.energy_started) {

@@ -37,6 +37,9 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, JointLaws laws,
       threads_(make_step_threads(sim.adaptive_threads)),
       loads_(make_applied_loads(std::move(loads), blocks_)) {
   profile_.threads_given = omp_get_max_threads();
+  overlap_joints_ = sim.joint_model == JointModel::overlap;
+  if (overlap_joints_) overlap_scratch_.resize(static_cast<std::size_t>(std::max(1, omp_get_max_threads())));
+  detector_.set_pair_joints(overlap_joints_);
   ledger_.start(blocks_.state);
   // The first detection on the governor's threads: one, when it governs
   // (beside a competitor the first region on two threads waits ~15 ms for
@@ -55,7 +58,7 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, JointLaws laws,
 // shear increment, gravity, the ground motion), so that free flight from a
 // given velocity is the exact parabola and not half a step late.
 void Simulation::start_half_step_back() {
-  compute_pair_forces(laws_, blocks_.state, contacts_.pairs, contacts_.sub, 0.0, 0, contacts_.pairs.size());
+  joint_forces(0.0, 0, contacts_.pairs.size(), CodePath::automatic, {}, 0);
   gather_all_blocks(block_update(step_loads()));
   if (!loads_.loaded.empty()) evaluate_point_loads(loads_, blocks_.state, 0.0);
   auto& st = blocks_.state;
@@ -78,6 +81,19 @@ void Simulation::start_half_step_back() {
   // The forces at t = 0 started the half step back, not a step of the run:
   // no dashpot work of theirs is owed to the ledger.
   contacts_.sub.damping_force.fill_zero();
+  std::fill(contacts_.joints.damping.begin(), contacts_.joints.damping.end(), lanes::PairRest{});
+}
+
+// Stage 2 for pairs [begin, end) on thread `thread`: the joint law of the
+// scene's model.
+void Simulation::joint_forces(double dt, std::size_t begin, std::size_t end, CodePath path, const SplitPart& part,
+                              int thread) {
+  if (overlap_joints_) {
+    overlap_joint_forces(laws_, blocks_.props.local_shape, blocks_.state, contacts_.pairs, contacts_.sub,
+                         contacts_.joints, dt, begin, end, overlap_scratch_[static_cast<std::size_t>(thread)]);
+    return;
+  }
+  compute_pair_forces(laws_, blocks_.state, contacts_.pairs, contacts_.sub, dt, begin, end, path, part);
 }
 
 // Before a detection replaces the subcontacts, each books the second half of
@@ -88,9 +104,13 @@ void Simulation::start_half_step_back() {
 // the change exactly (the velocity update spans the mean of the old and new
 // steps).
 DetectionTimes Simulation::detect_contacts() {
-  settle_damping_work(blocks_.state, contacts_.sub, clock_.dt);
+  if (overlap_joints_)
+    settle_pair_damping(blocks_.state, contacts_.pairs, contacts_.joints, clock_.dt);
+  else
+    settle_damping_work(blocks_.state, contacts_.sub, clock_.dt);
   const DetectionTimes times =
       detector_.detect(blocks_, contacts_, bond_initial_ && contacts_.detections == 0, laws_);
+  if (overlap_joints_) pair_gather_.build(contacts_.pairs, blocks_.count, &contacts_.joints.ref_block);
   if (sim_.damping_scheme == DampingScheme::split) rest_.size_for(contacts_, blocks_.count);
   if (!control_.adaptive) return times;
   const CriticalStep c =
@@ -171,8 +191,13 @@ BlockUpdate Simulation::block_update(const StepLoads& loads) {
 #ifdef POLYDEM_LANES_AVX2
   if (use_lanes(code_path_)) advance_four = &block_lanes::advance_four_avx2;
 #endif
-  return BlockUpdate{blocks_,  ledger_,     loads_, stage_, motion_, contacts_, sim_.gravity, loads, clock_,
-                     gather_kernels(code_path_), advance_four};
+  BlockUpdate u{blocks_,  ledger_,     loads_, stage_, motion_, contacts_, sim_.gravity, loads, clock_,
+                gather_kernels(code_path_), advance_four};
+  if (overlap_joints_) {
+    u.pair_gather = &pair_gather_;
+    u.pair_wrench = &contacts_.joints.wrench;
+  }
+  return u;
 }
 
 // Stages 2 and 3 in one parallel region (small scenes on one thread). Each
@@ -189,11 +214,13 @@ int Simulation::integrate(int threads, const StepLoads& loads, double& law_secon
   SplitPart part;
   if (split) part = {1.0 - rest_.fraction, rest_.dashpot_state.data()};
   int region_threads = 1;
+  if (overlap_joints_ && overlap_scratch_.size() < static_cast<std::size_t>(threads))
+    overlap_scratch_.resize(static_cast<std::size_t>(threads));
 #pragma omp parallel if (parallel) num_threads(threads)
   {
     const int nt = omp_get_num_threads(), t = omp_get_thread_num();
     const auto [pb, pe] = thread_range(contacts_.pairs.size(), static_cast<std::size_t>(nt), static_cast<std::size_t>(t));
-    compute_pair_forces(laws_, blocks_.state, contacts_.pairs, contacts_.sub, clock_.dt, pb, pe, code_path_, part);
+    joint_forces(clock_.dt, pb, pe, code_path_, part, t);
 #pragma omp barrier
 #pragma omp master
     {
@@ -261,6 +288,10 @@ void Simulation::end_static_stage() {
   std::fill(contacts_.sub.slip_energy.begin(), contacts_.sub.slip_energy.end(), 0.0);
   std::fill(contacts_.sub.damping_energy.begin(), contacts_.sub.damping_energy.end(), 0.0);
   contacts_.sub.damping_force.fill_zero();
+  PairJoints& j = contacts_.joints;
+  std::fill(j.slip_energy.begin(), j.slip_energy.end(), 0.0);
+  std::fill(j.damping_energy.begin(), j.damping_energy.end(), 0.0);
+  std::fill(j.damping.begin(), j.damping.end(), lanes::PairRest{});
   guard_.restart(st);
   // The profile counts the run's own steps; the threads it was given stay.
   profile_ = StepProfile{.threads_given = profile_.threads_given};
@@ -305,6 +336,11 @@ void Simulation::load_state(ByteReader& r) {
   ledger_.load(r, n);
   guard_.load(r, n);
   contacts_.load(r, count);
+  if (overlap_joints_) {  // the derived lists a checkpoint does not hold
+    pair_gather_.build(contacts_.pairs, blocks_.count, &contacts_.joints.ref_block);
+    find_joint_cells(blocks_.props.local_shape, blocks_.state, contacts_.pairs, contacts_.sub, detector_.margin(),
+                     contacts_.joints, overlap_scratch_[0]);
+  }
   detector_.load(r);
   loads_.load(r, n);
   if (sim_.damping_scheme == DampingScheme::split) {

@@ -5,6 +5,7 @@
 //      (contact/detection.hpp; settled at the last step's end where the
 //      threads' bound is clear, step_threads.hpp)
 //   2. joint law: one force slot per subcontact       (contact/joint_law.hpp)
+//      or, under the overlap model, one wrench per pair (overlap_joint.hpp)
 //   3. gather and central-difference update            (block_update.hpp)
 //      with the split damping scheme, between them: the rest of the
 //      dashpots from the predicted velocities          (dashpot_rest.hpp)
@@ -17,6 +18,8 @@
 #pragma once
 
 #include "contact/detection.hpp"
+#include "contact/overlap_joint.hpp"
+#include "contact/pair_gather.hpp"
 #include "core/code_path.hpp"
 #include "integrators/applied_loads.hpp"
 #include "integrators/critical_time_step.hpp"
@@ -60,7 +63,8 @@ class Simulation {
   int time_step_reductions() const { return control_.reductions; }
   const CriticalStep& time_step_source() const { return control_.source; }
   double split_fraction() const { return rest_.fraction; }  // the split scheme's θ (0: explicit)
-  // Subcontact s's whole joint force on the incident block at the last step.
+  // Subcontact s's whole joint force on the incident block at the last step
+  // (zero under the overlap model, whose forces are the pairs').
   Vec3 subcontact_force(std::size_t s) const {
     return rest_.fraction > 0 ? Vec3(contacts_.sub.force[s] + rest_.force_sub[s]) : contacts_.sub.force[s];
   }
@@ -115,6 +119,7 @@ class Simulation {
  private:
   DetectionTimes detect_contacts();
   void start_half_step_back();
+  void joint_forces(double dt, std::size_t begin, std::size_t end, CodePath path, const SplitPart& part, int thread);
   StepLoads step_loads() const;
   BlockUpdate block_update(const StepLoads& loads);
   int integrate(int threads, const StepLoads& loads, double& law_seconds);
@@ -144,6 +149,11 @@ class Simulation {
   AppliedLoads loads_;
   StaticStage stage_;
   DashpotRest rest_;
+  // The overlap joint model (contact/overlap_joint.hpp): per-thread scratch
+  // and each block's pairs.
+  bool overlap_joints_ = false;
+  std::vector<OverlapScratch> overlap_scratch_;
+  PairGather pair_gather_;
   StepProfile profile_;
 };
 

@@ -43,7 +43,7 @@ using namespace deck_reader;
 constexpr std::string_view kSimulationKeys[] = {
     "end_time",          "time_step",       "safety_factor", "gravity",    "contact_margin", "threads", "adaptive_threads",
     "overlap_tolerance", "settle_velocity", "settle_time",   "gravity_rise_time", "time_step_bound",
-    "damping_scheme"};
+    "damping_scheme",    "joint_model"};
 constexpr std::string_view kJointKeys[] = {"normal_stiffness", "shear_stiffness",  "friction_angle",
                                            "cohesion",         "tensile_strength", "damping", "between"};
 constexpr std::string_view kGroupKeys[] = {"name", "density"};
@@ -112,6 +112,10 @@ SimulationSpec read_simulation(const Deck& deck) {
   s.damping_scheme = r.choice<DampingScheme>(
       "damping_scheme", {{"explicit", DampingScheme::explicit_lagged}, {"split", DampingScheme::split}},
       s.damping_scheme);
+  s.joint_model = r.choice<JointModel>(
+      "joint_model", {{"subcontacts", JointModel::subcontacts}, {"overlap", JointModel::overlap}}, s.joint_model);
+  if (s.joint_model == JointModel::overlap && s.damping_scheme == DampingScheme::split)
+    r.fail("joint_model", "\"overlap\" works with damping_scheme = \"explicit\" only");
   s.gravity = r.vec3("gravity").value_or(s.gravity);
   s.contact_margin = r.number("contact_margin", s.contact_margin, Range::non_negative);
   if (const auto t = r.integer("threads")) {
@@ -144,6 +148,20 @@ JointSpec read_joint_keys(const TableReader& r, const JointSpec& base, double sh
   j.tensile_strength = r.number("tensile_strength", base.tensile_strength, Range::non_negative);
   j.damping = r.number("damping", base.damping, Range::non_negative);
   return j;
+}
+
+// The overlap joint model's layer carries compression only
+// (contact/overlap_joint.hpp): a law with cohesion or tensile strength is
+// refused where it is given.
+void refuse_bonds_for_overlap(const Deck& deck, const SceneSpec& scene) {
+  auto bonds = [](const JointSpec& j) { return j.cohesion > 0 || j.tensile_strength > 0; };
+  const std::string why = "cohesion or tensile strength is not modelled by simulation.joint_model = \"overlap\" "
+                          "(compression and friction only); use \"subcontacts\"";
+  const toml::node* node = deck.root().get("joint");
+  if (bonds(scene.joint)) deck.fail("joint", node, why);
+  for (const JointPairSpec& p : scene.joint_pairs)
+    if (bonds(p.joint))
+      deck.fail("joint", node, "the law between '" + p.group_a + "' and '" + p.group_b + "': " + why);
 }
 
 JointSpec default_joint(const JointDefaults& defaults) {
@@ -901,6 +919,7 @@ SceneSpec parse_deck(const std::string& text, const std::string& path_for_messag
   JointSection joints = read_joints(deck, generated.joint.value_or(JointDefaults{}), scene.blocks);
   scene.joint = joints.joint;
   scene.joint_pairs = std::move(joints.pairs);
+  if (scene.simulation.joint_model == JointModel::overlap) refuse_bonds_for_overlap(deck, scene);
   scene.groups = read_groups(deck, scene.blocks);
   scene.loads = read_loads(deck, scene.blocks);
   scene.prescribed = read_prescribed(deck, scene.blocks);

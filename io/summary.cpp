@@ -172,6 +172,7 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   s.set("time_step_bound", spec.simulation.time_step_bound == StepBound::joint ? "joint" : "block");
   s.set("time_step_block", r.time_step_block);
   s.set("damping_scheme", spec.simulation.damping_scheme == DampingScheme::split ? "split" : "explicit");
+  s.set("joint_model", spec.simulation.joint_model == JointModel::overlap ? "overlap" : "subcontacts");
   s.set("damping_split_fraction", r.damping_split_fraction);
   s.set("contact_margin_m", r.margin);
   s.set("blocks", r.blocks);

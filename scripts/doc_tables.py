@@ -208,7 +208,8 @@ def table_convergence():
     got = {}
     for r in rows:
         got.setdefault((r["case"], r["setting"]), {})[r["quantity"]] = r["value"]
-    order = ["default", "safety factor 0.4", "safety factor 0.2", "margin x0.5", "margin x2", "split damping"]
+    order = ["default", "safety factor 0.4", "safety factor 0.2", "margin x0.5", "margin x2", "split damping",
+             "overlap model", "overlap model, margin x0.5", "overlap model, margin x2"]
     settings = sorted({r["setting"] for r in rows}, key=lambda s: (order.index(s) if s in order else len(order), s))
 
     def crack(q):
@@ -225,7 +226,7 @@ def table_convergence():
     def setting_name(s):
         name = s.replace(" x", " ×")
         margin = got.get(("main", s), {}).get("contact margin")
-        return f"{name} ({1000 * float(margin):.2f} mm)" if s.startswith("margin") and margin else name
+        return f"{name} ({1000 * float(margin):.2f} mm)" if "margin" in s and margin else name
 
     header = ["setting", "time step (µs)", "mechanism (g)", "crack", "stones fallen", "main job",
               "pulse 0.25 g", "pulse 0.35 g", "pulse 0.5 g", "λ onto a window face (g, bracket)"]

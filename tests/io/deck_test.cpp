@@ -442,6 +442,20 @@ TEST(DeckErrors, ValuesOutOfRange) {
   expect_error("[[block]]\n" + kBox + "group = \"\"\n", 4, "block[1].group", "must not be empty");
 }
 
+// The overlap joint model carries compression and friction only, under the
+// explicit damping scheme: a deck asking for more is refused where it asks.
+TEST(DeckErrors, TheOverlapModelRefusesBondsAndTheSplitScheme) {
+  expect_error("[simulation]\njoint_model = \"sampled\"\n[[block]]\n" + kBox, 2, "simulation.joint_model",
+               "must be one of \"subcontacts\", \"overlap\" (got \"sampled\")");
+  expect_error("[simulation]\njoint_model = \"overlap\"\ndamping_scheme = \"split\"\n[[block]]\n" + kBox, 2,
+               "simulation.joint_model", "works with damping_scheme = \"explicit\" only");
+  expect_error("[simulation]\njoint_model = \"overlap\"\n[joint]\ncohesion = 1e5\n[[block]]\n" + kBox, 3, "joint",
+               "cohesion or tensile strength is not modelled");
+  expect_error("[joint]\ntensile_strength = 1e5\n[[block]]\n" + kBox, 1, "joint",
+               "cohesion or tensile strength is not modelled", {"simulation.joint_model=\"overlap\""});
+  EXPECT_NO_THROW(parse_deck("[simulation]\njoint_model = \"overlap\"\n[[block]]\n" + kBox, kFile));
+}
+
 TEST(DeckErrors, BadEnumsListTheAllowedValues) {
   expect_error("[simulation]\ntime_step_bound = \"exact\"\n[[block]]\n" + kBox, 2, "simulation.time_step_bound",
                "must be one of \"block\", \"joint\" (got \"exact\")");

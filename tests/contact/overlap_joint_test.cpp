@@ -1,0 +1,318 @@
+// The overlap joint model (contact/overlap_joint.hpp) against closed forms,
+// and the continuity of its forces across a detection.
+//
+// Geometry: a cube of side 1 m resting on a fixed base whose top face is the
+// plane z = 0; the cube pressed into it by δ = 2⁻¹² m, tilted, slid or
+// twisted. The Winkler layer's integrals are exact for these linear fields,
+// so the forces agree with the closed forms to round-off (1e-12 relative).
+#include "contact/detection.hpp"
+#include "contact/overlap_joint.hpp"
+#include "contact/pair_gather.hpp"
+#include "structures/spire.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <random>
+
+namespace polydem {
+namespace {
+
+constexpr double kDelta = 1.0 / 4096.0;
+constexpr double kMargin = 0.01;
+
+JointLaw law_for_test() {
+  JointLaw law;
+  law.kn = 1e10;
+  law.ks = 4e9;
+  law.tan_phi = 0.5;
+  return law;
+}
+
+BlockSpec block_spec(std::string name, Polyhedron shape, BlockMotion motion) {
+  BlockSpec s;
+  s.name = std::move(name);
+  s.shape = std::move(shape);
+  s.motion = motion;
+  return s;
+}
+
+void turn(Blocks& b, int i, double angle, const Vec3& axis) {
+  b.state.orientation[i] = (Quat(Eigen::AngleAxisd(angle, axis.normalized())) * b.state.orientation[i]).normalized();
+  b.state.rotation[i] = b.state.orientation[i].toRotationMatrix();
+}
+
+// A base and a cube on it, detected under the overlap model.
+struct CubeOnBase {
+  Blocks blocks;
+  JointLaws laws;
+  ContactDetector detector;
+  ContactSet contacts;
+  OverlapScratch scratch;
+  explicit CubeOnBase(const JointLaw& law = law_for_test())
+      : blocks(build_blocks({block_spec("base", make_box(Vec3(3, 3, 1), Vec3(0, 0, -0.5)), BlockMotion::fixed),
+                             block_spec("cube", make_box(Vec3(1, 1, 1), Vec3(0, 0, 0.5)), BlockMotion::free)})),
+        laws(uniform_joint_laws(law, 2)),
+        detector(blocks, kMargin) {
+    detector.set_pair_joints(true);
+    detect();
+  }
+  void detect() { detector.detect(blocks, contacts, false, laws); }
+  // One evaluation of the law (dt = 0: no increments, no dashpot work).
+  const lanes::PairRest& wrench(double dt = 0.0) {
+    overlap_joint_forces(laws, blocks.props.local_shape, blocks.state, contacts.pairs, contacts.sub, contacts.joints,
+                         dt, 0, contacts.pairs.size(), scratch);
+    return contacts.joints.wrench[0];
+  }
+  Vec3 force() { return Vec3(wrench().force[0], wrench().force[1], wrench().force[2]); }
+};
+
+Vec3 v3(const double (&a)[3]) { return Vec3(a[0], a[1], a[2]); }
+
+TEST(OverlapJoint, PressedFlatCarriesKnTimesAreaTimesDepthAtTheCentre) {
+  CubeOnBase s;
+  s.blocks.state.position[1].z() -= kDelta;
+  const lanes::PairRest& w = s.wrench();
+  const double kn = law_for_test().kn;
+  EXPECT_NEAR(w.force[2], kn * 1.0 * kDelta, 1e-12 * kn * kDelta);
+  EXPECT_NEAR(std::hypot(w.force[0], w.force[1]), 0.0, 1e-12 * kn * kDelta);
+  // Through the centroid: no moment on the cube about its centroid.
+  EXPECT_NEAR(v3(w.moment).norm(), 0.0, 1e-12 * kn * kDelta);
+  EXPECT_NEAR(s.contacts.joints.strain_energy[0], 0.5 * kn * kDelta * kDelta, 1e-12 * kn * kDelta * kDelta);
+  EXPECT_NEAR(s.contacts.joints.area[0], 1.0, 1e-12);
+  EXPECT_NEAR(s.contacts.joints.overlap[0], kDelta, 1e-15);
+}
+
+// Tilted by θ about y with the whole base pressed. The base's points at
+// body abscissa x lie at depth δ + x·sin θ − ½(1 − cos θ), at world abscissa
+// ξ = x·cos θ − ½ sin θ: over the region, of width cos θ about ξ_c = −½ sin θ,
+// the overlap is linear, t = t_c + tan θ·(ξ − ξ_c) with t_c = δ − ½(1 − cos θ).
+// So N = kn·t_c·cos θ and, about the base's centre, M_y = −kn·tan θ·cos³θ/12.
+// The cube's side face, tilted by θ, adds a sliver 4e-8 m wide: 1e-7 of N.
+TEST(OverlapJoint, TiltedBaseGivesTheLinearPressuresMoment) {
+  CubeOnBase s;
+  const double theta = 1.0 / 8192.0;  // the whole face stays pressed
+  s.blocks.state.position[1].z() -= kDelta;
+  turn(s.blocks, 1, theta, Vec3::UnitY());
+  const lanes::PairRest& w = s.wrench();
+  const double kn = law_for_test().kn;
+  const double tc = kDelta - 0.5 * (1 - std::cos(theta));
+  EXPECT_NEAR(w.force[2], kn * tc * std::cos(theta), 1e-6 * kn * kDelta);
+  const Vec3 centre = s.blocks.state.position[1] + s.blocks.state.rotation[1] * Vec3(0, 0, -0.5);
+  const Vec3 about_centre = v3(w.moment) - (centre - s.blocks.state.position[1]).cross(v3(w.force));
+  const double expected = -kn * std::tan(theta) * std::pow(std::cos(theta), 3) / 12.0;
+  EXPECT_NEAR(about_centre.y(), expected, 1e-6 * std::abs(expected));
+}
+
+// Sliding at v along x for k steps of dt: F = −ks·A·v·dt·k while below
+// μN; then held at μN and the friction's work is μN times the slip.
+TEST(OverlapJoint, ShearSticksThenSlipsAtTheCoulombCap) {
+  CubeOnBase s;
+  s.blocks.state.position[1].z() -= kDelta;
+  const JointLaw law = law_for_test();
+  const double dt = 1e-6, v = 1e-3;
+  s.blocks.state.velocity[1] = Vec3(v, 0, 0);
+  const double cap = law.tan_phi * law.kn * kDelta;  // 1.2e6 N
+  int k = 0;
+  for (; k < 5; ++k) s.wrench(dt);
+  // The dashpot is off (β = 0): the wrench is the spring's.
+  EXPECT_NEAR(s.contacts.joints.shear[0].x(), -law.ks * 1.0 * v * dt * k, 1e-9 * law.ks * v * dt * k);
+  EXPECT_EQ(s.contacts.joints.slip_energy[0], 0.0);
+  // Steps enough to reach the cap (ks·A·v·dt = 4 N a step: 3e5 steps) are
+  // many; one long step instead, as the law takes any dt.
+  const double long_dt = 2.0 * cap / (law.ks * v);  // twice the cap's displacement
+  s.wrench(long_dt);
+  EXPECT_NEAR(s.contacts.joints.shear[0].norm(), cap, 1e-9 * cap);
+  EXPECT_EQ(s.contacts.joints.sliding[0], 1);
+  // Trial |F_t| ≈ 2·cap + the first 5 steps; work = cap·(|F_t| − cap)/(ks·A).
+  const double trial = law.ks * v * (dt * 5 + long_dt);
+  EXPECT_NEAR(s.contacts.joints.slip_energy[0], cap * (trial - cap) / law.ks, 1e-9 * cap * cap / law.ks);
+}
+
+// Spun at ω about z: T = −ks·J·ω·dt per step with J = 1/6 for the unit
+// square about its centre; held at T_max = 0.94·√(J/A)·μN when spun far.
+TEST(OverlapJoint, TwistHasThePolarMomentsStiffnessAndTheEllipsesCap) {
+  CubeOnBase s;
+  s.blocks.state.position[1].z() -= kDelta;
+  const JointLaw law = law_for_test();
+  const double dt = 1e-6, w = 1e-3;
+  s.blocks.state.angular_velocity[1] = Vec3(0, 0, w);
+  s.wrench(dt);
+  EXPECT_NEAR(s.contacts.joints.twist[0], -law.ks * w * dt / 6.0, 1e-9 * law.ks * w * dt);
+  EXPECT_NEAR(s.contacts.joints.shear[0].norm(), 0.0, 1e-9 * law.ks * w * dt);
+  s.wrench(1.0);  // far beyond the cap
+  const double cap = law.tan_phi * law.kn * kDelta;
+  EXPECT_NEAR(std::abs(s.contacts.joints.twist[0]), 0.94 * std::sqrt(1.0 / 6.0) * cap, 1e-9 * cap);
+  EXPECT_GT(s.contacts.joints.slip_energy[0], 0.0);
+}
+
+TEST(OverlapJoint, TheDashpotNeverPullsTheBlocksTogether) {
+  JointLaw law = law_for_test();
+  law.beta = 1e-3;
+  CubeOnBase s(law);
+  s.blocks.state.position[1].z() -= kDelta;
+  s.blocks.state.velocity[1] = Vec3(0, 0, 10.0);  // leaving fast
+  const lanes::PairRest& w = s.wrench(1e-6);
+  EXPECT_NEAR(w.force[2], 0.0, 1e-12 * law.kn * kDelta);  // cut at zero, not below
+}
+
+// The default spire's blocks, the base fixed.
+Blocks spire_blocks() {
+  const SpireModel model = build_spire(SpireSpec{});
+  std::vector<BlockSpec> specs;
+  for (const GeneratedBlock& g : model.blocks)
+    specs.push_back(block_spec(g.name, g.shape, g.kind == BlockKind::base ? BlockMotion::fixed : BlockMotion::free));
+  return build_blocks(specs);
+}
+
+// The joint's wrench for every pair of `c` (dt = 0: no increments).
+std::vector<lanes::PairRest> wrenches(const JointLaws& laws, const Blocks& b, ContactSet& c, OverlapScratch& s) {
+  overlap_joint_forces(laws, b.props.local_shape, b.state, c.pairs, c.sub, c.joints, 0.0, 0, c.pairs.size(), s);
+  return c.joints.wrench;
+}
+
+// The largest change of a pair's force and moment at a re-detection,
+// relative to the largest force (moment) of the pairs compared.
+double worst_jump(const std::vector<ContactPair>& pa, const std::vector<int>& ra, const std::vector<lanes::PairRest>& wa,
+                  const std::vector<ContactPair>& pb, const std::vector<int>& rb,
+                  const std::vector<lanes::PairRest>& wb) {
+  double fmax = 0, mmax = 0;
+  for (const auto& w : wa) {
+    fmax = std::max(fmax, v3(w.force).norm());
+    mmax = std::max({mmax, v3(w.moment).norm(), v3(w.moment_ref).norm()});
+  }
+  if (!(fmax > 0 && mmax > 0)) return std::numeric_limits<double>::infinity();  // nothing compared
+  double worst = 0;
+  std::size_t k = 0;
+  for (std::size_t q = 0; q < pa.size(); ++q) {
+    while (k < pb.size() && std::make_pair(pb[k].a, pb[k].b) < std::make_pair(pa[q].a, pa[q].b)) {
+      worst = std::max(worst, v3(wb[k].force).norm() / fmax);  // a pair only after
+      ++k;
+    }
+    const bool same = k < pb.size() && pb[k].a == pa[q].a && pb[k].b == pa[q].b;
+    const lanes::PairRest zero{};
+    const lanes::PairRest& a = wa[q];
+    const lanes::PairRest& b = same ? wb[k] : zero;
+    // The same pair seen from the other side: the wrench on the other block.
+    const bool flipped = same && ra[q] != rb[k];
+    const Vec3 fb = flipped ? Vec3(-v3(b.force)) : v3(b.force);
+    const Vec3 mb = flipped ? v3(b.moment_ref) : v3(b.moment);
+    const Vec3 mrb = flipped ? v3(b.moment) : v3(b.moment_ref);
+    const double here = std::max({(v3(a.force) - fb).norm() / fmax, (v3(a.moment) - mb).norm() / mmax,
+                      (v3(a.moment_ref) - mrb).norm() / mmax});
+    worst = std::max(worst, here);
+    if (same) ++k;
+  }
+  for (; k < pb.size(); ++k) worst = std::max(worst, v3(wb[k].force).norm() / fmax);
+  return worst;
+}
+
+// Moves the free blocks by up to `step` and turns them by up to
+// `step`/metre, and gives them velocities (for the shear increments).
+void perturb(Blocks& b, std::mt19937_64& rng, double step) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i : b.free_blocks) {
+    b.state.position[i] += step * Vec3(u(rng), u(rng), u(rng));
+    turn(b, i, step * std::abs(u(rng)), Vec3(u(rng), u(rng), u(rng)));
+  }
+}
+
+void set_velocities(Blocks& b, std::mt19937_64& rng, double v) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i : b.free_blocks) {
+    b.state.velocity[i] = v * Vec3(u(rng), u(rng), u(rng));
+    b.state.angular_velocity[i] = v * Vec3(u(rng), u(rng), u(rng));
+  }
+}
+
+// Forces continuous at a re-detection: shear and twist stored, the blocks
+// moved since the last detection (less than half the margin), the joints'
+// wrenches computed with the contacts held, then found again at the same
+// pose: the wrenches must not change (1e-9 relative to the largest).
+double redetection_jump(Blocks& blocks, const JointLaws& laws, double margin, std::uint64_t seed, double move) {
+  ContactDetector det(blocks, margin);
+  det.set_pair_joints(true);
+  ContactSet c;
+  OverlapScratch scratch;
+  std::mt19937_64 rng(seed);
+  det.detect(blocks, c, false, laws);
+  set_velocities(blocks, rng, 1e-2);
+  overlap_joint_forces(laws, blocks.props.local_shape, blocks.state, c.pairs, c.sub, c.joints, 1e-4, 0,
+                       c.pairs.size(), scratch);  // shear and twist stored
+  perturb(blocks, rng, move * margin);
+  const std::vector<ContactPair> pairs_before = c.pairs;
+  const std::vector<int> ref_before = c.joints.ref_block;
+  const std::vector<lanes::PairRest> before = wrenches(laws, blocks, c, scratch);
+  det.detect(blocks, c, false, laws);
+  const std::vector<lanes::PairRest> after = wrenches(laws, blocks, c, scratch);
+  return worst_jump(pairs_before, ref_before, before, c.pairs, c.joints.ref_block, after);
+}
+
+TEST(OverlapJoint, ForcesDoNotJumpAtARedetectionOnTheSpire) {
+  Blocks blocks = spire_blocks();
+  const JointLaws laws = uniform_joint_laws(law_for_test(), blocks.count);
+  // Pressed into each other first, so that the joints carry load.
+  std::mt19937_64 rng(11);
+  perturb(blocks, rng, 2e-4);
+  const double worst = redetection_jump(blocks, laws, 0.003, 5, 0.1);
+  std::printf("spire: worst jump at a re-detection %.3g\n", worst);
+  EXPECT_LT(worst, 1e-9);
+}
+
+TEST(OverlapJoint, ForcesDoNotJumpAtARedetectionEdgeOnAndCornerOn) {
+  for (const bool corner : {false, true}) {
+    std::vector<BlockSpec> specs = {
+        block_spec("below", make_box(Vec3(1, 1, 1), Vec3(0, 0, -0.5)), BlockMotion::free),
+        block_spec("above", make_box(Vec3(1, 1, 1), Vec3(0, 0, 0)), BlockMotion::free)};
+    Blocks b = build_blocks(specs);
+    // Above: an edge (about x by 45°) or a corner (then about y by 35.26°)
+    // down, 2 mm into the block below.
+    turn(b, 1, std::numbers::pi / 4, Vec3::UnitX());
+    if (corner) turn(b, 1, std::atan(1 / std::sqrt(2.0)), Vec3::UnitY());
+    double lowest = 1e9;
+    for (const Vec3& v : b.props.local_shape[1].vertices) lowest = std::min(lowest, (b.state.rotation[1] * v).z());
+    b.state.position[1].z() = -lowest - 0.002;
+    const double worst = redetection_jump(b, uniform_joint_laws(law_for_test(), 2), 0.01, corner ? 7 : 9, 0.02);
+    std::printf("%s-on: worst jump at a re-detection %.3g\n", corner ? "corner" : "edge", worst);
+    EXPECT_LT(worst, 1e-9);
+  }
+}
+
+// The face pairs found at a detection hold every cell until the next one:
+// the integral over them equals the full one, to the bit, on the spire's
+// pairs moved by up to a quarter of the margin.
+TEST(OverlapJoint, TheCellsFoundAtADetectionHoldEveryCellUntilTheNext) {
+  Blocks blocks = spire_blocks();
+  const JointLaws laws = uniform_joint_laws(law_for_test(), blocks.count);
+  const double margin = 0.003;
+  ContactDetector det(blocks, margin);
+  det.set_pair_joints(true);
+  ContactSet c;
+  det.detect(blocks, c, false, laws);
+  std::mt19937_64 rng(2);
+  perturb(blocks, rng, 0.25 * margin / std::sqrt(3.0));
+  OverlapScratch s;
+  int nonzero = 0;
+  for (std::size_t q = 0; q < c.pairs.size(); ++q) {
+    const ContactPair& cp = c.pairs[q];
+    const int r = c.joints.ref_block[q], o = r == cp.a ? cp.b : cp.a;
+    const PosedBlock A{&blocks.props.local_shape[r], blocks.state.rotation[r], blocks.state.position[r]};
+    const PosedBlock B{&blocks.props.local_shape[o], blocks.state.rotation[o], blocks.state.position[o]};
+    const Vec3 n = blocks.state.rotation[r] * c.joints.normal_local[q];
+    const JointFrame f = make_joint_frame(n, 0.5 * (A.x + B.x));
+    const OverlapMoments full = overlap_integral(A, B, f, s);
+    const FacePair* cells = c.joints.cells.data();
+    const OverlapMoments held =
+        overlap_integral(A, B, f, cells + c.joints.cell_first[q], cells + c.joints.cell_first[q + 1], s);
+    ASSERT_EQ(full.volume, held.volume) << "pair " << q;
+    ASSERT_EQ(full.area, held.area) << "pair " << q;
+    ASSERT_EQ(full.volume_moment, held.volume_moment) << "pair " << q;
+    nonzero += full.volume > 0;
+  }
+  EXPECT_GT(nonzero, 100);
+}
+
+}  // namespace
+}  // namespace polydem
