@@ -119,10 +119,10 @@ RecordSuite parse_record_suite(const std::string& text, const std::string& path)
     }
     rec.name = r.string("name").value_or(file_stem(rec.components.front().record_path));
     if (rec.name.empty()) r.fail("name", "must not be empty");
-    if (!names.insert(rec.name).second)
-      (r.has("name") ? r.fail("name", "names another record too: " + in_quotes(rec.name))
-                     : r.fail("file", "gives the same name as another record (" + in_quotes(rec.name) +
-                                          "): set name = \"...\""));
+    if (!names.insert(rec.name).second) {
+      if (r.has("name")) r.fail("name", "names another record too: " + in_quotes(rec.name));
+      r.fail("file", "gives the same name as another record (" + in_quotes(rec.name) + "): set name = \"...\"");
+    }
     suite.records.push_back(std::move(rec));
   }
   return suite;
