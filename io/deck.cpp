@@ -415,7 +415,7 @@ void read_motion_keys(const Deck& deck, const TableReader& r, GroundMotionSpec& 
       if (!r.has("period")) r.missing("period", kind + " needs period (s)");
       break;
     case GroundMotionKind::record:
-      if (!record) r.missing("record", kind + " needs record = \"path\" (PEER .AT2 or two-column CSV)");
+      if (!record) r.missing("record", kind + " needs record = \"path\" (PEER .AT2, ESM .ASC or two-column CSV)");
       break;
   }
   if (record) {
