@@ -13,6 +13,8 @@
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace polydem {
 namespace {
@@ -57,6 +59,23 @@ SuiteComponent read_component(const TableReader& r, const RecordSuite& suite) {
 
 std::string file_stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
 
+// The tables of `node` at `key`, a non-empty array written [[HEADER]], each
+// with its key KEY[i] for messages.
+std::vector<std::pair<std::string, const toml::table*>> tables_of(const Deck& deck, const toml::node& node,
+                                                                  const std::string& key, const std::string& header) {
+  const auto* array = node.as_array();
+  if (!array || array->empty())
+    deck.fail(key, &node, "must be an array of tables: write [[" + header + "]] (got " + describe(node) + ")");
+  std::vector<std::pair<std::string, const toml::table*>> out;
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const std::string at = indexed(key, i + 1);
+    const auto* table = array->get(i)->as_table();
+    if (!table) deck.fail(at, array->get(i), "must be a table: write [[" + header + "]]");
+    out.emplace_back(at, table);
+  }
+  return out;
+}
+
 }  // namespace
 
 RecordSuite parse_record_suite(const std::string& text, const std::string& path) {
@@ -88,14 +107,8 @@ RecordSuite parse_record_suite(const std::string& text, const std::string& path)
 
   const toml::node* records = root.get("record");
   if (!records) deck.fail("record", &root, "missing: a suite needs at least one [[record]] with file = \"path\"");
-  const auto* array = records->as_array();
-  if (!array || array->empty())
-    deck.fail("record", records, "must be an array of tables: write [[record]] (got " + describe(*records) + ")");
   std::set<std::string> names;
-  for (std::size_t i = 0; i < array->size(); ++i) {
-    const std::string key = indexed("record", i + 1);
-    const auto* table = array->get(i)->as_table();
-    if (!table) deck.fail(key, array->get(i), "must be a table: write [[record]]");
+  for (const auto& [key, table] : tables_of(deck, *records, "record", "record")) {
     const TableReader r(deck, *table, key, kRecordKeys);
     SuiteRecord rec;
     rec.line = r.line();
@@ -105,15 +118,8 @@ RecordSuite parse_record_suite(const std::string& text, const std::string& path)
         if (r.has(own))
           r.fail(own, "give the record's file, direction and scale either in the [[record]] table or in its "
                       "[[record.component]] tables, not both");
-      const auto* list = components->as_array();
-      if (!list || list->empty())
-        r.fail("component", "must be an array of tables: write [[record.component]] (got " + describe(*components) + ")");
-      for (std::size_t j = 0; j < list->size(); ++j) {
-        const std::string ckey = indexed(key + ".component", j + 1);
-        const auto* ct = list->get(j)->as_table();
-        if (!ct) deck.fail(ckey, list->get(j), "must be a table: write [[record.component]]");
+      for (const auto& [ckey, ct] : tables_of(deck, *components, key + ".component", "record.component"))
         rec.components.push_back(read_component(TableReader(deck, *ct, ckey, kComponentKeys), suite));
-      }
     } else {
       rec.components.push_back(read_component(r, suite));
     }
