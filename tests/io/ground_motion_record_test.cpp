@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <random>
 
 #include "tests/test_util.hpp"
 
@@ -208,6 +209,45 @@ TEST(GroundMotionRecord, ReadsEsmAscii) {
   expect_error(p(esm("", "2", "0 1\n")), n, 9, "no UNITS");
   expect_error(p("0.1\n0.2\n"), n, 1, "starts with 'KEY: value' lines");
   expect_error(p(""), n, 1, "empty file");
+}
+
+// Mutations of a valid ESM file (bytes changed, dropped, repeated): each
+// either reads as a record that keeps the header's promises or is refused
+// with a RecordError.
+TEST(GroundMotionRecord, EsmMutationsReadOrAreRefused) {
+  const std::string valid = esm("cm/s^2", "6", "0.0 1.5\n-2.5 1.0\n3e2 -1e-3\n");
+  const std::string alphabet = "0123456789.-+eE: \n\tNDATUS_/^gcm";
+  std::mt19937 rng(2016);
+  int read = 0, refused = 0;
+  for (int k = 0; k < 3000; ++k) {
+    std::string text = valid;
+    const int edits = 1 + static_cast<int>(rng() % 4);
+    for (int e = 0; e < edits; ++e) {
+      const std::size_t at = rng() % (text.size() + 1);
+      switch (rng() % 3) {
+        case 0: if (at < text.size()) text[at] = alphabet[rng() % alphabet.size()]; break;
+        case 1: if (at < text.size()) text.erase(at, 1 + rng() % 8); break;
+        default: text.insert(at, text.substr(rng() % text.size(), 1 + rng() % 12)); break;
+      }
+    }
+    try {
+      const GroundMotionRecord r = parse_esm(text, "m.ASC");
+      ++read;
+      ASSERT_EQ(r.time.size(), r.acceleration.size());
+      ASSERT_TRUE(r.dt > 0 && std::isfinite(r.dt));
+      for (std::size_t i = 0; i < r.time.size(); ++i) {
+        ASSERT_TRUE(std::isfinite(r.time[i]) && std::isfinite(r.acceleration[i])) << text;
+        if (i > 0) {
+          ASSERT_GT(r.time[i], r.time[i - 1]) << text;
+        }
+      }
+    } catch (const RecordError& e) {
+      ++refused;
+      EXPECT_EQ(std::string(e.what()).rfind("m.ASC:", 0), 0u) << e.what();
+    }
+  }
+  EXPECT_GT(read, 100);
+  EXPECT_GT(refused, 100);
 }
 
 TEST(GroundMotionRecord, ReadRecordReportsFileProblems) {
