@@ -68,6 +68,8 @@ void bind_spectra(py::module_& m) {
           return py::make_tuple(array(r.time), array(r.acceleration));
         });
       },
+      "A record file (PEER .AT2, ESM .ASC, two-column .csv with its unit) as (time [s], acceleration [m/s²]) arrays, "
+      "times scale; baseline_order (0-4) corrects it, length_scale (lambda) multiplies its times by sqrt(lambda).",
       py::arg("path"), py::arg("scale") = 1.0, py::arg("baseline_order") = py::none(), py::arg("length_scale") = 1.0);
 
   m.def(
@@ -96,6 +98,8 @@ void bind_spectra(py::module_& m) {
         d["records"] = records;
         return d;
       },
+      "A record suite file (TOML) as a dict: name, records[i] with name and components[j] (file, direction, scale, "
+      "time, acceleration in m/s² before scale).",
       py::arg("path"));
 
   m.def(
@@ -106,6 +110,8 @@ void bind_spectra(py::module_& m) {
           return spectrum_dict(pa::response_spectrum(time, acceleration, periods_or_default(periods), damping));
         });
       },
+      "The elastic spectra of one record given as arrays (s, m/s²): a dict of period, psa (m/s²), psv (m/s), sd (m), "
+      "pga, damping. periods: default 100 from 0.01 to 5 s.",
       py::arg("time"), py::arg("acceleration"), py::arg("periods") = py::none(), py::arg("damping") = 0.05);
 
   m.def(
@@ -133,6 +139,9 @@ void bind_spectra(py::module_& m) {
           return d;
         });
       },
+      "The spectra of record files or of suite=FILE, as polydem analytic spectrum computes them: a dict of names, "
+      "spectra (one response_spectrum dict each) and, for two records or more, median_psa, median_psv, median_sd "
+      "and dispersion (of ln PSA).",
       py::arg("records") = std::vector<std::string>{}, py::arg("suite") = py::none(), py::arg("periods") = py::none(),
       py::arg("damping") = 0.05, py::arg("baseline_order") = py::none(), py::arg("length_scale") = 1.0);
 }
