@@ -255,7 +255,7 @@ CLI::App* add_rocking(CLI::App& app, RockingArgs& a) {
   a.a_p = number(c, "a_p", l.a_p, "pulse: amplitude, g");
   a.T_p = positive(c, "T_p", l.T_p, "pulse: period, s");
   a.a = number(c, "a", l.a, "constant: acceleration, g");
-  a.file_given = file(c, "file", a.file, "record: two columns t [s], a [g] at a uniform step");
+  a.file_given = file(c, "file", a.file, "record: a record file (.AT2, .ASC, .csv with its unit; docs/records.md) at a uniform step");
   positive(c, "g", a.c.options.g, "Gravity, m/s2");
   positive(c, "dt", a.c.options.dt, "RK4 step, s");
   positive(c, "t_end", a.c.options.t_end, "End time, s");
