@@ -60,7 +60,8 @@ std::vector<double> periods_of(const std::vector<std::string>& texts) {
     while (start <= text.size()) {
       const std::size_t comma = std::min(text.find(',', start), text.size());
       const double T = number("--periods", text.substr(start, comma - start));
-      if (!(T > 0)) throw std::invalid_argument("--periods: a period must be > 0 s, got " + text.substr(start, comma - start));
+      if (!(T > 0))
+        throw std::invalid_argument("--periods: a period must be > 0 s, got " + text.substr(start, comma - start));
       out.push_back(T);
       start = comma + 1;
     }
@@ -121,7 +122,8 @@ int run(const SpectrumArgs& a) {
     length_scale = number("--length-scale", a.length_scale_text);
     if (!(length_scale > 0)) throw std::invalid_argument("--length-scale must be > 0");
   }
-  const std::vector<double> periods = a.periods_text.empty() ? pa::default_spectrum_periods() : periods_of(a.periods_text);
+  const std::vector<double> periods =
+      a.periods_text.empty() ? pa::default_spectrum_periods() : periods_of(a.periods_text);
   const std::vector<polydem::PeriodMark> marks = marks_of(a.marks_text);
 
   std::string title;

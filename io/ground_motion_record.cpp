@@ -88,14 +88,14 @@ NumberParse parse_number(std::string_view token, double& out) {
 // error; the cap also keeps every difference of two samples finite.
 constexpr double kMaxAccelerationG = 1000.0;
 
-const char* unit_text(AccelerationUnit unit) {
-  switch (unit) {
-    case AccelerationUnit::g: return "g";
-    case AccelerationUnit::m_per_s2: return "m/s2";
-    case AccelerationUnit::cm_per_s2: return "cm/s2";
-  }
-  return "?";
-}
+// Each unit's name and size in m/s², in the order of AccelerationUnit.
+struct UnitRow {
+  const char* name;
+  double metres_per_second_squared;
+};
+constexpr UnitRow kUnits[] = {{"g", kRecordG}, {"m/s2", 1.0}, {"cm/s2", 0.01}};
+
+const char* unit_text(AccelerationUnit unit) { return kUnits[static_cast<int>(unit)].name; }
 
 void check_acceleration(const std::string& name, int line, double value, AccelerationUnit unit, double scale) {
   const double value_g = unit == AccelerationUnit::g ? value : value * metres_per_second_squared(unit) / kRecordG;
@@ -351,10 +351,14 @@ GroundMotionRecord parse_esm(const std::string& text, const std::string& name, d
   const auto lines = split_lines(text);
   const bool blank = std::all_of(lines.begin(), lines.end(), [](std::string_view l) { return trim(l).empty(); });
   if (blank) throw RecordError(name, 1, "empty file");
-  // The header: "KEY: value" lines up to the first line of numbers.
+  // The header: "KEY: value" lines up to the first line of numbers. The
+  // three fields read, each with its line (0 while not seen).
+  struct Field {
+    std::string_view text;
+    int line = 0;
+  };
+  Field ndata, interval, units;
   std::size_t first_data = 0;
-  int ndata_line = 0, dt_line = 0, units_line = 0;
-  std::string_view ndata_text, dt_text, units_text;
   for (; first_data < lines.size(); ++first_data) {
     const std::string_view line = trim(lines[first_data]);
     if (line.empty()) continue;
@@ -362,33 +366,33 @@ GroundMotionRecord parse_esm(const std::string& text, const std::string& name, d
     if (!field) break;
     const int line_no = static_cast<int>(first_data) + 1;
     const auto& [key, value] = *field;
-    if (key == "NDATA") ndata_text = value, ndata_line = line_no;
-    else if (key == "SAMPLING_INTERVAL_S") dt_text = value, dt_line = line_no;
-    else if (key == "UNITS") units_text = value, units_line = line_no;
-    else if (key == "DATA_TYPE" && !value.empty() && upper(value).find("ACCELERATION") == std::string::npos)
-      throw RecordError(name, line_no, "wrong header: not an acceleration record (DATA_TYPE: " + std::string(value) + ")");
+    if (key == "NDATA") ndata = {value, line_no};
+    if (key == "SAMPLING_INTERVAL_S") interval = {value, line_no};
+    if (key == "UNITS") units = {value, line_no};
+    if (key == "DATA_TYPE" && !value.empty() && upper(value).find("ACCELERATION") == std::string::npos)
+      throw RecordError(name, line_no,
+                        "wrong header: not an acceleration record (DATA_TYPE: " + std::string(value) + ")");
   }
   const int header_end = static_cast<int>(first_data);
   if (first_data == 0)
     throw RecordError(name, 1, "wrong header: an ESM/ITACA file starts with 'KEY: value' lines (EVENT_NAME: ...)");
-  const auto require = [&](std::string_view text_of, int line_no, const char* key) {
-    if (line_no == 0 || text_of.empty())
-      throw RecordError(name, line_no == 0 ? header_end : line_no,
-                        std::string("wrong header: no ") + key + " (an ESM/ITACA header gives NDATA, "
-                        "SAMPLING_INTERVAL_S and UNITS)");
-  };
-  require(ndata_text, ndata_line, "NDATA");
-  require(dt_text, dt_line, "SAMPLING_INTERVAL_S");
-  require(units_text, units_line, "UNITS");
+  for (const auto& [field, key] : {std::pair{&ndata, "NDATA"}, {&interval, "SAMPLING_INTERVAL_S"}, {&units, "UNITS"}})
+    if (field->line == 0 || field->text.empty())
+      throw RecordError(name, field->line == 0 ? header_end : field->line,
+                        std::string("wrong header: no ") + key +
+                            " (an ESM/ITACA header gives NDATA, SAMPLING_INTERVAL_S and UNITS)");
+  const std::string_view ndata_text = ndata.text, dt_text = interval.text;
+  const int ndata_line = ndata.line, dt_line = interval.line;
   double npts = 0, dt = 0;
   if (parse_number(ndata_text, npts) != NumberParse::Ok || npts != std::floor(npts) || npts <= 0 || npts > 1e9)
     throw RecordError(name, ndata_line, "NDATA must be a positive integer, found '" + std::string(ndata_text) + "'");
   if (parse_number(dt_text, dt) != NumberParse::Ok || !(dt > 0))
     throw RecordError(name, dt_line,
                       "SAMPLING_INTERVAL_S must be positive and finite, found '" + std::string(dt_text) + "'");
-  const AccelerationUnit unit = unit_or_fail(units_text, name, units_line, "in UNITS");
+  const AccelerationUnit unit = unit_or_fail(units.text, name, units.line, "in UNITS");
   const auto n = static_cast<std::size_t>(npts);
-  if (!((npts - 1) * dt <= 1e6)) throw RecordError(name, ndata_line, "NDATA x SAMPLING_INTERVAL_S is not a plausible duration (over 1e6 s)");
+  if (!((npts - 1) * dt <= 1e6))
+    throw RecordError(name, ndata_line, "NDATA x SAMPLING_INTERVAL_S is not a plausible duration (over 1e6 s)");
 
   GroundMotionRecord rec;
   rec.dt = dt;
@@ -422,7 +426,8 @@ GroundMotionRecord parse_csv_record(const std::string& text, const std::string& 
     const int line_no = static_cast<int>(i) + 1;
     const std::string_view line = trim(lines[i]);
     if (!line.empty() && line.front() == '#' && rec.time.empty())
-      if (const auto declared = units_comment(line)) declare(unit_or_fail(*declared, name, line_no, "in the comment"), line_no);
+      if (const auto declared = units_comment(line))
+        declare(unit_or_fail(*declared, name, line_no, "in the comment"), line_no);
     if (line.empty() || line.front() == '#') continue;
     last_line = line_no;
     const auto fields = split_csv_fields(line);
@@ -509,12 +514,7 @@ double sample(const GroundMotionRecord& r, double t) {
 }
 
 double metres_per_second_squared(AccelerationUnit unit) {
-  switch (unit) {
-    case AccelerationUnit::g: return kRecordG;
-    case AccelerationUnit::m_per_s2: return 1.0;
-    case AccelerationUnit::cm_per_s2: return 0.01;
-  }
-  return 0.0;
+  return kUnits[static_cast<int>(unit)].metres_per_second_squared;
 }
 
 std::optional<AccelerationUnit> acceleration_unit_named(std::string_view text) {

@@ -102,9 +102,11 @@ std::string marks_csv(const std::vector<PeriodMark>& marks, const SpectraTable& 
   text += "\n";
   for (std::size_t j = 0; j < marks.size(); ++j) {
     append(text, {column(marks[j].name), ",", number(marks[j].period)});
-    for (const analytical::ResponseSpectrum& s : t.spectra) append(text, {",", number(s.pseudo_acceleration[j] / kRecordG)});
+    for (const analytical::ResponseSpectrum& s : t.spectra)
+      append(text, {",", number(s.pseudo_acceleration[j] / kRecordG)});
     if (t.suite)
-      append(text, {",", number(t.suite->median_pseudo_acceleration[j] / kRecordG), ",", number(t.suite->dispersion[j])});
+      append(text,
+             {",", number(t.suite->median_pseudo_acceleration[j] / kRecordG), ",", number(t.suite->dispersion[j])});
     text += "\n";
   }
   return text;

@@ -93,7 +93,8 @@ scale = 0.5
 
 TEST(RecordSuite, SuiteWideCorrectionAndTimeScaling) {
   SuiteFiles f;
-  const RecordSuite s = read_record_suite(f.write("[suite]\nlength_scale = 0.25\nbaseline_order = 0\n[[record]]\nfile = \"records/a.csv\"\n"));
+  const RecordSuite s = read_record_suite(
+      f.write("[suite]\nlength_scale = 0.25\nbaseline_order = 0\n[[record]]\nfile = \"records/a.csv\"\n"));
   const auto& c = s.records[0].components[0];
   EXPECT_DOUBLE_EQ(c.time[2], 0.01);
   auto t = std::vector<double>{0, 0.005, 0.01, 0.015, 0.02};
@@ -156,7 +157,8 @@ TEST(RecordSuite, DeckRecordKeys) {
   SuiteFiles f;
   const std::string blocks = "[[block]]\nshape = \"box\"\nsize = [1, 1, 1]\n";
   const auto deck = [&](const std::string& motion) {
-    test::write_text(f.dir.path("d.toml"), blocks + "[ground_motion]\nkind = \"record\"\nrecord = \"records/a.csv\"\n" + motion);
+    test::write_text(f.dir.path("d.toml"),
+                     blocks + "[ground_motion]\nkind = \"record\"\nrecord = \"records/a.csv\"\n" + motion);
     return read_deck(f.dir.path("d.toml")).ground_motion;
   };
   EXPECT_DOUBLE_EQ(deck("").record_time[2], 0.02);
@@ -182,14 +184,15 @@ TEST(RecordSuite, DeckRecordKeys) {
       EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
     }
   };
-  refused("[ground_motion]\nkind = \"constant\"\nacceleration = 1\nlength_scale = 0.5\n", 7, "ground_motion.length_scale",
-          "kind = \"record\" only");
+  refused("[ground_motion]\nkind = \"constant\"\nacceleration = 1\nlength_scale = 0.5\n", 7,
+          "ground_motion.length_scale", "kind = \"record\" only");
   refused("[ground_motion]\nkind = \"record\"\nrecord = \"records/a.csv\"\nbaseline_order = 5\n", 7,
           "ground_motion.baseline_order", "[0, 4]");
   refused("[ground_motion]\nkind = \"record\"\nrecord = \"records/a.csv\"\nlength_scale = -1\n", 7,
           "ground_motion.length_scale", "must be > 0");
   // A record without a unit: the record's own error, its file and line.
-  test::write_text(f.dir.path("d.toml"), blocks + "[ground_motion]\nkind = \"record\"\nrecord = \"records/no_unit.csv\"\n");
+  test::write_text(f.dir.path("d.toml"),
+                   blocks + "[ground_motion]\nkind = \"record\"\nrecord = \"records/no_unit.csv\"\n");
   try {
     (void)read_deck(f.dir.path("d.toml"));
     ADD_FAILURE() << "accepted a record without a unit";
