@@ -1,4 +1,5 @@
 #include "apps/analytic_command.hpp"
+#include "apps/spectrum_command.hpp"
 
 #include "core/number_text.hpp"
 #include "io/analytic_inputs.hpp"
@@ -254,7 +255,7 @@ CLI::App* add_rocking(CLI::App& app, RockingArgs& a) {
   a.a_p = number(c, "a_p", l.a_p, "pulse: amplitude, g");
   a.T_p = positive(c, "T_p", l.T_p, "pulse: period, s");
   a.a = number(c, "a", l.a, "constant: acceleration, g");
-  a.file_given = file(c, "file", a.file, "record: two columns t [s], a [g] at a uniform step");
+  a.file_given = file(c, "file", a.file, "record: a record file (.AT2, .ASC, .csv with its unit; docs/records.md) at a uniform step");
   positive(c, "g", a.c.options.g, "Gravity, m/s2");
   positive(c, "dt", a.c.options.dt, "RK4 step, s");
   positive(c, "t_end", a.c.options.t_end, "End time, s");
@@ -533,6 +534,7 @@ int run_analytic_command(const std::vector<std::string>& args) {
   CLI::App* dem_cmd = add_dem(app, dem);
   CLI::App* limit_cmd = add_limit(app, limit);
   CLI::App* arch_cmd = add_arch(app, arch);
+  const AnalyticModel spectrum = add_spectrum_model(app);
   for (CLI::App* m : app.get_subcommands({})) m->allow_extras();
 
   std::vector<std::string> words(args.begin() + (!args.empty() && args[0] == "analytic" ? 1 : 0), args.end());
@@ -563,6 +565,7 @@ int run_analytic_command(const std::vector<std::string>& args) {
     if (dem_cmd->parsed()) return run_dem(dem);
     if (limit_cmd->parsed()) return run_limit(limit);
     if (arch_cmd->parsed()) return run_arch(arch);
+    if (spectrum.command->parsed()) return spectrum.run();
   } catch (const CLI::CallForHelp&) {
     std::cout << app.help();
     return 0;

@@ -183,7 +183,7 @@ struct GroundMotionSpec {
   double rise_time = 0.0;         // s: a constant acceleration rises linearly over this time, then holds
   double rate = 0.0;              // m/s³: ramp a = rate·(t - start_time)
   double period = 1.0;            // s: one-sine pulse a_p·sin(2π(t-t0)/T_p) for 0 ≤ t-t0 ≤ T_p
-  std::string record_path;        // record file (PEER .AT2 or two-column CSV), resolved relative to the deck
+  std::string record_path;        // record file (PEER .AT2, ESM .ASC or two-column CSV), resolved relative to the deck
   // The record's samples, read with the deck (kind = record only): time (s)
   // and acceleration (m/s², before `scale`). A run never opens a file.
   std::vector<double> record_time, record_acceleration;

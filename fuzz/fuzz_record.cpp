@@ -1,7 +1,7 @@
 // libFuzzer targets: the ground-motion record readers of
 // io/ground_motion_record.hpp. Built twice from this file:
 //   polydem_fuzz_at2          parse_at2()         (PEER NGA .AT2 text)
-//   polydem_fuzz_csv_record   parse_csv_record()  (two columns time, g)
+//   polydem_fuzz_csv_record   parse_csv_record()  (two columns time, acceleration)
 // (POLYDEM_FUZZ_CSV selects the second).
 //
 // Contract under test: any text either gives a record or throws RecordError

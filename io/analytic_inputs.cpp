@@ -5,7 +5,6 @@
 #include "structures/generator_specs.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -32,32 +31,15 @@ SceneSpec unit_semicircular_arch(int voussoirs, double t_over_R) {
 }
 
 UniformRecord read_uniform_record(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open record file '" + path + "'");
-  std::vector<double> t;
+  const GroundMotionRecord rec = read_record(path);
   UniformRecord r;
-  std::string line;
-  int lineno = 0;
-  while (std::getline(in, line)) {
-    ++lineno;
-    for (char& ch : line)
-      if (ch == ',' || ch == ';' || ch == '\t') ch = ' ';
-    if (line.find_first_not_of(" \r") == std::string::npos || line[line.find_first_not_of(' ')] == '#') continue;
-    std::istringstream ls(line);
-    double ti, ai;
-    if (!(ls >> ti >> ai)) {
-      if (t.empty()) continue;  // a header line
-      throw RecordError(path, lineno, "expected two numbers (t [s], a [g])");
-    }
-    t.push_back(ti);
-    r.acceleration.push_back(ai);
-  }
-  if (t.size() < 2) throw RecordError(path, 0, "needs at least two samples");
-  r.dt = t[1] - t[0];
-  for (std::size_t i = 1; i < t.size(); ++i)
-    if (!(std::abs(t[i] - t[i - 1] - r.dt) <= 1e-6 * r.dt) || !(r.dt > 0.0))
-      throw RecordError(path, 0, "time step must be uniform and positive");
-  r.shifted = t[0] != 0.0;
+  r.dt = rec.time[1] - rec.time[0];
+  for (std::size_t i = 1; i < rec.time.size(); ++i)
+    if (!(std::abs(rec.time[i] - rec.time[i - 1] - r.dt) <= 1e-6 * r.dt))
+      throw RecordError(path, 0, "time step must be uniform (the rocking models sample the record every dt)");
+  r.acceleration.reserve(rec.acceleration.size());
+  for (double a : rec.acceleration) r.acceleration.push_back(a / kRecordG);
+  r.shifted = rec.time.front() != 0.0;
   return r;
 }
 

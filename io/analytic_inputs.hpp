@@ -28,18 +28,18 @@ SceneSpec analytic_spire_scene(const std::string& deck, bool no_windows);
 // fixed base.
 SceneSpec unit_semicircular_arch(int voussoirs, double t_over_R);
 
-// A record for the rocking models: two columns, time [s] and acceleration
-// [g], at a uniform step (the ODE interpolates linearly between samples
-// from t = 0). Columns are separated by spaces, tabs, commas or semicolons;
-// blank lines, lines starting with '#' and text lines before the first
-// sample are skipped. A record that starts later is shifted to t = 0.
+// A record for the rocking models, in any format read_record() reads (PEER
+// .AT2, ESM .ASC, two-column .csv with its declared unit;
+// io/ground_motion_record.hpp), at a uniform step (the ODE interpolates
+// linearly between samples from t = 0), its acceleration in g (the record's
+// g, 9.80665 m/s²). A record that starts later is shifted to t = 0.
 struct UniformRecord {
   double dt = 0.0;                   // [s]
   std::vector<double> acceleration;  // [g]
   bool shifted = false;              // its first time was not 0
 };
 
-// Throws std::runtime_error naming the file (and the line).
+// Throws RecordError naming the file (and the line).
 UniformRecord read_uniform_record(const std::string& path);
 
 // The record at `path` as a rocking model's load.

@@ -12,6 +12,7 @@
 #include "io/deck_reader.hpp"
 #include "io/generators.hpp"
 #include "io/ground_motion_record.hpp"
+#include "io/record_processing.hpp"
 #include "core/loads.hpp"
 #include "core/materials.hpp"
 #include "core/units.hpp"
@@ -29,6 +30,7 @@
 #include <optional>
 #include <span>
 #include <sstream>
+#include <stdexcept>
 #include <string_view>
 #include <utility>
 
@@ -57,10 +59,10 @@ constexpr std::string_view kGroundMotionKeys[] = {"kind",           "applied_as"
                                                   "acceleration",   "acceleration_g", "rate",  "rate_g",
                                                   "period",         "record",         "scale",
                                                   "rise_time",      "tower_frequency", "tower_damping",
-                                                  "component"};
+                                                  "baseline_order", "length_scale",    "component"};
 constexpr std::string_view kGroundMotionComponentKeys[] = {
     "kind", "direction", "start_time", "acceleration", "acceleration_g", "rate", "rate_g", "period", "record", "scale",
-    "rise_time"};
+    "rise_time", "baseline_order", "length_scale"};
 constexpr std::string_view kOutputKeys[] = {"history_interval",  "histories",       "energies",
                                             "walking",           "snapshot_interval", "snapshot_joints",
                                             "checkpoint_interval"};
@@ -431,7 +433,7 @@ void read_motion_keys(const Deck& deck, const TableReader& r, GroundMotionSpec& 
       if (!r.has("period")) r.missing("period", kind + " needs period (s)");
       break;
     case GroundMotionKind::record:
-      if (!record) r.missing("record", kind + " needs record = \"path\" (PEER .AT2 or two-column CSV)");
+      if (!record) r.missing("record", kind + " needs record = \"path\" (PEER .AT2, ESM .ASC or two-column CSV)");
       break;
   }
   if (record) {
@@ -445,8 +447,25 @@ void read_motion_keys(const Deck& deck, const TableReader& r, GroundMotionSpec& 
   }
   // The record is read with the deck, so that a run never opens a file (its
   // errors name the record's own file and line).
+  // Baseline correction and time scaling (io/record_processing.hpp) apply
+  // to the record as read, before `scale`.
+  const auto baseline_order = r.integer("baseline_order");
+  const double length_scale = r.number("length_scale", 1.0, Range::positive);
+  for (const std::string_view key : {"baseline_order", "length_scale"})
+    if (r.has(key) && g.kind != GroundMotionKind::record) r.fail(key, "applies to kind = \"record\" only");
+  if (baseline_order && (*baseline_order < 0 || *baseline_order > kMaxBaselineOrder))
+    r.fail("baseline_order", "must be an integer in [0, " + std::to_string(kMaxBaselineOrder) + "] (got " +
+                                 std::to_string(*baseline_order) + ")");
   if (g.kind == GroundMotionKind::record) {
     GroundMotionRecord rec = read_record(g.record_path, 1.0);
+    if (r.has("length_scale")) scale_record_time(rec.time, length_scale);
+    if (baseline_order) {
+      try {
+        correct_baseline(rec.time, rec.acceleration, static_cast<int>(*baseline_order));
+      } catch (const std::invalid_argument& e) {
+        r.fail("baseline_order", e.what());
+      }
+    }
     g.record_time = std::move(rec.time);
     g.record_acceleration = std::move(rec.acceleration);
   }

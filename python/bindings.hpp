@@ -36,5 +36,6 @@ struct Scene {
 void bind_run(py::module_& m);
 void bind_studies(py::module_& m);
 void bind_analytical(py::module_& m);
+void bind_spectra(py::module_& m);
 
 }  // namespace polydem::python

@@ -101,4 +101,5 @@ PYBIND11_MODULE(_polydem, m) {
   bind_run(m);
   bind_studies(m);
   bind_analytical(m);
+  bind_spectra(m);
 }

@@ -80,3 +80,11 @@ def limit_lp(scene=None, no_windows=False, **options):
 
 __all__ = ["static_lambda", "beam", "rocking", "collapse_diagram", "cracked_cone_p", "refined_lambda",
            "dem_frequency", "limit_lp", "arch_thickness"]
+
+
+# Records and response spectra (docs/records.md): accelerations in m/s², the
+# spectra's psa in m/s², psv in m/s, sd in m, periods in s.
+read_record = _polydem.read_record
+record_suite = _polydem.record_suite
+response_spectrum = _polydem.response_spectrum
+spectra = _polydem.spectra

@@ -53,22 +53,31 @@ TEST(AnalyticInputs, UnitArchHasItsVoussoirsOnABase) {
   EXPECT_EQ(fixed, 1);
 }
 
-TEST(AnalyticInputs, RecordSkipsHeadersAndShiftsToZero) {
-  const auto r = read_uniform_record(write("polydem_rec_a.csv", "# comment\ntime;accel\n0.5;0.1\n0.52\t-0.2\n0.54,0\n"));
+TEST(AnalyticInputs, RecordInGAndShiftedToZero) {
+  const auto r = read_uniform_record(
+      write("polydem_rec_a.csv", "# comment\ntime_s,acceleration_cm_s2\n0.5,98.0665\n0.52 -196.133\n0.54,0\n"));
   EXPECT_NEAR(r.dt, 0.02, 1e-15);
-  EXPECT_EQ(r.acceleration, (std::vector<double>{0.1, -0.2, 0.0}));
+  ASSERT_EQ(r.acceleration.size(), 3u);
+  EXPECT_NEAR(r.acceleration[0], 0.1, 1e-15);
+  EXPECT_NEAR(r.acceleration[1], -0.2, 1e-15);
   EXPECT_TRUE(r.shifted);
-  EXPECT_FALSE(read_uniform_record(write("polydem_rec_b.csv", "0 1\n0.1 2\n")).shifted);
+  const auto g = read_uniform_record(write("polydem_rec_b.csv", "# units: g\n0 1\n0.1 2\n"));
+  EXPECT_FALSE(g.shifted);
+  EXPECT_EQ(g.acceleration, (std::vector<double>{1.0, 2.0}));
 }
 
+// The record readers' rules and messages (io/ground_motion_record.hpp): a
+// two-column file must declare its unit.
 TEST(AnalyticInputs, RecordErrorsNameTheFileAndLine) {
-  const std::string bad = write("polydem_rec_c.csv", "t a\n0 0\n0.01 x\n");
-  EXPECT_EQ(message(bad), bad + ":3: expected two numbers (t [s], a [g])");
-  const std::string one = write("polydem_rec_d.csv", "0 0\n");
-  EXPECT_EQ(message(one), one + ": needs at least two samples");
-  const std::string uneven = write("polydem_rec_e.csv", "0 0\n0.01 0\n0.03 0\n");
-  EXPECT_EQ(message(uneven), uneven + ": time step must be uniform and positive");
-  EXPECT_EQ(message("/nonexistent/r.csv"), "cannot open record file '/nonexistent/r.csv'");
+  const std::string bad = write("polydem_rec_c.csv", "t a_g\n0 0\n0.01 x\n");
+  EXPECT_EQ(message(bad), bad + ":3: non-numeric value 'x' in column 2 (acceleration)");
+  const std::string no_unit = write("polydem_rec_f.csv", "0 0\n0.01 0.1\n");
+  EXPECT_NE(message(no_unit).find(no_unit + ":1: no acceleration unit declared"), std::string::npos);
+  const std::string one = write("polydem_rec_d.csv", "# units: g\n0 0\n");
+  EXPECT_EQ(message(one), one + ":2: only one data row: a record needs at least two");
+  const std::string uneven = write("polydem_rec_e.csv", "# units: g\n0 0\n0.01 0\n0.03 0\n");
+  EXPECT_EQ(message(uneven), uneven + ": time step must be uniform (the rocking models sample the record every dt)");
+  EXPECT_NE(message("/nonexistent/r.csv").find("/nonexistent/r.csv: cannot open"), std::string::npos);
 }
 
 }  // namespace

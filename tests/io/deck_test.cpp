@@ -296,7 +296,7 @@ size = [1, 1, 1]
 TEST(Deck, RecordPathIsRelativeToTheDeck) {
   const auto dir = std::filesystem::temp_directory_path() / "polydem_deck_test";
   std::filesystem::create_directories(dir / "records");
-  { std::ofstream(dir / "records" / "quake.csv") << "0 0\n0.01 0.1\n"; }
+  { std::ofstream(dir / "records" / "quake.csv") << "# units: g\n0 0\n0.01 0.1\n"; }
   const std::string text = deck(R"(
 [[block]]
 shape = "box"
