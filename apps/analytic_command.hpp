@@ -3,7 +3,8 @@
 // closed-form and ODE models (analytical/) and the limit analyses of the
 // block model (studies/) from the command line, one CLI11 subcommand per
 // model: lambda, beam, rocking, collapse-diagram, cracked-cone-p,
-// refined-lambda, dem-frequency, limit-lp, arch-thickness.
+// refined-lambda, dem-frequency, limit-lp, arch-thickness, fragility,
+// synthetic.
 // `polydem analytic --help` lists them, `polydem analytic MODEL --help`
 // their options. --json prints io/analytic_results.hpp's JSON.
 
