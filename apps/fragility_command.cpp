@@ -97,16 +97,19 @@ std::function<int()> add_fragility_command(CLI::App& analytic) {
       "fragility",
       "Lognormal fragility curves P(DS >= ds | IM) = Phi(ln(IM/theta)/beta) for damaged, stones lost and collapsed, "
       "fitted by maximum likelihood to IDA or multiple-stripe runs, with bootstrap bands (docs/fragility.md)");
-  c->add_option("input", a->input, "CSV of runs: a header naming im, state and (IDA) record")->required();
-  c->add_option("--out", a->out, "Directory for fragility_{parameters,curves,points}.csv and fragility.png")->required();
+  c->add_option("input", a->input, "CSV of runs: a header naming im, state and (IDA) record")->required()->option_text("FILE");
+  c->add_option("--out", a->out, "Directory for fragility_{parameters,curves,points}.csv and fragility.png")
+      ->required()
+      ->option_text("DIR");
   c->add_option("--method", a->method, "ida (records' capacities, censored MLE), stripes (binomial MLE); "
                                        "auto: ida if the file has a record column")
-      ->check(CLI::IsMember({"auto", "ida", "stripes"}));
-  c->add_option("--bootstrap", a->bootstrap, "Bootstrap resamples, 0 to 1e6 (0: no band)");
-  c->add_option("--seed", a->seed, "Seed of the resamples");
-  c->add_option("--confidence", a->confidence, "Two-sided level of the bands, in (0, 1)");
-  c->add_option("--points", a->points, "Points of the curves, from IM 0 to 1.25 x the largest");
-  c->add_option("--im-label,--im_label", a->im_label, "The IM's name and unit on the plot, e.g. 'PGA [g]'");
+      ->check(CLI::IsMember({"auto", "ida", "stripes"}))
+      ->option_text("{auto,ida,stripes}=auto");
+  c->add_option("--bootstrap", a->bootstrap, "Bootstrap resamples, 0 to 1e6 (0: no band)")->option_text("N=1000");
+  c->add_option("--seed", a->seed, "Seed of the resamples")->option_text("N=1");
+  c->add_option("--confidence", a->confidence, "Two-sided level of the bands, in (0, 1)")->option_text("NUMBER=0.9");
+  c->add_option("--points", a->points, "Points of the curves, from IM 0 to 1.25 x the largest")->option_text("N=101");
+  c->add_option("--im-label,--im_label", a->im_label, "The IM's name and unit on the plot, e.g. 'PGA [g]'")->option_text("TEXT=IM");
   c->add_flag("--no-plot,--no_plot", a->no_plot, "No PNG");
   c->add_flag("--json", a->json, "Print one JSON object");
   return [a] { return run(*a); };

@@ -73,16 +73,17 @@ std::function<int()> add_synthetic_command(CLI::App& analytic) {
       "synthetic",
       "A suite of synthetic ground motions for a magnitude, distance and site: the stochastic model of Rezaeian & "
       "Der Kiureghian (2010), written as two-column CSVs in m/s2 and a record-suite TOML (docs/fragility.md)");
-  c->add_option("--magnitude", a->magnitude, "Moment magnitude")->required();
-  c->add_option("--distance", a->distance, "Closest distance to the rupture, km")->required();
-  c->add_option("--vs30", a->vs30, "Shear-wave velocity of the top 30 m, m/s")->required();
-  c->add_option("--fault", a->fault, "Faulting style")->check(CLI::IsMember({"strike-slip", "reverse"}));
-  c->add_option("--count", a->count, "Records, 1 to 100000");
-  c->add_option("--seed", a->seed, "Seed of the suite: record i draws from mix_seed(seed, i)");
-  c->add_option("--out", a->out, "Directory for the records, suite.toml and records.csv")->required();
-  c->add_option("--dt", a->dt, "Time step, s");
-  c->add_option("--high-pass,--high_pass", a->high_pass, "Corner of the high-pass post-filter, Hz (0: none)");
-  c->add_option("--prefix", a->prefix, "Records are named PREFIX_01, PREFIX_02, ...");
+  c->add_option("--magnitude", a->magnitude, "Moment magnitude")->required()->option_text("NUMBER");
+  c->add_option("--distance", a->distance, "Closest distance to the rupture, km")->required()->option_text("NUMBER");
+  c->add_option("--vs30", a->vs30, "Shear-wave velocity of the top 30 m, m/s")->required()->option_text("NUMBER");
+  c->add_option("--fault", a->fault, "Faulting style")->check(CLI::IsMember({"strike-slip", "reverse"}))
+      ->option_text("{strike-slip,reverse}=strike-slip");
+  c->add_option("--count", a->count, "Records, 1 to 100000")->option_text("N=20");
+  c->add_option("--seed", a->seed, "Seed of the suite: record i draws from mix_seed(seed, i)")->option_text("N=1");
+  c->add_option("--out", a->out, "Directory for the records, suite.toml and records.csv")->required()->option_text("DIR");
+  c->add_option("--dt", a->dt, "Time step, s")->option_text("NUMBER=0.01");
+  c->add_option("--high-pass,--high_pass", a->high_pass, "Corner of the high-pass post-filter, Hz (0: none)")->option_text("NUMBER=0.2");
+  c->add_option("--prefix", a->prefix, "Records are named PREFIX_01, PREFIX_02, ...")->option_text("TEXT=synthetic");
   c->add_flag("--json", a->json, "Print one JSON object (targets and measures, no histories)");
   return [a] { return run(*a); };
 }
