@@ -163,7 +163,7 @@ SyntheticMotionParameters sample_parameters(const EarthquakeScenario& s, RandomS
   static const auto L = error_factor();
   const std::array<double, kParameters> mean = regression_means(s);
   const double ratio_limit = duration_ratio(kMinShape);
-  while (true) {
+  for (int attempt = 0; attempt < 1000; ++attempt) {
     std::array<double, kParameters> z{}, nu = mean;
     for (double& zi : z) zi = rs.normal();
     for (int i = 0; i < kParameters; ++i)
@@ -171,6 +171,7 @@ SyntheticMotionParameters sample_parameters(const EarthquakeScenario& s, RandomS
     const SyntheticMotionParameters p = from_normal_space(nu, SyntheticOptions{}.g);
     if (p.d5_95 / p.t_mid < ratio_limit) return p;
   }
+  throw std::invalid_argument("synthetic motion: the scenario gives D5-95 / t_mid >= 4.92 in 1000 draws out of 1000");
 }
 
 SyntheticRecord simulate_record(const SyntheticMotionParameters& p, const SyntheticOptions& o, RandomStream& rs) {

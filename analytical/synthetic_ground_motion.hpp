@@ -79,7 +79,9 @@ SyntheticMotionParameters median_parameters(const EarthquakeScenario& s);
 // One draw of the six parameters with the paper's correlated errors
 // (inter- and intra-event together: the scenario is a design scenario, not
 // one recorded event). A draw whose modulating function does not exist
-// (D5-95 / t_mid ≥ 4.92) is drawn again from the same stream.
+// (D5-95 / t_mid ≥ 4.92) is drawn again from the same stream (2-3 % of
+// the draws for ordinary scenarios; after 1000 failed draws it throws
+// std::invalid_argument).
 SyntheticMotionParameters sample_parameters(const EarthquakeScenario& s, RandomStream& rs);
 
 struct SyntheticOptions {

@@ -59,6 +59,9 @@ int run(const SyntheticArgs& a) {
   if (a.prefix.empty() || a.prefix.find_first_of("/\\\"") != std::string::npos)
     throw std::invalid_argument("--prefix must be a file name without '/', '\\' or '\"'");
   run.records = pa::synthetic_suite(s, count, run.seed, run.options, a.prefix);
+  if (s.distance < 10.0)
+    std::cerr << "polydem analytic synthetic: note: the predictive equations were fitted to far-field records "
+                 "(R_rup > 10 km); at " << s.distance << " km they extrapolate\n";
   write_synthetic_suite(a.out, run);
   if (a.json) std::cout << synthetic_suite_json(run, false).dump(0) << "\n";
   else report(run, a.out);
