@@ -4,6 +4,7 @@
 #include "apps/analytic_command.hpp"
 
 #include <gtest/gtest.h>
+#include <toml++/toml.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -88,6 +89,14 @@ TEST(SyntheticCommand, WritesASuiteAndTheSameSeedGivesTheSameBits) {
   EXPECT_NE(toml.find("[[record]]\nname = \"synthetic_03\"\nfile = \"synthetic_03.csv\"\ndirection = [1.0, 0.0, 0.0]\n"
                       "scale = 1.0\n"),
             std::string::npos);
+  // The suite is TOML a reader takes: a name and one [[record]] per record.
+  const toml::table suite = toml::parse_file((a / "suite.toml").string());
+  EXPECT_TRUE(suite["name"].is_string());
+  const toml::array* records = suite["record"].as_array();
+  ASSERT_TRUE(records);
+  ASSERT_EQ(records->size(), 3u);
+  EXPECT_EQ((*records)[1].as_table()->at("file").value<std::string>(), "synthetic_02.csv");
+  EXPECT_EQ((*records)[1].as_table()->at("scale").value<double>(), 1.0);
   ASSERT_EQ(run(with_out(b)).rc, 0);
   for (const char* f : {"synthetic_01.csv", "synthetic_03.csv", "suite.toml", "records.csv"})
     EXPECT_EQ(slurp(a / f), slurp(b / f)) << f;
