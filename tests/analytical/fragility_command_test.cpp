@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -39,8 +41,18 @@ std::string slurp(const fs::path& p) {
   return s.str();
 }
 
+// The tests' files, under one temporary folder removed at exit.
+struct ScratchRoot {
+  fs::path path = fs::temp_directory_path() / ("polydem_fragility_cmd_" + std::to_string(::getpid()));
+  ~ScratchRoot() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
 fs::path scratch(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("polydem_fragility_cmd_" + std::to_string(::getpid())) / name;
+  static const ScratchRoot root;
+  const fs::path d = root.path / name;
   fs::remove_all(d);
   fs::create_directories(d.parent_path());
   return d;
