@@ -1,6 +1,10 @@
 #include "apps/analytic_command.hpp"
 #include "apps/spectrum_command.hpp"
 
+#include "apps/fragility_command.hpp"
+#include "apps/option_number.hpp"
+#include "apps/synthetic_command.hpp"
+
 #include "core/number_text.hpp"
 #include "io/analytic_inputs.hpp"
 #include "io/analytic_report.hpp"
@@ -28,24 +32,12 @@ struct BadInput : std::runtime_error {
 // ------------------------------------------------------------------ options
 //
 // Every option is accepted with '-' or '_' between words (--r_b, --r-b).
-// Numbers are read by std::stod, correctly rounded (CLI11 2.1 reads a double
-// through long double, which can round twice), and must be finite.
+// Numbers are read by read_option_number (apps/option_number.hpp).
 
 std::string spellings(const std::string& name) {
   std::string other = name;
   for (char& c : other) c = c == '_' ? '-' : c == '-' ? '_' : c;
   return other == name ? "--" + name : "--" + name + ",--" + other;
-}
-
-double read_number(const std::string& name, const std::string& text) {
-  try {
-    std::size_t pos = 0;
-    const double v = std::stod(text, &pos);
-    if (pos != text.size() || !std::isfinite(v)) throw std::invalid_argument("");
-    return v;
-  } catch (const std::exception&) {
-    throw BadInput("--" + name + " expects a number, got '" + text + "'");
-  }
 }
 
 enum class Sign { any, positive };
@@ -71,7 +63,7 @@ CLI::Option* valued(CLI::App* cmd, const std::string& name, std::function<void(c
 CLI::Option* number(CLI::App* cmd, const std::string& name, double& value, const std::string& help,
                     Sign sign = Sign::any) {
   auto read = [&value, name, sign](const std::string& text) {
-    value = read_number(name, text);
+    value = polydem::read_option_number(name, text);
     if (sign == Sign::positive && !(value > 0.0)) throw BadInput("--" + name + " must be > 0");
   };
   return valued(cmd, name, read, help, "NUMBER=" + polydem::shortest_text(value));
@@ -97,8 +89,8 @@ CLI::Option* number_list(CLI::App* cmd, const std::string& name, std::vector<dou
     while (start <= text.size()) {
       const std::size_t comma = std::min(text.find(',', start), text.size());
       try {
-        values.push_back(read_number(name, text.substr(start, comma - start)));
-      } catch (const BadInput&) {
+        values.push_back(polydem::read_option_number(name, text.substr(start, comma - start)));
+      } catch (const std::invalid_argument&) {
         throw BadInput("--" + name + " expects numbers separated by commas, got '" + text + "'");
       }
       start = comma + 1;
@@ -535,6 +527,8 @@ int run_analytic_command(const std::vector<std::string>& args) {
   CLI::App* limit_cmd = add_limit(app, limit);
   CLI::App* arch_cmd = add_arch(app, arch);
   const AnalyticModel spectrum = add_spectrum_model(app);
+  const std::function<int()> fragility = polydem::add_fragility_command(app);
+  const std::function<int()> synthetic = polydem::add_synthetic_command(app);
   for (CLI::App* m : app.get_subcommands({})) m->allow_extras();
 
   std::vector<std::string> words(args.begin() + (!args.empty() && args[0] == "analytic" ? 1 : 0), args.end());
@@ -566,6 +560,8 @@ int run_analytic_command(const std::vector<std::string>& args) {
     if (limit_cmd->parsed()) return run_limit(limit);
     if (arch_cmd->parsed()) return run_arch(arch);
     if (spectrum.command->parsed()) return spectrum.run();
+    if (app.got_subcommand("fragility")) return fragility();
+    if (app.got_subcommand("synthetic")) return synthetic();
   } catch (const CLI::CallForHelp&) {
     std::cout << app.help();
     return 0;

@@ -4,7 +4,7 @@
 // block model (studies/) from the command line, one CLI11 subcommand per
 // model: lambda, beam, rocking, collapse-diagram, cracked-cone-p,
 // refined-lambda, dem-frequency, limit-lp, arch-thickness, spectrum
-// (apps/spectrum_command.hpp).
+// (apps/spectrum_command.hpp), fragility, synthetic.
 // `polydem analytic --help` lists them, `polydem analytic MODEL --help`
 // their options. --json prints io/analytic_results.hpp's JSON.
 

@@ -6,12 +6,18 @@
 // are the command line's options, with the same defaults (taken from the
 // models' structs).
 //
+// fragility fits the runs of a CSV file or of lists (fragility_json);
+// synthetic_suite returns its records' histories in the JSON and writes the
+// command line's files when given a directory.
+//
 // The block models take a parsed scene (the deck of --deck, or
 // analytic_scene() for the default [spire]) and run with the GIL released.
 #include "python/bindings.hpp"
 
 #include "io/analytic_inputs.hpp"
 #include "io/analytic_results.hpp"
+#include "io/fragility_tables.hpp"
+#include "io/synthetic_suite.hpp"
 
 #include <pybind11/stl.h>
 
@@ -212,6 +218,69 @@ void bind_analytical(py::module_& m) {
       },
       py::arg("voussoirs") = std::vector<int>{9}, py::arg("phi") = arch.friction_angle_deg,
       py::arg("tol") = arch.tolerance);
+
+  const pa::FragilityOptions fragility;
+  m.def(
+      "fragility",
+      [](const std::string& csv, const std::vector<double>& im, const std::vector<std::string>& state,
+         const std::vector<std::string>& record, const std::string& method, int bootstrap, std::uint64_t seed,
+         double confidence, int points, const std::string& out) {
+        FragilityInput in;
+        if (!csv.empty()) {
+          if (!im.empty() || !state.empty() || !record.empty())
+            throw py::value_error("give either csv or im and state (and record), not both");
+          in = read_fragility_runs(csv);
+        } else {
+          if (im.size() != state.size() || (!record.empty() && record.size() != im.size()))
+            throw py::value_error("im, state (and record) must have the same length");
+          for (std::size_t i = 0; i < im.size(); ++i) {
+            const auto s = pa::damage_state_named(state[i]);
+            if (!s) throw py::value_error("state '" + state[i] + "' is not intact, damaged, stones_lost, collapsed or 0-3");
+            in.runs.push_back({record.empty() ? std::string() : record[i], im[i], *s});
+          }
+          in.has_records = !record.empty();
+        }
+        if (method != "auto" && method != "ida" && method != "stripes")
+          throw py::value_error("method must be auto, ida or stripes (got \"" + method + "\")");
+        pa::FragilityOptions o;
+        o.method = method == "stripes" || (method == "auto" && !in.has_records) ? pa::FragilityMethod::stripes
+                                                                                 : pa::FragilityMethod::ida;
+        o.bootstrap = bootstrap, o.seed = seed, o.confidence = confidence, o.points = points;
+        pa::FragilityResult r;
+        {
+          py::gil_scoped_release nogil;
+          r = pa::fit_fragility(in.runs, o);
+        }
+        if (!out.empty()) write_fragility_tables(out, r);
+        return text(fragility_json(r));
+      },
+      py::arg("csv") = "", py::arg("im") = std::vector<double>{}, py::arg("state") = std::vector<std::string>{},
+      py::arg("record") = std::vector<std::string>{}, py::arg("method") = "auto",
+      py::arg("bootstrap") = fragility.bootstrap, py::arg("seed") = fragility.seed,
+      py::arg("confidence") = fragility.confidence, py::arg("points") = fragility.points, py::arg("out") = "");
+
+  const pa::SyntheticOptions synthetic;
+  m.def(
+      "synthetic_suite",
+      [](double magnitude, double distance, double vs30, int count, std::uint64_t seed, const std::string& fault,
+         double dt, double high_pass, const std::string& prefix, const std::string& out) {
+        if (fault != "strike-slip" && fault != "reverse")
+          throw py::value_error("fault must be strike-slip or reverse (got \"" + fault + "\")");
+        SyntheticSuiteRun run;
+        run.scenario = {magnitude, distance, vs30, fault == "reverse"};
+        run.seed = seed;
+        run.options.dt = dt;
+        run.options.high_pass = high_pass;
+        {
+          py::gil_scoped_release nogil;
+          run.records = pa::synthetic_suite(run.scenario, count, seed, run.options, prefix);
+        }
+        if (!out.empty()) write_synthetic_suite(out, run);
+        return text(synthetic_suite_json(run, true));
+      },
+      py::arg("magnitude"), py::arg("distance"), py::arg("vs30"), py::arg("count") = 20, py::arg("seed") = 1,
+      py::arg("fault") = "strike-slip", py::arg("dt") = synthetic.dt, py::arg("high_pass") = synthetic.high_pass,
+      py::arg("prefix") = "synthetic", py::arg("out") = "");
 }
 
 }  // namespace polydem::python

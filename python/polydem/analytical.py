@@ -10,7 +10,12 @@ array (columns history_columns), dem_frequency() the tip's signal t, u.
 
 The block models take `scene`: None (the default [spire]), a deck path or
 a polydem.Scene; no_windows=True removes the spire's windows (the override
-spire.window_faces=[])."""
+spire.window_faces=[]).
+
+fragility() and synthetic_suite() are `polydem analytic fragility` and
+`polydem analytic synthetic` (docs/fragility.md): out=DIR writes the
+command line's files (fragility() draws no PNG: scripts/plot_fragility.py
+DIR does)."""
 import functools
 import json
 import os
@@ -88,3 +93,34 @@ read_record = _polydem.read_record
 record_suite = _polydem.record_suite
 response_spectrum = _polydem.response_spectrum
 spectra = _polydem.spectra
+
+
+def fragility(csv=None, im=None, state=None, record=None, **options):
+    """Lognormal fragility curves fitted to runs (`polydem analytic
+    fragility`): a runs CSV, or im and state (and record, for IDA) as
+    sequences; options method ('auto', 'ida', 'stripes'), bootstrap, seed,
+    confidence, points, out. The curves ('im', and per state 'probability',
+    'low', 'high') as numpy arrays."""
+    r = json.loads(_polydem.fragility(
+        "" if csv is None else os.fspath(csv),
+        [] if im is None else [float(x) for x in im],
+        [] if state is None else [str(s) for s in state],
+        [] if record is None else [str(s) for s in record],
+        **{k: (os.fspath(v) if k == "out" else v) for k, v in options.items()}))
+    r["im"] = np.array(r["im"], dtype=float)
+    for s in r["states"]:
+        for k in ("probability", "low", "high"):
+            s[k] = np.array([np.nan if x is None else x for x in s[k]], dtype=float)
+    return r
+
+
+def synthetic_suite(magnitude, distance, vs30, **options):
+    """A suite of synthetic records (`polydem analytic synthetic`); options
+    count, seed, fault, dt, high_pass, prefix, out. Each record's
+    'acceleration_m_s2' is a numpy array sampled every 'dt' from t = 0."""
+    if "out" in options:
+        options["out"] = os.fspath(options["out"])
+    r = json.loads(_polydem.synthetic_suite(magnitude, distance, vs30, **options))
+    for rec in r["records"]:
+        rec["acceleration_m_s2"] = np.array(rec["acceleration_m_s2"], dtype=float)
+    return r

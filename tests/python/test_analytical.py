@@ -5,6 +5,7 @@ import json
 import math
 
 import numpy as np
+import pytest
 import polydem
 from conftest import deck, polydem_cli
 
@@ -128,3 +129,44 @@ def test_arch_thickness_matches_the_command_line():
     assert r["cases"][0]["falls"] == 0.0                     # 3 voussoirs stand however thin
     assert abs(r["cases"][1]["t_over_R"] - 0.1015) < 1e-3   # tests/studies/arch_thickness_test.cpp
     assert_as_printed(r, cli_json("arch-thickness", "--voussoirs", "3,9"))
+
+
+def test_fragility_from_lists_and_from_csv_match_the_command_line(tmp_path):
+    rng = np.random.default_rng(4)
+    capacity = 0.4 * np.exp(0.3 * rng.standard_normal(25))
+    record, im, state = [], [], []
+    for i, c in enumerate(capacity):
+        record += [f"r{i}", f"r{i}"]
+        im += [0.5 * c, c]
+        state += ["intact", "collapsed"]
+    csv = tmp_path / "runs.csv"
+    csv.write_text("record,im,state\n" + "".join(f"{r},{x!r},{s}\n" for r, x, s in zip(record, im, state)))
+    r = polydem.analytical.fragility(im=im, state=state, record=record, bootstrap=100, out=tmp_path / "py")
+    collapsed = r["states"][2]
+    assert collapsed["status"] == "fitted"
+    # Uncensored IDA: the log-moments of the capacities.
+    assert math.isclose(collapsed["theta"], math.exp(np.mean(np.log(capacity))), rel_tol=1e-12)
+    assert math.isclose(collapsed["beta"], np.std(np.log(capacity)), rel_tol=1e-12)
+    assert r["im"].shape == collapsed["probability"].shape == collapsed["low"].shape
+    assert (tmp_path / "py" / "fragility_curves.csv").exists()
+    p = polydem_cli("analytic", "fragility", csv, "--out", tmp_path / "cli", "--bootstrap", "100", "--no-plot", "--json")
+    assert p.returncode == 0, p.stderr
+    cli = json.loads(p.stdout)
+    assert cli["states"][2]["theta"] == collapsed["theta"]
+    assert cli["states"][2]["high"] == collapsed["high"].tolist()
+    assert polydem.analytical.fragility(csv=csv, bootstrap=100)["states"][2]["low"].tolist() == cli["states"][2]["low"]
+    with pytest.raises(ValueError):
+        polydem.analytical.fragility(im=[0.1, -0.2], state=["intact", "collapsed"])
+
+
+def test_synthetic_suite_matches_the_command_line_bit_for_bit(tmp_path):
+    r = polydem.analytical.synthetic_suite(6.0, 30.0, 600.0, count=2, seed=9, out=tmp_path / "py")
+    a = r["records"][1]["acceleration_m_s2"]
+    assert a[0] == 0.0 and a.size > 1000 and r["records"][1]["name"] == "synthetic_02"
+    p = polydem_cli("analytic", "synthetic", "--magnitude", "6", "--distance", "30", "--vs30", "600", "--count", "2",
+                    "--seed", "9", "--out", tmp_path / "cli")
+    assert p.returncode == 0, p.stderr
+    for f in ("synthetic_01.csv", "synthetic_02.csv", "suite.toml", "records.csv"):
+        assert (tmp_path / "py" / f).read_bytes() == (tmp_path / "cli" / f).read_bytes(), f
+    written = np.loadtxt(tmp_path / "cli" / "synthetic_02.csv", delimiter=",", skiprows=5)
+    assert np.array_equal(written[:, 1], a)
