@@ -7,6 +7,8 @@
 // The boxes grow by 10 mm (half a 20 mm margin).
 #include "contact/broad_phase.hpp"
 
+#include "tests/support/blocks.hpp"
+
 #include <gtest/gtest.h>
 
 #include <utility>
@@ -19,13 +21,7 @@ using Pairs = std::vector<std::pair<int, int>>;
 
 constexpr double kGrow = 0.01;
 
-BlockSpec block_spec(std::string name, Polyhedron shape, BlockMotion motion) {
-  BlockSpec s;
-  s.name = std::move(name);
-  s.shape = std::move(shape);
-  s.motion = motion;
-  return s;
-}
+using test::block_spec;
 
 Blocks scene() {
   return build_blocks({block_spec("base", make_box(Vec3(10, 1, 1), Vec3(0, 0, -0.5)), BlockMotion::fixed),

@@ -6,6 +6,8 @@
 #include "contact/detection.hpp"
 #include "contact/joint_law.hpp"
 
+#include "tests/support/blocks.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -17,20 +19,9 @@ namespace {
 
 constexpr double kMargin = 0.02;
 // The joint law's stiffnesses price what a detection re-samples.
-const JointLaw kLaw = [] {
-  JointLaw law;
-  law.kn = 1e10;
-  law.ks = 4e9;
-  return law;
-}();
+const JointLaw kLaw = test::round_law(0.0);
 
-BlockSpec block_spec(std::string name, Polyhedron shape, BlockMotion motion) {
-  BlockSpec s;
-  s.name = std::move(name);
-  s.shape = std::move(shape);
-  s.motion = motion;
-  return s;
-}
+using test::block_spec;
 
 Blocks resting_cube() {
   return build_blocks({block_spec("base", make_box(Vec3(3, 3, 1), Vec3(0, 0, -0.5)), BlockMotion::fixed),

@@ -10,6 +10,8 @@
 #include "contact/pair_gather.hpp"
 #include "structures/spire.hpp"
 
+#include "tests/support/blocks.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -23,21 +25,9 @@ namespace {
 constexpr double kDelta = 1.0 / 4096.0;
 constexpr double kMargin = 0.01;
 
-JointLaw law_for_test() {
-  JointLaw law;
-  law.kn = 1e10;
-  law.ks = 4e9;
-  law.tan_phi = 0.5;
-  return law;
-}
+JointLaw law_for_test() { return test::round_law(0.5); }
 
-BlockSpec block_spec(std::string name, Polyhedron shape, BlockMotion motion) {
-  BlockSpec s;
-  s.name = std::move(name);
-  s.shape = std::move(shape);
-  s.motion = motion;
-  return s;
-}
+using test::block_spec;
 
 void turn(Blocks& b, int i, double angle, const Vec3& axis) {
   b.state.orientation[i] = (Quat(Eigen::AngleAxisd(angle, axis.normalized())) * b.state.orientation[i]).normalized();
