@@ -33,6 +33,13 @@ void frame_vertices(const PosedBlock& block, const JointFrame& frame, std::vecto
   }
 }
 
+// A face whose normal is within 1e-9 of perpendicular to n counts as a wall:
+// it takes no part in the hulls (its slope, 1e9 and beyond, would multiply
+// a cell's round-off), and where the region ends against it the rim term
+// of the face beside it stands for it (the limit of its cell as it turns
+// vertical).
+constexpr double kSteep = 1e-9;
+
 // Face f's shadow if its outward normal has a component along n of sign
 // `sign` (+1: A's upper hull, −1: B's lower hull); false for a face
 // perpendicular to n (component exactly 0) or facing the other way.
@@ -41,7 +48,7 @@ bool face_shadow(const Polyhedron& p, const Vec3& u1, const Vec3& u2, const Vec3
                  FaceShadow& s) {
   const Vec3& nf = p.normals[static_cast<std::size_t>(f)];
   const double mn = un.dot(nf);
-  if (!(sign > 0 ? mn > 0 : mn < 0)) return false;
+  if (!(sign > 0 ? mn > kSteep : mn < -kSteep)) return false;
   s.face = f;
   s.m1 = u1.dot(nf);
   s.m2 = u2.dot(nf);
@@ -78,6 +85,14 @@ void face_shadows(const PosedBlock& block, const JointFrame& frame, int sign, co
     if (face_shadow(p, u1, u2, un, static_cast<int>(f), sign, x, y, h, s)) out.push_back(s);
 }
 
+// Per face of B: 1 where it faces −n (its lower hull, face_shadow's sign).
+void lower_faces(const PosedBlock& block, const JointFrame& frame, std::vector<char>& lower) {
+  const Vec3 un = block.R.transpose() * frame.n;
+  const Polyhedron& p = *block.shape;
+  lower.resize(p.faces.size());
+  for (std::size_t f = 0; f < p.faces.size(); ++f) lower[f] = un.dot(p.normals[f]) < -kSteep ? 1 : 0;
+}
+
 // True when the cell of the two shadows can be non-empty: a above b
 // somewhere, their boxes overlapping.
 bool may_overlap(const FaceShadow& fa, const FaceShadow& fb) {
@@ -100,10 +115,16 @@ double clamp_unit(double u) {
 }
 
 // Adds the fan integrals of the convex polygon `poly` (nodes carry t) to `m`.
-void add_fan(const std::vector<Node>& poly, OverlapMoments& m) {
+// The fan's integrals into `m`; returns the cell's ∫t dA and ∫tξ dA.
+struct CellLoad {
+  double volume = 0;
+  Vec2 moment = Vec2::Zero();
+};
+CellLoad add_fan(const std::vector<Node>& poly, OverlapMoments& m) {
   const std::size_t k = poly.size();
   const double x0 = poly[0].x, y0 = poly[0].y, t0 = poly[0].t;
   double area = 0;
+  CellLoad c;
   for (std::size_t i = 1; i + 1 < k; ++i) {
     const double x1 = poly[i].x, y1 = poly[i].y, t1 = poly[i].t;
     const double x2 = poly[i + 1].x, y2 = poly[i + 1].y, t2 = poly[i + 1].t;
@@ -111,12 +132,12 @@ void add_fan(const std::vector<Node>& poly, OverlapMoments& m) {
     const double a12 = a / 12.0;
     const double st = t0 + t1 + t2, sx = x0 + x1 + x2, sy = y0 + y1 + y2;
     area += a;
-    m.volume += a * st / 3.0;
+    c.volume += a * st / 3.0;
     m.overlap_squared += a12 * (t0 * t0 + t1 * t1 + t2 * t2 + st * st);
     m.area_moment.x() += a * sx / 3.0;
     m.area_moment.y() += a * sy / 3.0;
-    m.volume_moment.x() += a12 * (t0 * x0 + t1 * x1 + t2 * x2 + st * sx);
-    m.volume_moment.y() += a12 * (t0 * y0 + t1 * y1 + t2 * y2 + st * sy);
+    c.moment.x() += a12 * (t0 * x0 + t1 * x1 + t2 * x2 + st * sx);
+    c.moment.y() += a12 * (t0 * y0 + t1 * y1 + t2 * y2 + st * sy);
     m.area_inertia(0, 0) += a12 * (x0 * x0 + x1 * x1 + x2 * x2 + sx * sx);
     const double ixy = a12 * (x0 * y0 + x1 * y1 + x2 * y2 + sx * sy);
     m.area_inertia(0, 1) += ixy;
@@ -124,7 +145,10 @@ void add_fan(const std::vector<Node>& poly, OverlapMoments& m) {
     m.area_inertia(1, 1) += a12 * (y0 * y0 + y1 * y1 + y2 * y2 + sy * sy);
   }
   m.area += area;
+  m.volume += c.volume;
+  m.volume_moment += c.moment;
   if (area != 0) ++m.cells;
+  return c;
 }
 
 // Q_ab for face a of A (upper hull) and face b of B (lower hull), integrated
@@ -225,7 +249,55 @@ void add_cell(const Polyhedron& pa, const FaceShadow& sa, const Polyhedron& pb, 
   }
   if (next.size() < 3) return;
   for (const Node& p : next) m.max_overlap = std::max(m.max_overlap, p.t);
-  add_fan(next, m);
+  const CellLoad c = add_fan(next, m);
+  // B's surface over the cell: h_B(ξ) = h0 + g·ξ.
+  const Vec2 g(-sb.m1 / sb.mn, -sb.m2 / sb.mn);
+  const double hb0 = s.bh[0] - g.x() * s.bx[0] - g.y() * s.by[0];
+  m.slope_volume += c.volume * g;
+  m.slope_twist += g.y() * c.moment.x() - g.x() * c.moment.y();
+  m.height_volume += (hb0 * c.volume + g.dot(c.moment)) * g;
+
+  // The rim: the cell's sides that lie on an edge of b beyond which B's
+  // lower hull ends (its neighbour faces up or is perpendicular to n). They
+  // move with B, and t need not vanish there: ½∮t²ν ds over them.
+  if (pb.neighbours.empty()) return;
+  const std::vector<int>& across = pb.neighbours[static_cast<std::size_t>(sb.face)];
+  const std::size_t nk = next.size();
+  for (std::size_t j = 0; j < nb; ++j) {
+    const std::size_t i = (2 * nb - 2 - j) % nb;  // reversed edge j is the face's edge i
+    const int g_face = across[i];
+    if (g_face < 0 || s.b_lower[static_cast<std::size_t>(g_face)]) continue;
+    const std::size_t j1 = j + 1 == nb ? 0 : j + 1;
+    const double ox = s.bx[j], oy = s.by[j];
+    const double ex = s.bx[j1] - ox, ey = s.by[j1] - oy;
+    const double len2 = ex * ex + ey * ey;
+    if (!(len2 > 0)) continue;
+    const double tol = 1e-9 * len2;
+    for (std::size_t e = 0; e < nk; ++e) {
+      const Node& p = next[e];
+      const Node& q = next[e + 1 == nk ? 0 : e + 1];
+      const double dp = ex * (p.y - oy) - ey * (p.x - ox);
+      const double dq = ex * (q.y - oy) - ey * (q.x - ox);
+      if (!(std::abs(dp) <= tol && std::abs(dq) <= tol)) continue;
+      const double dx = q.x - p.x, dy = q.y - p.y;
+      const double L = std::hypot(dx, dy);
+      if (!(L > 0)) continue;
+      const Vec2 nu(dy / L, -dx / L);  // outward: the polygon turns counter-clockwise
+      // Simpson's rule, exact for the cubics t²·f with f linear along the side.
+      const double tm = 0.5 * (p.t + q.t);
+      const double xm = 0.5 * (p.x + q.x), ym = 0.5 * (p.y + q.y);
+      const double hp = hb0 + g.x() * p.x + g.y() * p.y, hq = hb0 + g.x() * q.x + g.y() * q.y;
+      const double hm = 0.5 * (hp + hq);
+      const double w = L / 6.0;
+      const double t2 = w * (p.t * p.t + 4 * tm * tm + q.t * q.t);
+      const double t2x = w * (p.t * p.t * p.x + 4 * tm * tm * xm + q.t * q.t * q.x);
+      const double t2y = w * (p.t * p.t * p.y + 4 * tm * tm * ym + q.t * q.t * q.y);
+      const double t2h = w * (p.t * p.t * hp + 4 * tm * tm * hm + q.t * q.t * hq);
+      m.rim_force += t2 * nu;
+      m.rim_twist += t2x * nu.y() - t2y * nu.x();
+      m.rim_height += t2h * nu;
+    }
+  }
 }
 
 }  // namespace
@@ -256,6 +328,7 @@ OverlapMoments overlap_integral(const PosedBlock& a, const PosedBlock& b, const 
 
   face_shadows(a, frame, +1, s.xa, s.ya, s.ha, s.top_a);
   face_shadows(b, frame, -1, s.xb, s.yb, s.hb, s.bottom_b);
+  lower_faces(b, frame, s.b_lower);
   for (const FaceShadow& fa : s.top_a) {
     if (fa.hmax <= bottom_b) continue;
     for (const FaceShadow& fb : s.bottom_b)
@@ -273,6 +346,7 @@ OverlapMoments overlap_integral(const PosedBlock& a, const PosedBlock& b, const 
   Vec3 a1, a2, an, b1, b2, bn;
   body_axes(a, frame, a1, a2, an);
   body_axes(b, frame, b1, b2, bn);
+  lower_faces(b, frame, s.b_lower);
   FaceShadow fa, fb;
   int face_a = -1;
   bool up = false;
@@ -346,10 +420,20 @@ double polar_moment(const OverlapMoments& m, const Vec2& c) {
 
 JointLoad joint_load(const OverlapMoments& m, const JointFrame& frame, double kn, const Vec3& about) {
   JointLoad l;
-  l.force = kn * m.volume * frame.n;
-  // Σ (r − about) × kn·t·n over Ω, r = origin + ξ1 e1 + ξ2 e2.
-  l.moment = kn * (m.volume * (frame.origin - about).cross(frame.n) + m.volume_moment.x() * frame.e1.cross(frame.n) +
-                   m.volume_moment.y() * frame.e2.cross(frame.n));
+  const Vec3& n = frame.n;
+  const Vec3 slope = m.slope_volume.x() * frame.e1 + m.slope_volume.y() * frame.e2;
+  l.force = kn * (m.volume * n - slope);
+  // About the origin: ∫t ξ×n (e1×n = −e2, e2×n = e1), −∫t ξ×g = −n·Σ(g₂∫tξ₁ −
+  // g₁∫tξ₂), −∫t h_B n×g (n×e1 = e2, n×e2 = −e1); then moved to `about`.
+  const Vec3 at_origin = m.volume_moment.y() * frame.e1 - m.volume_moment.x() * frame.e2 - m.slope_twist * n -
+                         (m.height_volume.x() * frame.e2 - m.height_volume.y() * frame.e1);
+  // The rim: −½kn ∫t² ν ds acting at B's silhouette (ξ + h_B·n): its moment
+  // −½kn ∫t² ((ξ × ν)·n n + h_B n × ν) ds, n × ν = ν₁e2 − ν₂e1.
+  const Vec3 rim = m.rim_force.x() * frame.e1 + m.rim_force.y() * frame.e2;
+  l.force -= 0.5 * kn * rim;
+  const Vec3 rim_at_origin =
+      m.rim_twist * n + (m.rim_height.x() * frame.e2 - m.rim_height.y() * frame.e1);
+  l.moment = kn * at_origin - 0.5 * kn * rim_at_origin + (frame.origin - about).cross(l.force);
   l.energy = 0.5 * kn * m.overlap_squared;
   l.stiffness = kn * m.area;
   return l;

@@ -16,8 +16,8 @@
 // alone: nothing is sampled, nothing is carried from the previous step.
 //
 // How. top_A is made of A's faces with n_f·n > 0 (its upper hull along n),
-// bot_B of B's faces with n_f·n < 0; faces perpendicular to n project to
-// segments and carry nothing. Over each cell of the overlay of a projected
+// bot_B of B's faces with n_f·n < 0; faces perpendicular to n (within 1e-9)
+// project to segments and carry nothing. Over each cell of the overlay of a projected
 // face a of A and a projected face b of B both heights are linear, so t is
 // linear and the cell's part of Ω,
 //   Q_ab = proj(a) ∩ proj(b) ∩ {t_ab ≥ 0},
@@ -112,6 +112,17 @@ struct OverlapMoments {
   Mat2 area_inertia = Mat2::Zero();      // ∫ ξ ξᵀ dA, m⁴
   double max_overlap = 0;                // largest t over Ω, m (0 when Ω is empty)
   int cells = 0;                         // face pairs with a non-empty clipped polygon
+  // B's surface slopes over the cells, for the layer's exact (conservative)
+  // load (joint_load): with h_B(ξ) = h0 + g·ξ on a cell,
+  Vec2 slope_volume = Vec2::Zero();      // Σ g ∫t dA, m³
+  double slope_twist = 0;                // Σ (g₂ ∫tξ₁ − g₁ ∫tξ₂) dA, m⁴
+  Vec2 height_volume = Vec2::Zero();     // Σ g ∫t h_B dA, m⁴
+  // Where Ω ends on an edge of B's lower hull (B's silhouette) with t > 0:
+  // ∫t²ν ds, ∫t²(ξ × ν)·n ds and ∫t² h_B ν ds along those sides, ν their
+  // outward normal in the plane.
+  Vec2 rim_force = Vec2::Zero();         // m³
+  double rim_twist = 0;                  // m⁴
+  Vec2 rim_height = Vec2::Zero();        // m⁴
 };
 
 // A face of A and a face of B whose cell may be non-empty.
@@ -138,6 +149,7 @@ struct OverlapScratch {
   std::vector<Node> poly, next;
   std::vector<double> bx, by, bh;              // proj(b), counter-clockwise
   std::vector<FacePair> face_pairs;            // overlap_face_pairs' callers' buffer
+  std::vector<char> b_lower;                   // per face of B: in its lower hull
 };
 
 // The integrals of the Winkler joint between A (below) and B (above) on the
@@ -170,9 +182,21 @@ OverlapMoments overlap_integral(const PosedBlock& a, const PosedBlock& b, const 
 // Polar moment of area of Ω about the plane point c: ∫|ξ − c|² dA, m⁴.
 double polar_moment(const OverlapMoments& m, const Vec2& c);
 
-// What the layer does to B: force kn·∫t·n, its moment about `about` (world),
-// and the strain energy ½ kn ∫t². A receives −force and −moment (about the
-// same point).
+// What the layer does to B: the load whose work is exactly the loss of the
+// strain energy W = ½ kn ∫t² as B moves (n fixed in A). Moving B changes
+// t(ξ) by its motion along n and, where B's surface is sloped (∇h_B = g),
+// by its motion along the slope; so the load is a pressure kn·t acting
+// along n − g at B's surface point above ξ (normal to B's face, kn·t per
+// unit of the face's area along n):
+//   force  = kn·(∫t·n − Σ g ∫t),
+//   moment = kn·∫t·(ξ + h_B·n − about) × (n − g) dA,
+// integrated exactly from the cells' sums, and where Ω ends on B's
+// silhouette with t > 0 (a side moving with B) the rim's −½kn∮t²ν ds at
+// B's surface there. On a flat face (g = 0) inside the other it is kn·∫t
+// along n at the pressure centroid. A receives −force and −moment
+// (about the same point): W depends on the blocks' relative pose only, so
+// the pair's load does no work in a rigid motion of both and its work in any
+// relative motion is −dW. Also the strain energy ½ kn ∫t².
 struct JointLoad {
   Vec3 force = Vec3::Zero();   // on B, N
   Vec3 moment = Vec3::Zero();  // on B about `about`, N·m

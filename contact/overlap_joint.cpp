@@ -263,7 +263,10 @@ void overlap_joint_forces(const JointLaws& laws, const std::vector<Polyhedron>& 
     }
     lanes::PairRest& w = j.wrench[q];
     w = d;
-    add_force(w, n_elastic * n + fs, p, xc, xr);
+    const JointLoad layer = joint_load(m, frame, law.kn, frame.origin);  // conservative: its work is −dW
+    add_force(w, layer.force, frame.origin, xc, xr);
+    add_couple(w, layer.moment);
+    add_force(w, fs, p, xc, xr);
     add_couple(w, tw * n);
     j.normal_force[q] = n_elastic + n_viscous;
     j.strain_energy[q] = 0.5 * law.kn * m.overlap_squared + fs.squaredNorm() / (2.0 * ks_area) +

@@ -14,8 +14,12 @@
 // nothing jumps when the contacts are detected again.
 //
 // The joint, per pair, at every step (velocities at t − dt/2, poses at t):
-//   normal:  N = kn·∫t dA along n, at the pressure centroid p = ∫tξ/∫t;
-//            the strain energy is ½·kn·∫t² dA.
+//   normal:  N = kn·∫t dA along n, at the pressure centroid p = ∫tξ/∫t,
+//            where the incident block's surface is flat; where it slopes,
+//            the pressure kn·t acts normal to it, and where the region ends
+//            on its outline with t > 0 the rim pushes outwards (joint_load):
+//            the layer's load is the exact gradient of its strain energy
+//            ½·kn·∫t² dA, so it makes no energy of its own.
 //   shear:   one elastic shear force F_s in the joint's plane, carried from
 //            step to step and turned with the joint as the subcontacts'
 //            (joint_law.hpp), incremented by −ks·A·v_s(p)·dt with A the area

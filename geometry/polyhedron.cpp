@@ -1,6 +1,8 @@
 // Building a Polyhedron from vertices and face loops, and moving it rigidly.
 #include "geometry/polyhedron.hpp"
 
+#include <map>
+
 #include <algorithm>
 #include <string>
 
@@ -46,6 +48,21 @@ Polyhedron make_polyhedron(std::vector<Vec3> vertices, std::vector<std::vector<i
   // depend on the order faces happened to be listed in.
   std::sort(p.edges.begin(), p.edges.end());
   p.edges.erase(std::unique(p.edges.begin(), p.edges.end()), p.edges.end());
+  // Each directed edge a → b of a face meets b → a in its neighbour.
+  std::map<std::pair<int, int>, int> face_of;
+  for (int f = 0; f < static_cast<int>(p.faces.size()); ++f) {
+    const auto& loop = p.faces[f];
+    for (std::size_t i = 0; i < loop.size(); ++i) face_of[{loop[i], loop[(i + 1) % loop.size()]}] = f;
+  }
+  p.neighbours.resize(p.faces.size());
+  for (std::size_t f = 0; f < p.faces.size(); ++f) {
+    const auto& loop = p.faces[f];
+    p.neighbours[f].assign(loop.size(), -1);
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const auto it = face_of.find({loop[(i + 1) % loop.size()], loop[i]});
+      if (it != face_of.end()) p.neighbours[f][i] = it->second;
+    }
+  }
   validate(p);
   return p;
 }

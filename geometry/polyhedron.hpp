@@ -40,6 +40,9 @@ struct Polyhedron {
   std::vector<Vec3> normals;            // outward unit normal per face
   std::vector<double> offsets;          // face plane: normals[f]·x = offsets[f]
   std::vector<std::array<int, 2>> edges;  // unique undirected edges, [0] < [1]
+  // Per face, per edge of its loop (faces[f][i] → faces[f][i+1]): the face
+  // across that edge.
+  std::vector<std::vector<int>> neighbours;
 };
 
 // Builds normals, offsets and edges, then validates. Throws GeometryError.
