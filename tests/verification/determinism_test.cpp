@@ -70,6 +70,21 @@ TEST(Determinism, OneAndTwoThreadsGiveTheSameBits) {
   EXPECT_GT(moved, 1e-3);
 }
 
+// The overlap joint model (a wrench per pair, gathered pair by pair) on 1
+// and 2 threads: the same bits.
+TEST(Determinism, TheOverlapModelGivesTheSameBitsOnOneAndTwoThreads) {
+  SceneSpec spec = parse_deck(big_wall_deck(), "big_wall.toml", {"simulation.joint_model=\"overlap\""});
+  spec.simulation.adaptive_threads = false;
+  RunControl one, two;
+  one.threads = 1;
+  two.threads = 2;
+  one.parallel_threshold = two.parallel_threshold = 0;
+  const RunReport a = run_scene(spec, one);
+  const RunReport b = run_scene(spec, two);
+  expect_same_bits(a, b);
+  EXPECT_GT(a.energy.slip, 0.0);
+}
+
 // The joint law's kernel in AVX2 lanes and in plain doubles
 // (contact/joint_law_kernels.hpp) give the same bits through a whole run: the wall under the pulse, on two
 // threads, every step's law on one path or the other.
