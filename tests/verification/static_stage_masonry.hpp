@@ -6,7 +6,7 @@
 #pragma once
 
 #include "io/deck.hpp"
-#include "studies/limit_analysis.hpp"
+#include "limit_lambda.hpp"
 
 #include <gtest/gtest.h>
 
@@ -27,17 +27,6 @@ inline SceneSpec small_unit_wall() {
 inline SceneSpec arch_of_25() {
   return read_deck(std::string(POLYDEM_SOURCE_DIR) + "/examples/structures/arch_semicircular.toml",
                    {"arch[1].voussoirs=25"});
-}
-
-// The limit-analysis collapse load of `s` along `direction` (g).
-inline double limit_lambda(const SceneSpec& s, const Vec3& direction) {
-  const LimitModel m = limit_model(s);
-  LimitAnalysisOptions o;
-  o.friction_angle_deg = s.joint.friction_angle;
-  o.direction = direction;
-  const LimitAnalysisResult r = limit_analysis(m, o);
-  EXPECT_EQ(r.status, LimitStatus::optimal);
-  return r.lambda;
 }
 
 }  // namespace polydem::static_stage_masonry

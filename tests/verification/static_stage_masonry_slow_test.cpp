@@ -17,7 +17,7 @@ using namespace static_stage_masonry;
 
 TEST(StaticStageMasonrySlow, SmallUnitWallBisectionBracketsTheLimitAnalysis) {
   const SceneSpec s = small_unit_wall();
-  const double lp = limit_lambda(s, Vec3(0, 1, 0));
+  const double lp = lp_lambda(s, Vec3(0, 1, 0));
   CollapseSearchOptions o;
   o.low_g = 0.11;
   o.high_g = 0.15;

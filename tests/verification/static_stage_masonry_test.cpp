@@ -37,7 +37,7 @@ TEST(StaticStageMasonry, SmallUnitWallReachesEquilibrium) {
 // A static trial on the wall at 0.1 g (0.78 of its b/h) stands.
 TEST(StaticStageMasonry, SmallUnitWallStandsAtFourFifthsOfItsLimit) {
   const SceneSpec s = small_unit_wall();
-  const double lp = limit_lambda(s, Vec3(0, 1, 0));
+  const double lp = lp_lambda(s, Vec3(0, 1, 0));
   EXPECT_NEAR(lp, 0.2 / 1.568, 1e-5);
   const CollapseTrial t = static_collapse_trial(s, 90.0, 0.1, CollapseSearchOptions{});
   EXPECT_FALSE(t.no_equilibrium) << t.no_equilibrium_detail;
@@ -52,7 +52,7 @@ TEST(StaticStageMasonry, SmallUnitWallStandsAtFourFifthsOfItsLimit) {
 TEST(StaticStageMasonry, ArchBisectionBracketsTheLimitAnalysis) {
   const SceneSpec s = arch_of_25();
   ASSERT_EQ(s.simulation.safety_factor, 0.8);
-  const double lp = limit_lambda(s, Vec3(1, 0, 0));
+  const double lp = lp_lambda(s, Vec3(1, 0, 0));
   CollapseSearchOptions o;
   o.low_g = 0.25;
   o.high_g = 0.4;
