@@ -78,8 +78,9 @@ struct EquilibriumSpec {
   double ratio = 1e-5;          // unbalanced-force ratio tolerance, > 0
   long max_steps = 1000000;     // more without convergence is an error
   double local_damping = 0.8;   // alpha, in (0, 1)
-  // Density scaling: each block's inertia lowered in the stage until it
-  // vibrates at the step's frequency (Simulation::begin_static_stage).
+  // Density scaling: each block's inertia set in the stage so that it
+  // vibrates at the step's frequency over √(1 + α)
+  // (integrators/static_stage.hpp).
   bool density_scaling = false;
   int deck_line = 0;
 };

@@ -27,8 +27,8 @@ void gather_two_blocks(const BlockUpdate& u, int i, int end) {
 // Free block i's force and moment at the step's time, and the inverse mass
 // and principal inertia its update uses. With kLocalDamping (the static
 // stage only) the force and the moment are first reduced by Cundall's local
-// damping against the velocities at t − dt/2, and density scaling's inertia
-// is used; without it the update is the plain one, at no cost.
+// damping against the velocities at t − dt/2, and the stage's inertia
+// (static_stage.hpp) is used; without it the update is the plain one, at no cost.
 template <bool kLocalDamping>
 [[gnu::always_inline]] inline void block_load(const BlockUpdate& u, int i, Vec3& force, Vec3& torque, double& inv_m,
                                               const Vec3*& inv_I) {
@@ -48,7 +48,7 @@ template <bool kLocalDamping>
   inv_m = pr.inv_mass[i];
   inv_I = &pr.inv_principal_inertia[i];
   if constexpr (kLocalDamping) {
-    if (!u.stage.scaled_inv_mass.empty()) {  // density scaling (the static stage)
+    if (!u.stage.scaled_inv_mass.empty()) {  // the static stage's inertia
       inv_m = u.stage.scaled_inv_mass[i];
       inv_I = &u.stage.scaled_inv_inertia[i];
     }

@@ -70,8 +70,8 @@ double highest_frequency_for_step(double dt, double beta, double safety_factor,
 // Each free block's ω_b of the same all-faces bound (rad/s, without the √2
 // between free blocks; 0 for blocks that are not free). critical_time_step's
 // omega_max is √2 times the largest. The static stage's density scaling
-// (Simulation::begin_static_stage) lowers every block's inertia until its ω_b
-// is that largest one.
+// (Simulation::begin_static_stage) sets every block's inertia so that its
+// ω_b is that largest one over √(1 + α) (static_stage.hpp).
 std::vector<double> block_frequencies(const Blocks& blocks, const JointLaw& stiffest);
 
 // The same bound from the joints a block actually has: the subcontacts of

@@ -14,29 +14,33 @@ StaticStage start_static_stage(const Blocks& blocks, const ContactSet& contacts,
   s.active = true;
   s.local_damping = local_damping;
   s.load = load;
-  if (!density_scaling) return s;
-  // Each block's highest frequency, on all its faces or on the joints it
-  // has now, whichever is higher; the step was chosen for the highest of all.
-  std::vector<double> w = block_frequencies(blocks, step_law);
-  const std::vector<double> wc = block_frequencies_from_contacts(blocks, contacts, laws);
-  double top = 0;
-  for (int i : blocks.free_blocks) {
-    w[i] = std::max(w[i], wc[i]);
-    top = std::max(top, w[i]);
-  }
-  // Under the joint bound the step may allow less than √2·top (each joint
-  // counted once beside a fixed block or a stiffer stone), but blocks scaled
-  // to one frequency count every joint twice: scale them to ω/√2 of the
-  // highest ω the step allows (blocks above it become heavier).
-  if (sim.time_step_bound == StepBound::joint)
-    top = std::min(top, highest_frequency_for_step(dt, step_law.beta, sim.safety_factor, sim.damping_scheme) /
-                            std::sqrt(2.0));
   s.scaled_inv_mass = blocks.props.inv_mass;
   s.scaled_inv_inertia = blocks.props.inv_principal_inertia;
-  if (!(top > 0)) return s;
+  // Local damping can raise a force to (1 + α) times itself (the header):
+  // every block (1 + α) times heavier keeps the step's margin.
+  const double amplification = 1.0 + std::max(0.0, local_damping);
+  double top = 0;
+  std::vector<double> w;
+  if (density_scaling) {
+    // Each block's highest frequency, on all its faces or on the joints it
+    // has now, whichever is higher; the step was chosen for the highest of all.
+    w = block_frequencies(blocks, step_law);
+    const std::vector<double> wc = block_frequencies_from_contacts(blocks, contacts, laws);
+    for (int i : blocks.free_blocks) {
+      w[i] = std::max(w[i], wc[i]);
+      top = std::max(top, w[i]);
+    }
+    // Under the joint bound the step may allow less than √2·top (each joint
+    // counted once beside a fixed block or a stiffer stone), but blocks
+    // scaled to one frequency count every joint twice: scale them to ω/√2 of
+    // the highest ω the step allows (blocks above it become heavier).
+    if (sim.time_step_bound == StepBound::joint)
+      top = std::min(top, highest_frequency_for_step(dt, step_law.beta, sim.safety_factor, sim.damping_scheme) /
+                              std::sqrt(2.0));
+  }
   for (int i : blocks.free_blocks) {
-    if (!(w[i] > 0)) continue;
-    const double f = (top / w[i]) * (top / w[i]);  // 1 / the mass factor, ≥ 1
+    double f = 1.0 / amplification;  // the inverse mass factor
+    if (top > 0 && w[i] > 0) f *= (top / w[i]) * (top / w[i]);
     s.scaled_inv_mass[i] *= f;
     s.scaled_inv_inertia[i] *= f;
   }

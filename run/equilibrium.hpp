@@ -24,8 +24,11 @@
 // block's edge) and m_i·|g| its weight, the only applied load of the stage.
 // This is 3DEC's maximum unbalanced-force ratio, moments included so that a
 // block still rocking is not taken for one at rest. The stage stops when
-// R ≤ equilibrium.ratio; equilibrium.max_steps steps without that is a
-// SceneError naming equilibrium.max_steps.
+// R ≤ equilibrium.ratio on two steps in a row (a block swinging through its
+// place has a zero net force for a step at its fastest, its dashpots then
+// balancing its springs' error: the next step's force is far from zero);
+// equilibrium.max_steps steps without that is a SceneError naming
+// equilibrium.max_steps.
 //
 // Then: Simulation::end_static_stage(): t = 0, every block at rest, the
 // equilibrium state is the reference of displacements, rotations and

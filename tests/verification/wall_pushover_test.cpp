@@ -21,7 +21,7 @@
 // lives in wall_pushover_slow_test.cpp.
 #include "io/deck.hpp"
 #include "studies/collapse_search.hpp"
-#include "studies/limit_analysis.hpp"
+#include "limit_lambda.hpp"
 
 #include <gtest/gtest.h>
 
@@ -31,16 +31,6 @@ namespace polydem {
 namespace {
 
 const std::string kDeckPath = std::string(POLYDEM_SOURCE_DIR) + "/examples/verification/wall_pushover.toml";
-
-double lp_lambda(const SceneSpec& s, const Vec3& direction) {
-  const LimitModel m = limit_model(s);
-  LimitAnalysisOptions o;
-  o.friction_angle_deg = s.joint.friction_angle;
-  o.direction = direction;
-  const LimitAnalysisResult r = limit_analysis(m, o);
-  EXPECT_EQ(r.status, LimitStatus::optimal);
-  return r.lambda;
-}
 
 TEST(WallPushover, OutOfPlaneLimitAnalysisIsTheClosedFormAndTheDemBracketsIt) {
   const SceneSpec s = read_deck(kDeckPath);
