@@ -21,7 +21,6 @@ void PairJoints::resize(std::size_t n) {
   normal_force.resize(n, 0.0);
   overlap.resize(n, 0.0);
   area.resize(n, 0.0);
-  area_before.resize(n, 0.0);
   polar.resize(n, 0.0);
   strain_energy.resize(n, 0.0);
   sliding.resize(n, 0);
@@ -148,9 +147,7 @@ void overlap_joint_forces(const JointLaws& laws, const std::vector<Polyhedron>& 
       for (std::size_t s = s0; s < s0 + static_cast<std::size_t>(cp.count); ++s) {
         const Vec3 x = st.rotation[pc] * sub.inc_point_local[s] + st.position[pc];
         sub.point[s] = x;
-        sub.overlap[s] = plane - pn.dot(x);
-        sub.force[s] = Vec3::Zero();
-        sub.normal_force[s] = 0;
+        sub.overlap[s] = plane - pn.dot(x);  // their force and normal force stay the zeros they were built with
       }
     }
 
@@ -177,7 +174,7 @@ void overlap_joint_forces(const JointLaws& laws, const std::vector<Polyhedron>& 
     const OverlapMoments m =
         overlap_integral(A, B, frame, cells + j.cell_first[q], cells + j.cell_first[q + 1], scratch);
     j.overlap[q] = m.max_overlap;
-    j.area_before[q] = j.area[q];
+    const double area_before = j.area[q];
     j.area[q] = m.area;
     j.normal_force[q] = 0;
     j.sliding[q] = 0;
@@ -224,7 +221,7 @@ void overlap_joint_forces(const JointLaws& laws, const std::vector<Polyhedron>& 
     const Vec3 theta = dt * (st.angular_velocity[r] + (0.5 * spin) * n);
     Vec3 fs = turn(theta) * j.shear[q];
     fs -= n.dot(fs) * n;
-    const double area_before = j.area_before[q], polar_before = j.polar[q];
+    const double polar_before = j.polar[q];
     if (area < area_before) fs *= area / area_before;
     double tw = j.twist[q];
     if (polar < polar_before) tw *= polar / polar_before;

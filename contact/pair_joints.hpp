@@ -35,7 +35,6 @@ struct PairJoints {
   std::vector<double> overlap;          // the largest overlap over the contact region, m
   std::vector<double> area;             // area of the contact region, m² (carried: the shear follows it)
   std::vector<double> polar;            // its polar moment about the pressure centroid, m⁴ (likewise)
-  std::vector<double> area_before;      // the area at the step before (scratch of the law)
   std::vector<double> strain_energy;    // ½·kn·∫t² + shear and twist spring energies, J
   std::vector<std::uint8_t> sliding;    // 1 while the joint slips
   // Each pair's faces that can meet before the next detection
