@@ -16,7 +16,8 @@
 //     [0, 1), Δ the record's sample step (its duration over its intervals)
 //     or sample_step for pulses, ramps and constants; every component by the
 //     same shift (one earthquake).
-// Replica 0 is the deck as written. Replica k of seed S draws from its own
+// Replica 0 is the deck as written; the reader drops the [[check]]s of
+// replicas k > 0 (they test the deck as written against its theory). Replica k of seed S draws from its own
 // stream, analytical::RandomStream(mix_seed(S, k)), in the order above
 // (friction, kn, ks, shift, then three numbers per free block in deck
 // order), so it is the same on every machine and does not depend on which

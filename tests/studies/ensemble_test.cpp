@@ -1,6 +1,7 @@
 // Ensembles (studies/ensemble.hpp): the perturbations stay within their
 // bounds and are the same for the same seed and replica, the deck reader
-// applies them (and refuses bad sizes with the key), and the percentiles and
+// applies them (and refuses bad sizes with the key; drops the checks of a
+// perturbed replica), and the percentiles and
 // counts of a summary against a case computed by hand.
 #include "studies/ensemble.hpp"
 
@@ -127,6 +128,10 @@ TEST(Ensemble, TheReaderAppliesTheReplicasDraw) {
   EXPECT_EQ(zero.joint.friction_angle, 30.0);
   EXPECT_EQ(zero.blocks[2].velocity.norm(), 0.0);
   EXPECT_EQ(zero.ground_motion.start_time, 0.1);
+  // A verification deck's checks hold for the deck as written only.
+  const std::string column = std::string(POLYDEM_SOURCE_DIR) + "/examples/verification/column_rocking.toml";
+  EXPECT_FALSE(read_deck(column, {"ensemble.replica=0"}).checks.empty());
+  EXPECT_TRUE(read_deck(column, {"ensemble.replica=1"}).checks.empty());
   // A pulse with the default sample step: a shift below 0.5 × 0.01 s.
   const SceneSpec tip = read_deck(kTipDeck, {"ensemble.replica=1"});
   EXPECT_GT(tip.ground_motion.start_time, 0.0);
