@@ -1,6 +1,7 @@
-// polydem: the command line. Subcommands: run, collapse, sweep, analytic, mesh.
+// polydem: the command line. Subcommands: run, collapse, sweep, ensemble, analytic, mesh.
 #include "apps/analytic_command.hpp"
 #include "apps/collapse_command.hpp"
+#include "apps/ensemble_command.hpp"
 #include "apps/mesh_command.hpp"
 #include "apps/run_command.hpp"
 #include "apps/sweep_command.hpp"
@@ -72,7 +73,25 @@ int main(int argc, char** argv) {
   sweep_cmd->add_option("--jobs", sweep.jobs, "Local worker processes (0: cores / threads)")->capture_default_str();
   sweep_cmd->add_option("--threads", sweep.threads, "OpenMP threads of each run")->capture_default_str();
   sweep_cmd->add_option("--set", sweep.overrides, "Override a deck key for every point (repeatable)");
+  sweep_cmd->add_option("--replicas", sweep.replicas,
+                        "Each point as an ensemble of N replicas (polydem ensemble): DIR/ensembles.csv");
+  sweep_cmd->add_option("--seed", sweep.seed, "Seed of the replicas' perturbations (with --replicas)");
   sweep_cmd->add_flag("--quiet", sweep.quiet, "Only the final table");
+
+  polydem::EnsembleOptions ens;
+  auto* ensemble_cmd = app.add_subcommand(
+      "ensemble", "Run N replicas of a deck with seeded small perturbations (local processes or mpirun): "
+                  "DIR/replicas.csv, ensemble.csv, ensemble.json; --resume continues");
+  ensemble_cmd->add_option("deck", ens.deck_path, "Deck file (TOML)");
+  ensemble_cmd->add_flag("--default", ens.use_default, "Use the built-in default deck");
+  ensemble_cmd->add_option("--replicas", ens.replicas, "Number of replicas N (replica 0 is the deck as written)");
+  ensemble_cmd->add_option("--seed", ens.seed, "Seed of the perturbations (default: the deck's ensemble.seed, 1)");
+  ensemble_cmd->add_option("--out", ens.out_dir, "Output directory (replicas in DIR/points)")->capture_default_str();
+  ensemble_cmd->add_option("--jobs", ens.jobs, "Local worker processes (0: cores / threads)")->capture_default_str();
+  ensemble_cmd->add_option("--threads", ens.threads, "OpenMP threads of each run")->capture_default_str();
+  ensemble_cmd->add_option("--set", ens.overrides, "Override a deck key for every replica (repeatable)");
+  ensemble_cmd->add_flag("--resume", ens.resume, "Continue an ensemble in DIR: replicas finished on disk are kept");
+  ensemble_cmd->add_flag("--quiet", ens.quiet, "Only the final table");
 
   auto* analytic_cmd = app.add_subcommand("analytic", "Analytical models of the paper (polydem analytic --help)");
   analytic_cmd->prefix_command();  // the models and their options: apps/analytic_command.cpp
@@ -101,6 +120,13 @@ int main(int argc, char** argv) {
       return polydem::exit_bad_input;
     }
     return polydem::sweep_command(sweep);
+  }
+  if (ensemble_cmd->parsed()) {
+    if (ens.deck_path.empty() && !ens.use_default) {
+      std::cerr << "polydem ensemble: error: give a deck file or --default\n";
+      return polydem::exit_bad_input;
+    }
+    return polydem::ensemble_command(ens);
   }
   if (collapse_cmd->parsed()) {
     if (col.deck_path.empty() && !col.use_default) {

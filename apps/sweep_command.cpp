@@ -1,8 +1,11 @@
 #include "apps/sweep_command.hpp"
 
+#include "apps/option_number.hpp"
 #include "apps/run_command.hpp"
 #include "apps/sweep_points.hpp"
+#include "studies/ensemble.hpp"
 #include "studies/sweep_search.hpp"
+#include "io/ensemble_tables.hpp"
 #include "io/sweep_tables.hpp"
 #include "io/atomic_file.hpp"
 #include "io/deck.hpp"
@@ -34,14 +37,7 @@ void validate(const SweepSetup& setup, const std::vector<SweepPoint>& points) {
 
 int sweep_command(const SweepOptions& o) {
   const auto wall_start = std::chrono::steady_clock::now();
-  SweepSetup setup;
-  setup.deck_path = o.deck_path;
-  setup.use_default = o.use_default;
-  setup.overrides = o.overrides;
-  setup.out_dir = o.out_dir;
-  setup.threads = std::max(1, o.threads);
-  setup.quiet = o.quiet;
-  setup.executable = o.executable;
+  SweepSetup setup = setup_from(o);
 
   std::vector<SweepAxis> axes;
   SearchAxis search;
@@ -51,6 +47,18 @@ int sweep_command(const SweepOptions& o) {
   try {
     for (const auto& v : o.vary) axes.push_back(parse_axis(v));
     if (searching) search = parse_search_axis(o.search, o.resolution);
+    if (!o.replicas.empty()) {
+      if (searching) throw std::invalid_argument("--replicas runs each point of a grid as an ensemble: not with --search");
+      const long n = static_cast<long>(read_whole_option("replicas", o.replicas, 1, 1000000));
+      SweepAxis replica{kReplicaKey, {}};
+      for (long k = 0; k < n; ++k) replica.values.push_back(static_cast<double>(k));
+      axes.push_back(std::move(replica));
+    }
+    if (!o.seed.empty()) {
+      if (o.replicas.empty()) throw std::invalid_argument("--seed goes with --replicas");
+      setup.overrides.push_back(std::string(kSeedKey) + "=" +
+                                std::to_string(read_whole_option("seed", o.seed, 0, (1LL << 53) - 1)));
+    }
     if (axes.empty() && !searching) throw std::invalid_argument("give at least one --vary KEY=... or a --search");
     std::map<std::string, int> seen;
     for (const auto& a : axes) ++seen[a.key];
@@ -77,17 +85,11 @@ int sweep_command(const SweepOptions& o) {
   }
 
   std::unique_ptr<PointRunner> runner;
-  if (started_by_mpirun()) {
-    runner = mpi_runner(setup);
-    if (!runner) {
-      std::cerr << "polydem sweep: error: started by mpirun, but this polydem was built without MPI "
-                   "(install libopenmpi-dev and rebuild, or run without mpirun and use --jobs)\n";
-      return exit_bad_input;
-    }
-  } else {
-    int jobs = o.jobs;
-    if (jobs <= 0) jobs = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / setup.threads);
-    runner = local_runner(setup, jobs);
+  try {
+    runner = point_runner(setup, o.jobs);
+  } catch (const std::exception& e) {
+    std::cerr << "polydem sweep: error: " << e.what() << "\n";
+    return exit_bad_input;
   }
   if (!runner->leader()) {
     runner->serve();
@@ -159,6 +161,13 @@ int sweep_command(const SweepOptions& o) {
     return exit_bad_input;
   }
   runner->finish();
+  const bool ensembles = !o.replicas.empty();
+  if (ensembles) {
+    std::vector<std::string> outer(keys.begin(), keys.end() - 1);
+    std::vector<std::pair<SweepPoint, PointResult>> results;
+    for (const auto& [id, row] : rows) results.emplace_back(row.point, row.result);
+    write_file_atomic(setup.out_dir + "/ensembles.csv", ensemble_csv(outer, ensemble_points(outer, results)));
+  }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
 
   Json s = Json::object();
@@ -179,6 +188,7 @@ int sweep_command(const SweepOptions& o) {
                         .set("runs_saved_fraction",
                              report.full_grid > 0 ? 1.0 - static_cast<double>(report.runs) / report.full_grid : 0.0));
   }
+  if (ensembles) s.set("replicas", static_cast<std::int64_t>(axes.back().values.size()));
   s.set("runner", runner->describe());
   s.set("points", static_cast<std::int64_t>(rows.size()));
   s.set("ran", ran);
@@ -208,7 +218,7 @@ int sweep_command(const SweepOptions& o) {
                              ran, reused, failed, wall);
   }
   std::cout << "results in " << setup.out_dir << "/sweep.csv" << (searching ? ", boundaries.csv" : "")
-            << " and sweep.h5\n";
+            << (ensembles ? ", ensembles.csv" : "") << " and sweep.h5\n";
   return failed > 0 ? exit_instability : exit_success;
 }
 

@@ -11,7 +11,8 @@
 // each point of the --vary grid is a column along the --search key (see
 // sweep_search.hpp). Finished points are kept in DIR/points and skipped when
 // the same command runs again. Under `mpirun -np N` (polydem built with
-// MPI) the points are spread over the ranks.
+// MPI) the points are spread over the ranks. With --replicas N every point
+// of the grid is an ensemble of N replicas (docs/ensembles.md).
 #pragma once
 
 #include <string>
@@ -29,6 +30,11 @@ struct SweepOptions {
   int jobs = 0;                      // local worker processes (0: cores / threads)
   int threads = 1;                   // OpenMP threads per run
   std::vector<std::string> overrides;
+  // Each point as an ensemble (studies/ensemble.hpp): N replicas, a last
+  // axis ensemble.replica = 0..N-1, and DIR/ensembles.csv with each point's
+  // class counts and percentiles. As typed; empty: none. Not with --search.
+  std::string replicas;
+  std::string seed;  // empty: the deck's ensemble.seed
   bool quiet = false;
   std::string executable;            // polydem binary for local workers (tests); default: this one
 };

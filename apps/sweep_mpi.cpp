@@ -117,6 +117,8 @@ class MpiRunner final : public PointRunner {
         }
       }
     }
+    if (setup_.finished)
+      for (std::size_t i : pending) setup_.finished(batch[i], results[i]);
     return results;
   }
 

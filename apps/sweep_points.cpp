@@ -18,6 +18,7 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 #include <fcntl.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
@@ -158,6 +159,8 @@ class LocalRunner final : public PointRunner {
         results[i] = failed_point(code, last_line(read_file_text(dirs[i] + "/log.txt")));
       else
         results[i].exit_code = code;
+      results[i].directory = dirs[i];
+      if (setup_.finished) setup_.finished(batch[i], results[i]);
     }
     for (std::size_t i = 0; i < batch.size(); ++i) results[i].directory = dirs[i];
     return results;
@@ -209,6 +212,18 @@ class LocalRunner final : public PointRunner {
 
 std::unique_ptr<PointRunner> local_runner(const SweepSetup& setup, int jobs) {
   return std::make_unique<LocalRunner>(setup, jobs);
+}
+
+std::unique_ptr<PointRunner> point_runner(const SweepSetup& setup, int jobs) {
+  if (started_by_mpirun()) {
+    std::unique_ptr<PointRunner> runner = mpi_runner(setup);
+    if (!runner)
+      throw std::runtime_error("started by mpirun, but this polydem was built without MPI "
+                               "(install libopenmpi-dev and rebuild, or run without mpirun and use --jobs)");
+    return runner;
+  }
+  if (jobs <= 0) jobs = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / std::max(1, setup.threads));
+  return local_runner(setup, jobs);
 }
 
 bool started_by_mpirun() {

@@ -14,6 +14,7 @@
 #include "studies/point_result.hpp"
 #include "studies/sweep_grid.hpp"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,10 +29,29 @@ struct SweepSetup {
   int threads = 1;                     // OpenMP threads of each run
   bool quiet = false;
   std::string executable;  // polydem binary for local worker processes (default /proc/self/exe)
+  // Called by the leader as each point of a batch finishes (not for points
+  // finished before), e.g. for a progress line; may be empty.
+  std::function<void(const SweepPoint&, const PointResult&)> finished;
 
   std::vector<std::string> point_overrides(const SweepPoint& p) const;
 };
 
+
+// The setup of a command's runs from its options (SweepOptions,
+// EnsembleOptions: the same names for the deck, its overrides, the output,
+// the threads of each run, quiet and the worker binary).
+template <class Options>
+SweepSetup setup_from(const Options& o) {
+  SweepSetup setup;
+  setup.deck_path = o.deck_path;
+  setup.use_default = o.use_default;
+  setup.overrides = o.overrides;
+  setup.out_dir = o.out_dir;
+  setup.threads = o.threads > 1 ? o.threads : 1;
+  setup.quiet = o.quiet;
+  setup.executable = o.executable;
+  return setup;
+}
 
 // The point's directory: DIR/points/<16 hex digits>. Throws DeckError-like
 // std::runtime_error if the deck with these overrides is not valid.
@@ -84,6 +104,11 @@ std::unique_ptr<PointRunner> local_runner(const SweepSetup& setup, int jobs);
 // file system). Ranks other than 0 return from serve() when the sweep ends.
 std::unique_ptr<PointRunner> mpi_runner(const SweepSetup& setup);
 bool started_by_mpirun();
+
+// The runner a command uses: MPI ranks when started by mpirun, else `jobs`
+// local processes (0: the cores over setup.threads). Throws
+// std::runtime_error when started by mpirun without MPI in this build.
+std::unique_ptr<PointRunner> point_runner(const SweepSetup& setup, int jobs);
 
 // Runs one point in this process (MPI ranks) and returns its result.
 PointResult run_point_here(const SweepSetup& setup, const SweepPoint& point, const std::string& dir);

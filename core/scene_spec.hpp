@@ -9,6 +9,7 @@
 #include "geometry/polyhedron.hpp"
 #include "core/units.hpp"
 
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -263,6 +264,31 @@ struct CheckSpec {
   int deck_line = 0;
 };
 
+// [ensemble] : replica `replica` of an ensemble (studies/ensemble.hpp): the
+// deck with seeded perturbations that leave it "the same structure". The
+// sizes are half-widths of uniform draws; replica 0 is the deck as written.
+// The reader draws and applies the perturbation of replica > 0 and keeps
+// what it drew in `drawn`.
+struct EnsembleDraw {
+  double friction_angle_shift = 0;    // degrees, added to every joint law's friction angle
+  double normal_stiffness_factor = 1; // times every joint law's normal stiffness
+  double shear_stiffness_factor = 1;  // times every joint law's shear stiffness
+  double time_shift = 0;              // s, added to the ground motion's start times
+  double largest_initial_speed = 0;   // m/s, the largest initial velocity added to a free block
+};
+struct EnsembleSpec {
+  bool given = false;              // the deck (or an override) has the section
+  long replica = 0;                // 0: no perturbation
+  std::uint64_t seed = 1;
+  double friction_angle = 0.5;     // degrees
+  double stiffness = 0.05;         // fraction of kn and of ks
+  double velocity = 5e-5;          // m/s, largest initial speed of a free block
+  double time_shift = 0.5;         // fraction of the motion's sample step
+  double sample_step = 0.01;       // s, the sample step of a pulse, ramp or constant motion
+  EnsembleDraw drawn;
+  int deck_line = 0;
+};
+
 // What the deck's generator sections were given (structures/generator_specs.hpp),
 // kept for the analyses that rebuild a structure's block model from it (the
 // refined lambda and the DEM frequency of the spire). core knows no
@@ -286,6 +312,7 @@ struct SceneSpec {
   AssessmentSpec assessment;
   std::vector<CheckSpec> checks;
   EquilibriumSpec equilibrium;
+  EnsembleSpec ensemble;
   // Warnings the deck reader found (a deck that is valid but probably not
   // what was meant), each "FILE:LINE: key 'KEY': what" like the errors.
   std::vector<std::string> warnings;

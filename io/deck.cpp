@@ -16,6 +16,7 @@
 #include "core/loads.hpp"
 #include "core/materials.hpp"
 #include "core/units.hpp"
+#include "studies/ensemble.hpp"
 
 #include <toml++/toml.h>
 
@@ -70,6 +71,8 @@ constexpr std::string_view kAssessmentKeys[] = {"damage_displacement", "collapse
                                                 "monitor_block", "collapse_mass_fraction", "monitor_group"};
 constexpr std::string_view kCheckKeys[] = {"kind", "block", "expected", "tolerance"};
 constexpr std::string_view kEquilibriumKeys[] = {"enabled", "ratio", "max_steps", "local_damping", "density_scaling"};
+constexpr std::string_view kEnsembleKeys[] = {"replica",  "seed",       "friction_angle", "stiffness",
+                                              "velocity", "time_shift", "sample_step"};
 
 struct SectionSchema {
   std::string_view name;
@@ -82,7 +85,7 @@ constexpr SectionSchema kSections[] = {
     {"output", false, kOutputKeys},         {"check", true, kCheckKeys},
     {"assessment", false, kAssessmentKeys}, {"equilibrium", false, kEquilibriumKeys},
     {"group", true, kGroupKeys},            {"load", true, kLoadKeys},
-    {"prescribe", true, kPrescribeKeys},
+    {"prescribe", true, kPrescribeKeys},    {"ensemble", false, kEnsembleKeys},
 };
 
 // Keys that define a block's shape, by shape.
@@ -735,6 +738,42 @@ EquilibriumSpec read_equilibrium(const Deck& deck, const SimulationSpec& sim) {
   return e;
 }
 
+// [ensemble]: the sizes of the perturbations and which replica this run is
+// (studies/ensemble.hpp). Replica k > 0 is drawn and applied here, so that
+// every command and the Python module run the same replica of a deck.
+EnsembleSpec read_ensemble(const Deck& deck, const SceneSpec& scene) {
+  EnsembleSpec e;
+  if (!deck.root().get("ensemble")) return e;
+  const TableReader r(deck, table_or_empty(deck, "ensemble"), "ensemble", kEnsembleKeys);
+  e.given = true;
+  e.deck_line = r.line();
+  if (const auto k = r.integer("replica")) {
+    if (*k < 0 || *k > 1000000000) r.fail("replica", "must be in [0, 1e9] (got " + std::to_string(*k) + ")");
+    e.replica = static_cast<long>(*k);
+  }
+  if (const auto k = r.integer("seed")) {
+    if (*k < 0) r.fail("seed", "must be >= 0 (got " + std::to_string(*k) + ")");
+    e.seed = static_cast<std::uint64_t>(*k);
+  }
+  const auto within = [&](std::string_view key, double value, double low, double high, const char* unit) {
+    const double v = r.number(key, value, Range::non_negative);
+    if (v < low || v > high)
+      r.fail(key, "must be in [" + format_number(low) + ", " + format_number(high) + "]" + unit + " (got " +
+                      format_number(v) + ")");
+    return v;
+  };
+  e.friction_angle = within("friction_angle", e.friction_angle, 0.0, 5.0, " degrees");
+  e.stiffness = within("stiffness", e.stiffness, 0.0, 0.5, "");
+  e.velocity = r.number("velocity", e.velocity, Range::non_negative);
+  const double settle = scene.simulation.settle_velocity;
+  if (settle > 0 && e.velocity >= settle)
+    r.fail("velocity", "must be below simulation.settle_velocity (" + format_number(settle) + " m/s) (got " +
+                           format_number(e.velocity) + ")");
+  e.time_shift = within("time_shift", e.time_shift, 0.0, 1.0, "");
+  e.sample_step = r.number("sample_step", e.sample_step, Range::positive);
+  return e;
+}
+
 // "FILE:LINE: key 'KEY': what", the form of the errors (built by appends:
 // GCC 12 warns falsely on long chains of string +).
 std::string deck_warning(const Deck& deck, const std::string& key, const toml::node* at, const std::string& what) {
@@ -947,6 +986,13 @@ SceneSpec parse_deck(const std::string& text, const std::string& path_for_messag
   scene.assessment = read_assessment(deck, scene.blocks);
   scene.checks = read_checks(deck, scene.blocks);
   scene.equilibrium = read_equilibrium(deck, scene.simulation);
+  scene.ensemble = read_ensemble(deck, scene);
+  if (scene.ensemble.replica > 0) {
+    apply_perturbation(scene, draw_perturbation(scene, scene.ensemble.replica, scene.ensemble.seed));
+    // The checks hold the deck as written against its theory (a pulse from
+    // t = 0, the friction as given): a perturbed replica is not checked.
+    scene.checks.clear();
+  }
   scene.warnings = deck_warnings(deck, scene);
   return scene;
 }

@@ -11,6 +11,7 @@
 #endif
 
 #include <algorithm>
+#include <limits>
 
 namespace polydem {
 
@@ -124,6 +125,19 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
     e.set("max_displacement_m", r.equilibrium.max_displacement);
     e.set("max_displacement_block", r.equilibrium.max_displacement_block);
     s.set("equilibrium", std::move(e));
+  }
+  if (spec.ensemble.given) {
+    // The replica of an ensemble this run is, and what it drew (docs/ensembles.md).
+    const EnsembleSpec& en = spec.ensemble;
+    Json e = Json::object();
+    e.set("replica", static_cast<std::int64_t>(en.replica));
+    e.set("seed", static_cast<std::int64_t>(en.seed));
+    e.set("friction_angle_shift_deg", en.drawn.friction_angle_shift);
+    e.set("normal_stiffness_factor", en.drawn.normal_stiffness_factor);
+    e.set("shear_stiffness_factor", en.drawn.shear_stiffness_factor);
+    e.set("time_shift_s", en.drawn.time_shift);
+    e.set("largest_initial_speed_m_s", en.drawn.largest_initial_speed);
+    s.set("ensemble", std::move(e));
   }
   const Assessment& a = r.assessment;
   Json as = Json::object();
@@ -242,6 +256,7 @@ void write_summary(const std::string& dir, const SceneSpec& spec, const RunRepor
 }
 
 PointResult point_result_from_summary(const std::string& text, const std::string& what) {
+  constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
   const Json s = Json::parse(text, what);
   PointResult r;
   r.status = string_or(s.find("status"), "");
@@ -258,6 +273,13 @@ PointResult point_result_from_summary(const std::string& text, const std::string
     r.residual_displacement = number_or(a->find("max_residual_displacement_m"), 0);
     r.collapse_time = number_or(a->find("collapse_time_s"), -1);
     if (const Json* d = a->find("dislodged")) r.dislodged = static_cast<int>(number_or(d->find("count"), 0));
+    r.ground_acceleration_at_damage_g = number_or(a->find("ground_acceleration_at_damage_g"), kNone);
+  }
+  if (const Json* w = s.find("walking")) {
+    r.max_bed_opening = number_or(w->find("max_bed_opening_m"), kNone);
+    r.max_vertical_opening = number_or(w->find("max_vertical_opening_m"), kNone);
+    r.residual_bed_opening = number_or(w->find("residual_bed_opening_m"), kNone);
+    r.residual_vertical_opening = number_or(w->find("residual_vertical_opening_m"), kNone);
   }
   r.wall_seconds = number_or(s.find("wall_seconds"), 0);
   r.steps = static_cast<long>(number_or(s.find("steps"), 0));

@@ -17,18 +17,19 @@
 namespace polydem {
 namespace {
 
-// CSV number: shortest round trip, empty for "none" (NaN).
-std::string cell(double x) { return std::isfinite(x) ? value_text(x) : std::string(); }
+std::string cell(double x) { return csv_number(x); }
+
+constexpr const char* kDeckUnit = "as the deck key (docs/deck.md)";
+
+}  // namespace
+
+std::string csv_number(double x) { return std::isfinite(x) ? value_text(x) : std::string(); }
 
 double value_of(const SweepPoint& p, const std::string& key) {
   for (const auto& [k, v] : p.values)
     if (k == key) return v;
   return std::numeric_limits<double>::quiet_NaN();
 }
-
-constexpr const char* kDeckUnit = "as the deck key (docs/deck.md)";
-
-}  // namespace
 
 std::string transitions_text(const std::vector<Transition>& transitions) {
   std::string out;

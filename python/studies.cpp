@@ -7,13 +7,16 @@
 // scene with the point's overrides, as `polydem sweep` runs `polydem run
 // --set ...`, and what a study keeps of a run (PointResult) is read from the
 // run's summary the way polydem sweep reads summary.json (io/summary.hpp).
-// The Python half (polydem/studies.py) makes numpy structured arrays.
+// The Python half (polydem/studies.py) makes numpy structured arrays. An
+// ensemble is the sweep of its replicas (ensemble.replica = 0..N-1),
+// summarised by studies/ensemble.hpp as `polydem ensemble` does.
 #include "python/bindings.hpp"
 
 #include "io/collapse_results.hpp"
 #include "io/deck.hpp"
 #include "io/summary.hpp"
 #include "studies/collapse_search.hpp"
+#include "studies/ensemble.hpp"
 #include "studies/sweep_search.hpp"
 
 #include <pybind11/stl.h>
@@ -145,6 +148,73 @@ void bind_studies(py::module_& m) {
       .def_readwrite("hold_time", &CollapseSearchOptions::hold_time)
       .def_readwrite("ramp_rate_g", &CollapseSearchOptions::ramp_rate_g)
       .def_readwrite("threads", &CollapseSearchOptions::threads);
+
+  m.def(
+      "ensemble",
+      [](const Scene& scene, long replicas, int threads, py::object progress) {
+        std::vector<std::string> unperturbed = scene.overrides;
+        unperturbed.push_back(std::string(kReplicaKey) + "=0");
+        const SceneSpec base = parse_deck(scene.spec.deck_text, scene.name, unperturbed);
+        const std::uint64_t seed = base.ensemble.seed;
+        std::vector<SweepPoint> points;
+        for (long k = 0; k < replicas; ++k) points.push_back(SweepPoint{{{kReplicaKey, static_cast<double>(k)}}});
+        for (const SweepPoint& p : points) {  // every replica's deck is valid before anything runs
+          std::vector<std::string> overrides = scene.overrides;
+          for (const std::string& o : p.overrides()) overrides.push_back(o);
+          (void)parse_deck(scene.spec.deck_text, scene.name, overrides);
+        }
+        py::list rows;
+        std::vector<PointResult> results;
+        {
+          py::gil_scoped_release nogil;
+          for (long k = 0; k < replicas; ++k) {
+            results.push_back(run_point(scene, points[static_cast<std::size_t>(k)], threads));
+            const EnsembleDraw drawn = draw_perturbation(base, k, seed).drawn;
+            py::gil_scoped_acquire gil;
+            const PointResult& r = results.back();
+            py::dict d;
+            d["replica"] = k;
+            d["seed"] = seed;
+            d["friction_angle_shift_deg"] = drawn.friction_angle_shift;
+            d["normal_stiffness_factor"] = drawn.normal_stiffness_factor;
+            d["shear_stiffness_factor"] = drawn.shear_stiffness_factor;
+            d["time_shift_s"] = drawn.time_shift;
+            d["largest_initial_speed_m_s"] = drawn.largest_initial_speed;
+            d["status"] = r.status;
+            d["collapse_mode"] = r.collapse_mode;
+            for (const EnsembleQuantity& q : ensemble_quantities()) d[q.name] = q.of(r);
+            d["dislodged_blocks"] = r.dislodged;
+            d["steps"] = r.steps;
+            d["wall_seconds"] = r.wall_seconds;
+            d["exit_code"] = r.exit_code;
+            d["message"] = r.message;
+            rows.append(d);
+            if (!progress.is_none()) progress(d);
+          }
+        }
+        const EnsembleOutcome o = summarise_ensemble(results);
+        py::dict counts, modes, distributions;
+        for (const auto& [status, n] : o.status_counts) counts[py::str(status)] = n;
+        modes["I"] = o.mode_I;
+        modes["II"] = o.mode_II;
+        const auto quantities = ensemble_quantities();
+        for (std::size_t i = 0; i < quantities.size(); ++i) {
+          py::dict q;
+          q["n"] = o.quantities[i].n;
+          q["p16"] = o.quantities[i].p16;
+          q["median"] = o.quantities[i].median;
+          q["p84"] = o.quantities[i].p84;
+          distributions[quantities[i].name] = q;
+        }
+        py::dict summary;
+        summary["replicas"] = o.replicas;
+        summary["seed"] = seed;
+        summary["status_counts"] = counts;
+        summary["collapse_modes"] = modes;
+        summary["distributions"] = distributions;
+        return py::make_tuple(rows, summary);
+      },
+      py::arg("scene"), py::arg("replicas"), py::arg("threads"), py::arg("progress"));
 
   m.def(
       "sweep",

@@ -4,6 +4,7 @@
 // apart with it.
 #pragma once
 
+#include <limits>
 #include <string>
 
 namespace polydem {
@@ -17,6 +18,15 @@ struct PointResult {
   double residual_displacement = 0;  // m, largest at the end
   double collapse_time = -1;         // s, -1 when not collapsed
   int dislodged = 0;                 // stones moved beyond collapse_displacement (assessment.dislodged.count)
+  // Read for ensembles (studies/ensemble.hpp); NaN when the summary has none:
+  // a_g at the first damage (the mechanism's acceleration under a ramp), in g,
+  // and with output.walking the largest and the residual bed and vertical
+  // joint openings, m.
+  double ground_acceleration_at_damage_g = std::numeric_limits<double>::quiet_NaN();
+  double max_bed_opening = std::numeric_limits<double>::quiet_NaN();
+  double max_vertical_opening = std::numeric_limits<double>::quiet_NaN();
+  double residual_bed_opening = std::numeric_limits<double>::quiet_NaN();
+  double residual_vertical_opening = std::numeric_limits<double>::quiet_NaN();
   double wall_seconds = 0;           // of the run itself
   long steps = 0;
   int exit_code = 0;     // of `polydem run` (0 ok, 1 check failed, 2 bad input, 3 unstable)

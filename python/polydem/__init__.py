@@ -13,10 +13,11 @@ from . import _polydem, analytical
 from .errors import DeckError, GeometryError, InstabilityError, PolydemError, SceneError
 from .run import Progress, Run, run
 from .scene import Scene
-from .studies import CollapseResult, SweepResult, collapse_search, sweep
+from .studies import CollapseResult, EnsembleResult, SweepResult, collapse_search, ensemble, sweep
 
 __version__ = _polydem.version
 deck_keys = _polydem.deck_keys
 
-__all__ = ["analytical", "Scene", "Run", "run", "collapse_search", "sweep", "CollapseResult", "SweepResult", "Progress",
+__all__ = ["analytical", "Scene", "Run", "run", "collapse_search", "sweep", "ensemble", "CollapseResult", "SweepResult",
+           "EnsembleResult", "Progress",
            "PolydemError", "DeckError", "SceneError", "GeometryError", "InstabilityError", "deck_keys"]

@@ -124,3 +124,45 @@ def sweep(scene, vary=None, search=None, resolution=None, threads=1, progress=No
     cols = structured(columns, [k for k, _ in axes] + ["damage_threshold", "stones_lost_threshold", "collapse_threshold", "collapse_mode",
                                                      "runs", "wall_seconds"]) if columns else structured([])
     return SweepResult(structured(rows, fields) if rows else structured([]), cols)
+
+
+class EnsembleResult:
+    """replicas: one row per replica (replica, seed, what was drawn:
+    friction_angle_shift_deg, normal_stiffness_factor,
+    shear_stiffness_factor, time_shift_s, largest_initial_speed_m_s; the
+    outcome: status, collapse_mode, ground_acceleration_at_damage_g,
+    peak_tip_displacement_m, residual_displacement_m and the walking
+    openings (NaN: not measured), dislodged_blocks, steps, wall_seconds,
+    exit_code, message); summary: a dict with replicas, seed, status_counts
+    {status: n}, collapse_modes {"I": n, "II": n} and distributions {outcome:
+    {"n", "p16", "median", "p84"}}, as ensemble.json's "outcome"
+    (docs/ensembles.md)."""
+
+    def __init__(self, replicas, summary):
+        self.replicas, self.summary = replicas, summary
+
+    def __repr__(self):
+        counts = ", ".join(f"{k} {v}" for k, v in self.summary["status_counts"].items())
+        return f"<polydem.EnsembleResult {len(self.replicas)} replicas: {counts}>"
+
+
+def ensemble(scene, replicas, seed=None, threads=1, progress=None, set=None):
+    """Runs `replicas` replicas of the scene with seeded perturbations, as
+    `polydem ensemble` (docs/ensembles.md): replica 0 is the scene as given,
+    replica k > 0 the scene with [ensemble] replica = k; seed: the
+    perturbations' seed (None: the scene's ensemble.seed, 1). The replicas
+    run one after the other in this process. Returns an EnsembleResult."""
+    scene = as_scene(scene)
+    if set:
+        scene = scene.with_set(set)
+    if seed is not None:
+        if int(seed) != seed or seed < 0:
+            raise ValueError(f"seed must be an integer >= 0 (got {seed!r})")
+        scene = scene.with_set({"ensemble.seed": int(seed)})
+    if int(replicas) != replicas or not 1 <= replicas <= 1000000:
+        raise ValueError(f"replicas must be an integer in [1, 1000000] (got {replicas!r})")
+    report = _printer(progress, lambda r: (
+        f"  replica {r['replica']}: {r['status']}{' (Mode ' + r['collapse_mode'] + ')' if r['collapse_mode'] else ''}"
+        f"  ({r['wall_seconds']:.1f} s)"))
+    rows, summary = _polydem.ensemble(scene.parsed(), int(replicas), int(threads), report)
+    return EnsembleResult(structured(rows), summary)

@@ -7,6 +7,7 @@
 #include "io/hdf5_results.hpp"
 #include "io/json.hpp"
 
+#include "tests/apps/binary.hpp"
 #include "tests/test_util.hpp"
 
 #include <gtest/gtest.h>
@@ -24,40 +25,12 @@ namespace polydem {
 namespace {
 
 namespace fs = std::filesystem;
+using test::exit_code;
 using test::read_text;
+using test::run_binary;
+using test::start_binary;
 
 const std::string kTipDeck = std::string(POLYDEM_SOURCE_DIR) + "/examples/spire/tip_pulse.toml";
-
-// Forks the binary with `args`, stdout/stderr to `log`; returns the pid.
-pid_t start_binary(const std::vector<std::string>& args, const fs::path& log, const char* program = POLYDEM_BINARY) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    FILE* f = std::fopen(log.c_str(), "w");
-    if (f) {
-      dup2(fileno(f), STDOUT_FILENO);
-      dup2(fileno(f), STDERR_FILENO);
-    }
-    std::vector<std::string> copy = args;
-    std::vector<char*> argv;
-    std::string name = program;
-    argv.push_back(name.data());
-    for (auto& a : copy) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    execv(program, argv.data());
-    _exit(127);
-  }
-  return pid;
-}
-
-int exit_code(pid_t pid) {
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-int run_binary(const std::vector<std::string>& args, const fs::path& log) {
-  return exit_code(start_binary(args, log));
-}
 
 // A CSV without its run_wall_seconds column (the only one that depends on
 // the machine rather than on the runs).

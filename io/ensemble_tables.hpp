@@ -1,0 +1,51 @@
+// The tables of an ensemble (layout in docs/ensembles.md):
+//   DIR/replicas.csv   one row per replica: its number and seed, what was
+//                      drawn, the outcome (status, mode, the measured figures)
+//   DIR/ensemble.csv   the distributions: the count of each status and
+//                      collapse mode, and the 16th, 50th and 84th percentiles
+//                      of each outcome (one row; `polydem sweep --replicas`
+//                      writes one row per point of its grid, ensembles.csv)
+// Neither holds a run time, so the same seed gives the same files bit for
+// bit on any number of workers; both are written atomically.
+#pragma once
+
+#include "io/json.hpp"
+#include "studies/ensemble.hpp"
+#include "studies/point_result.hpp"
+#include "studies/sweep_grid.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace polydem {
+
+struct ReplicaRow {
+  long replica = 0;
+  std::uint64_t seed = 0;
+  EnsembleDraw drawn;
+  PointResult result;
+  std::string id;  // the replica's directory name under DIR/points
+};
+
+std::string replicas_csv(const std::vector<ReplicaRow>& rows);
+
+// One row of distributions per point: the point's values of `keys` (none
+// for a lone ensemble) and the summary of its replicas.
+struct EnsemblePoint {
+  SweepPoint point;
+  EnsembleOutcome outcome;
+};
+std::string ensemble_csv(const std::vector<std::string>& keys, const std::vector<EnsemblePoint>& points);
+
+// The outcome as JSON: replicas, status_counts, collapse_modes and, per
+// quantity, {n, p16, median, p84} (null where no replica measured it).
+Json outcome_json(const EnsembleOutcome& outcome);
+
+// Groups the rows of a sweep with an ensemble.replica axis by their values
+// of `keys` (the other axes; groups in increasing order of them, the first
+// key slowest) and summarises each group.
+std::vector<EnsemblePoint> ensemble_points(const std::vector<std::string>& keys,
+                                           const std::vector<std::pair<SweepPoint, PointResult>>& rows);
+
+}  // namespace polydem

@@ -1,0 +1,193 @@
+// `polydem ensemble` and `polydem sweep --replicas` end to end through the
+// built binary, on the spire's solid tip alone (examples/spire/tip_pulse.toml,
+// one block, runs of about 0.05 s): the same seed gives the same tables bit
+// for bit on one and two workers, a resumed ensemble with one replica's
+// result deleted runs that one alone and gives the same summary, bad input is
+// refused with nothing written, each point of a sweep as an ensemble, and
+// the same ensemble under mpirun.
+#include "io/json.hpp"
+
+#include "tests/apps/binary.hpp"
+#include "tests/test_util.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+namespace polydem {
+namespace {
+
+namespace fs = std::filesystem;
+using test::exit_code;
+using test::read_text;
+using test::run_binary;
+using test::start_binary;
+
+const std::string kTipDeck = std::string(POLYDEM_SOURCE_DIR) + "/examples/spire/tip_pulse.toml";
+
+class EnsembleCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("polydem_ensemble_" + std::to_string(getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // Six replicas at 0.6 g (just past uplift: the tip rocks and stays, damaged).
+  std::vector<std::string> args(const fs::path& out, const std::string& jobs) const {
+    return {"ensemble", kTipDeck, "--replicas", "6", "--seed", "5", "--jobs", jobs, "--threads", "1",
+            "--set",    "simulation.end_time=1.2", "--out", out.string()};
+  }
+
+  fs::path dir_;
+};
+
+// Cell `column` of every data row of a CSV.
+std::vector<std::string> column(const std::string& csv, const std::string& name) {
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> header;
+  std::stringstream hs(line);
+  for (std::string c; std::getline(hs, c, ',');) header.push_back(c);
+  const auto at = std::find(header.begin(), header.end(), name) - header.begin();
+  std::vector<std::string> out;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::stringstream ls(line);
+    for (std::string c; std::getline(ls, c, ',');) cells.push_back(c);
+    cells.resize(header.size());
+    out.push_back(cells[static_cast<std::size_t>(at)]);
+  }
+  return out;
+}
+
+TEST_F(EnsembleCommand, SameSeedSameTablesOnOneAndTwoWorkersAndAResumeThatRunsOnlyWhatIsMissing) {
+  const fs::path one = dir_ / "one", two = dir_ / "two";
+  ASSERT_EQ(run_binary(args(one, "1"), dir_ / "one.txt"), 0) << read_text(dir_ / "one.txt");
+  ASSERT_EQ(run_binary(args(two, "2"), dir_ / "two.txt"), 0) << read_text(dir_ / "two.txt");
+  const std::string replicas = read_text(one / "replicas.csv"), summary = read_text(one / "ensemble.csv");
+  EXPECT_EQ(read_text(two / "replicas.csv"), replicas);
+  EXPECT_EQ(read_text(two / "ensemble.csv"), summary);
+  // Replica 0 is the deck as written; the others drew within their bounds.
+  const auto friction = column(replicas, "friction_angle_shift_deg");
+  const auto kn = column(replicas, "normal_stiffness_factor");
+  const auto shift = column(replicas, "time_shift_s");
+  ASSERT_EQ(friction.size(), 6u) << replicas;
+  EXPECT_EQ(friction[0], "0");
+  EXPECT_EQ(kn[0], "1");
+  for (std::size_t k = 1; k < 6; ++k) {
+    EXPECT_LE(std::abs(std::stod(friction[k])), 0.5);
+    EXPECT_LE(std::abs(std::stod(kn[k]) - 1), 0.05);
+    EXPECT_GE(std::stod(shift[k]), 0.0);
+    EXPECT_LT(std::stod(shift[k]), 0.005);  // half the 0.01 s sample step of a pulse
+  }
+  for (const auto& status : column(replicas, "status")) EXPECT_EQ(status, "damaged") << replicas;
+  EXPECT_EQ(column(summary, "n_damaged"), std::vector<std::string>{"6"}) << summary;
+  // The peak of the tip: the summary's median is the middle of the replicas' peaks.
+  std::vector<double> peaks;
+  for (const auto& p : column(replicas, "peak_tip_displacement_m")) peaks.push_back(std::stod(p));
+  std::sort(peaks.begin(), peaks.end());
+  EXPECT_NEAR(std::stod(column(summary, "peak_tip_displacement_m_median")[0]), 0.5 * (peaks[2] + peaks[3]), 1e-15);
+  EXPECT_NE(read_text(dir_ / "one.txt").find("replica 5: damaged"), std::string::npos) << read_text(dir_ / "one.txt");
+
+  // The same command on the same directory without --resume: refused.
+  ASSERT_EQ(run_binary(args(one, "2"), dir_ / "again.txt"), 2);
+  EXPECT_NE(read_text(dir_ / "again.txt").find("--resume"), std::string::npos) << read_text(dir_ / "again.txt");
+
+  // One replica's result deleted: --resume runs that one alone.
+  const std::string lost = column(replicas, "point")[3];
+  fs::remove(one / "points" / lost / "summary.json");
+  auto resume = args(one, "2");
+  resume.push_back("--resume");
+  ASSERT_EQ(run_binary(resume, dir_ / "resume.txt"), 0) << read_text(dir_ / "resume.txt");
+  EXPECT_EQ(read_text(one / "replicas.csv"), replicas);
+  EXPECT_EQ(read_text(one / "ensemble.csv"), summary);
+  const Json j = Json::parse(read_text(one / "ensemble.json"));
+  EXPECT_EQ(j.find("ran")->as_integer(), 1);
+  EXPECT_EQ(j.find("finished_before")->as_integer(), 5);
+  EXPECT_EQ(j.find("outcome")->find("status_counts")->find("damaged")->as_integer(), 6);
+
+  // Another seed: other draws.
+  auto other = args(dir_ / "other", "2");
+  other[5] = "6";
+  ASSERT_EQ(run_binary(other, dir_ / "other.txt"), 0) << read_text(dir_ / "other.txt");
+  EXPECT_NE(column(read_text(dir_ / "other" / "replicas.csv"), "friction_angle_shift_deg")[1], friction[1]);
+}
+
+TEST_F(EnsembleCommand, BadInputIsRefusedAndNothingIsWritten) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {{"--replicas", "0"}, "--replicas"},
+      {{"--replicas", "2.5"}, "--replicas"},
+      {{"--replicas", "3", "--seed", "-1"}, "--seed"},
+      {{"--replicas", "3", "--set", "ensemble.stiffness=0.7"}, "tip_pulse.toml: --set key 'ensemble.stiffness'"},
+      {{"--replicas", "3", "--set", "ensemble.friction_angle=-0.5"}, "key 'ensemble.friction_angle'"},
+      {{}, "--replicas"},
+  };
+  for (const auto& [extra, message] : cases) {
+    const fs::path out = dir_ / "bad";
+    std::vector<std::string> a{"ensemble", kTipDeck, "--out", out.string()};
+    a.insert(a.end(), extra.begin(), extra.end());
+    EXPECT_EQ(run_binary(a, dir_ / "log.txt"), 2) << message;
+    const std::string log = read_text(dir_ / "log.txt");
+    EXPECT_NE(log.find(message), std::string::npos) << log;
+    EXPECT_FALSE(fs::exists(out)) << log;
+  }
+  // A sweep's points as ensembles do not go with a boundary search.
+  EXPECT_EQ(run_binary({"sweep", kTipDeck, "--out", (dir_ / "s").string(), "--replicas", "3", "--search",
+                        "ground_motion.acceleration_g=0.3:2.1:7", "--resolution", "0.02"},
+                       dir_ / "log.txt"),
+            2);
+  EXPECT_NE(read_text(dir_ / "log.txt").find("--search"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir_ / "s"));
+}
+
+TEST_F(EnsembleCommand, ASweepWithReplicasSummarisesEachPoint) {
+  const fs::path out = dir_ / "sweep";
+  ASSERT_EQ(run_binary({"sweep", kTipDeck, "--out", out.string(), "--jobs", "2", "--threads", "1", "--quiet",
+                        "--vary", "ground_motion.acceleration_g=0.4,0.6", "--replicas", "3", "--seed", "5", "--set",
+                        "simulation.end_time=1.2"},
+                       dir_ / "log.txt"),
+            0)
+      << read_text(dir_ / "log.txt");
+  const std::string csv = read_text(out / "ensembles.csv");
+  EXPECT_EQ(column(csv, "ground_motion.acceleration_g"), (std::vector<std::string>{"0.4", "0.6"})) << csv;
+  EXPECT_EQ(column(csv, "replicas"), (std::vector<std::string>{"3", "3"})) << csv;
+  // 0.4 g is below uplift (tan α = 0.506 g): intact; 0.6 g rocks the tip.
+  EXPECT_EQ(column(csv, "n_intact"), (std::vector<std::string>{"3", "0"})) << csv;
+  EXPECT_EQ(column(csv, "n_damaged"), (std::vector<std::string>{"0", "3"})) << csv;
+  // The 0.6 g point's replicas are those of `polydem ensemble` at 0.6 g.
+  const fs::path lone = dir_ / "lone";
+  ASSERT_EQ(run_binary({"ensemble", kTipDeck, "--replicas", "3", "--seed", "5", "--jobs", "2", "--threads", "1",
+                        "--set", "simulation.end_time=1.2", "--set", "ground_motion.acceleration_g=0.6", "--out",
+                        lone.string()},
+                       dir_ / "lone.txt"),
+            0)
+      << read_text(dir_ / "lone.txt");
+  EXPECT_EQ(column(csv, "peak_tip_displacement_m_p84")[1],
+            column(read_text(lone / "ensemble.csv"), "peak_tip_displacement_m_p84")[0]);
+}
+
+#ifdef POLYDEM_MPIEXEC
+TEST_F(EnsembleCommand, UnderMpirunTheRanksShareTheReplicas) {
+  const fs::path local = dir_ / "local", mpi = dir_ / "mpi";
+  ASSERT_EQ(run_binary(args(local, "2"), dir_ / "local.txt"), 0) << read_text(dir_ / "local.txt");
+  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  const char* asan = std::getenv("ASAN_OPTIONS");  // as the sweep's MPI test: no leak check in the ranks
+  setenv("ASAN_OPTIONS", (std::string(asan ? asan : "") + (asan && *asan ? ":" : "") + "detect_leaks=0").c_str(), 1);
+  std::vector<std::string> a{"-np", "2", "--oversubscribe", POLYDEM_BINARY};
+  const auto ensemble = args(mpi, "2");
+  a.insert(a.end(), ensemble.begin(), ensemble.end());
+  ASSERT_EQ(exit_code(start_binary(a, dir_ / "mpi.txt", POLYDEM_MPIEXEC)), 0) << read_text(dir_ / "mpi.txt");
+  EXPECT_EQ(read_text(mpi / "replicas.csv"), read_text(local / "replicas.csv"));
+  EXPECT_EQ(read_text(mpi / "ensemble.csv"), read_text(local / "ensemble.csv"));
+  EXPECT_EQ(Json::parse(read_text(mpi / "ensemble.json")).find("runner")->as_string(), "2 MPI ranks of 1 thread");
+}
+#endif
+
+}  // namespace
+}  // namespace polydem
