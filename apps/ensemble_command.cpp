@@ -22,13 +22,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// True when DIR already holds an ensemble's (or a sweep's) results.
-bool has_results(const std::string& dir) {
-  if (fs::exists(fs::path(dir) / "replicas.csv")) return true;
-  const fs::path points = fs::path(dir) / "points";
-  return fs::is_directory(points) && !fs::is_empty(points);
-}
-
 std::string figure(double x) { return std::isfinite(x) ? fmt::format("{:.6g}", x) : std::string("-"); }
 
 }  // namespace
@@ -57,7 +50,7 @@ int ensemble_command(const EnsembleOptions& o) {
     seed = base.ensemble.seed;
     for (long k = 0; k < replicas; ++k) points.push_back(SweepPoint{{{kReplicaKey, static_cast<double>(k)}}});
     for (const SweepPoint& p : points) (void)point_directory(setup, p);  // every replica's deck is valid
-    if (!o.resume && has_results(o.out_dir))
+    if (!o.resume && has_study_results(o.out_dir, "replicas.csv"))
       throw std::invalid_argument(o.out_dir + " holds the results of an earlier ensemble or sweep: give --resume "
                                               "to continue it, or another --out");
   } catch (const std::exception& e) {

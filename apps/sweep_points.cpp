@@ -82,6 +82,12 @@ std::string point_directory(const SweepSetup& setup, const SweepPoint& point) {
 
 
 
+bool has_study_results(const std::string& dir, const std::string& table) {
+  if (fs::exists(fs::path(dir) / table)) return true;
+  const fs::path points = fs::path(dir) / "points";
+  return fs::is_directory(points) && !fs::is_empty(points);
+}
+
 bool point_finished(const std::string& dir) { return !read_point_result(dir).status.empty(); }
 
 void prepare_point_directory(const std::string& dir, const SweepPoint& point, const SweepSetup& setup) {

@@ -53,6 +53,10 @@ SweepSetup setup_from(const Options& o) {
   return setup;
 }
 
+// True when DIR already holds a study's results: its `table` (e.g.
+// "replicas.csv") or finished points in DIR/points.
+bool has_study_results(const std::string& dir, const std::string& table);
+
 // The point's directory: DIR/points/<16 hex digits>. Throws DeckError-like
 // std::runtime_error if the deck with these overrides is not valid.
 std::string point_directory(const SweepSetup& setup, const SweepPoint& point);
