@@ -67,17 +67,9 @@ int ensemble_command(const EnsembleOptions& o) {
                                r.collapse_mode.empty() ? "" : " (Mode " + r.collapse_mode + ")", r.wall_seconds, done,
                                replicas, r.message.empty() ? "" : "  " + r.message);
     };
-  std::unique_ptr<PointRunner> runner;
-  try {
-    runner = point_runner(setup, o.jobs);
-  } catch (const std::exception& e) {
-    std::cerr << "polydem ensemble: error: " << e.what() << "\n";
-    return exit_bad_input;
-  }
-  if (!runner->leader()) {
-    runner->serve();
-    return exit_success;
-  }
+  int done_code = exit_success;
+  const std::unique_ptr<PointRunner> runner = leader_runner(setup, o.jobs, "ensemble", done_code);
+  if (!runner) return done_code;
   if (!o.quiet)
     std::cerr << fmt::format("polydem ensemble: {} replica{} of {} (seed {}) on {}\n", replicas,
                              replicas == 1 ? "" : "s", deck_name, seed, runner->describe());

@@ -127,17 +127,9 @@ int ida_command(const IdaOptions& o) {
                                r.collapse_mode.empty() ? "" : " (Mode " + r.collapse_mode + ")", r.wall_seconds, done,
                                done == 1 ? "" : "s", r.message.empty() ? "" : "  " + r.message);
     };
-  std::unique_ptr<PointRunner> runner;
-  try {
-    runner = point_runner(setup, o.jobs);
-  } catch (const std::exception& e) {
-    std::cerr << "polydem ida: error: " << e.what() << "\n";
-    return exit_bad_input;
-  }
-  if (!runner->leader()) {
-    runner->serve();
-    return exit_success;
-  }
+  int done_code = exit_success;
+  const std::unique_ptr<PointRunner> runner = leader_runner(setup, o.jobs, "ida", done_code);
+  if (!runner) return done_code;
   const char* what = stripes ? "multiple-stripe analysis" : factors ? "scaled runs" : "incremental dynamic analysis";
   if (!o.quiet)
     std::cerr << fmt::format("polydem ida: {} of {} under {} record{} of {} (IM {}) on {}\n", what, deck_name,

@@ -232,6 +232,21 @@ std::unique_ptr<PointRunner> point_runner(const SweepSetup& setup, int jobs) {
   return local_runner(setup, jobs);
 }
 
+std::unique_ptr<PointRunner> leader_runner(const SweepSetup& setup, int jobs, const std::string& name, int& exit_code) {
+  std::unique_ptr<PointRunner> runner;
+  try {
+    runner = point_runner(setup, jobs);
+  } catch (const std::exception& e) {
+    std::cerr << "polydem " << name << ": error: " << e.what() << "\n";
+    exit_code = exit_bad_input;
+    return nullptr;
+  }
+  if (runner->leader()) return runner;
+  runner->serve();
+  exit_code = exit_success;
+  return nullptr;
+}
+
 bool started_by_mpirun() {
   for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "MPI_LOCALNRANKS"})
     if (std::getenv(v)) return true;

@@ -114,6 +114,12 @@ bool started_by_mpirun();
 // std::runtime_error when started by mpirun without MPI in this build.
 std::unique_ptr<PointRunner> point_runner(const SweepSetup& setup, int jobs);
 
+// The runner of `polydem NAME` as its leader uses it; nullptr, with
+// `exit_code` set, when this process is done: a rank other than the leader
+// once it has served (exit_success), or no runner could be made ("polydem
+// NAME: error: ..." printed, exit_bad_input).
+std::unique_ptr<PointRunner> leader_runner(const SweepSetup& setup, int jobs, const std::string& name, int& exit_code);
+
 // Runs one point in this process (MPI ranks) and returns its result.
 PointResult run_point_here(const SweepSetup& setup, const SweepPoint& point, const std::string& dir);
 // Empties the point's directory and writes its point.json (before a run).
