@@ -160,6 +160,29 @@ TEST_F(IdaCommand, OneAndTwoWorkersSameTablesResumeAndStripes) {
       << read_text(dir_ / "fit.txt");
 }
 
+TEST_F(IdaCommand, SaIsTheSpectrumsOrdinateAndScalesMultiplyIt) {
+  const fs::path out = dir_ / "sa", spectrum = dir_ / "spectrum";
+  ASSERT_EQ(run_binary(ida("two.toml", out, "2", {"--im", "sa", "--period", "0.5", "--scales", "1,2"}),
+                       dir_ / "sa.txt"),
+            0)
+      << read_text(dir_ / "sa.txt");
+  ASSERT_EQ(run_binary({"analytic", "spectrum", (dir_ / "pulse07.csv").string(), "--periods", "0.5", "--no-plot",
+                        "--out", spectrum.string()},
+                       dir_ / "spectrum.txt"),
+            0)
+      << read_text(dir_ / "spectrum.txt");
+  const double psa = std::stod(column(read_text(spectrum / "spectra.csv"), "pulse07.psa_g")[0]);
+  const std::string capacities = read_text(out / "capacities.csv");
+  const double record_im = std::stod(column(capacities, "record_im")[1]);
+  EXPECT_NEAR(record_im, 0.8 * psa, 1e-8 * psa) << capacities;  // the suite's scale 0.8
+  const auto ims = column(read_text(out / "ida.csv"), "im");
+  ASSERT_EQ(ims.size(), 4u);
+  EXPECT_EQ(std::stod(ims[3]), 2 * record_im);
+  const Json j = Json::parse(read_text(out / "ida.json"));
+  EXPECT_EQ(j.find("im")->find("name")->as_string(), "sa(0.5 s, 5 %)");
+  EXPECT_EQ(j.find("analysis")->as_string(), "scales");
+}
+
 TEST_F(IdaCommand, BadInputIsRefusedAndNothingIsWritten) {
   write_text((dir_ / "missing.toml").string(), "[[record]]\nfile = \"pulse10.csv\"\n\n[[record]]\nfile = \"nope.csv\"\n");
   write_text((dir_ / "negative.toml").string(), "[[record]]\nfile = \"pulse10.csv\"\nscale = -1\n");
