@@ -159,7 +159,8 @@ int ida_command(const IdaOptions& o) {
   IdaReport report;
   try {
     report = stripes || factors ? run_stripes(names, record_ims, levels, factors, point_of, run_batch)
-                                : hunt_and_fill(names, record_ims, hunt, point_of, run_batch);
+                                : hunt_and_fill(names, record_ims, hunt, point_of, run_batch,
+                                                [&](const IdaReport& so_far) { write_ida_tables(o.out_dir, so_far); });
   } catch (const std::exception& e) {
     runner->finish();
     std::cerr << "polydem ida: error: " << e.what() << "\n";

@@ -9,7 +9,7 @@
 // Each run is `polydem run DECK --set ground_motion={the record}
 // --set ground_motion.scale=F ...` into DIR/points/<id>; the tables
 // (DIR/ida.csv, capacities.csv, ida.json; io/ida_tables.hpp) are written at
-// the end. With --resume the runs whose summary is on disk are not run
+// the end, the two tables after each round of a hunt-and-fill too. With --resume the runs whose summary is on disk are not run
 // again; without it a DIR that holds an analysis's results is refused.
 #pragma once
 

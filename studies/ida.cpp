@@ -227,7 +227,8 @@ void check_names(const std::vector<std::string>& names, const std::vector<double
 }  // namespace
 
 IdaReport hunt_and_fill(const std::vector<std::string>& names, const std::vector<double>& record_ims,
-                        const HuntAndFill& h, const IdaPointOf& point_of, const BatchRunner& run) {
+                        const HuntAndFill& h, const IdaPointOf& point_of, const BatchRunner& run,
+                        const IdaProgress& after_round) {
   check_names(names, record_ims);
   for (const auto& [what, x] : {std::pair<const char*, double>{"first IM", h.first}, {"step", h.step},
                                 {"tolerance", h.tolerance}})
@@ -237,6 +238,11 @@ IdaReport hunt_and_fill(const std::vector<std::string>& names, const std::vector
 
   std::vector<RecordSearch> searches(names.size());
   IdaReport report;
+  const auto summarise_all = [&]() {
+    report.records.clear();
+    for (std::size_t r = 0; r < searches.size(); ++r)
+      report.records.push_back(summarise(names[r], record_ims[r], searches[r].runs));
+  };
   for (;;) {
     std::vector<std::pair<std::size_t, double>> todo;
     for (std::size_t r = 0; r < searches.size(); ++r) {
@@ -253,9 +259,12 @@ IdaReport hunt_and_fill(const std::vector<std::string>& names, const std::vector
     }
     report.runs += static_cast<long>(todo.size());
     ++report.rounds;
+    if (after_round) {
+      summarise_all();
+      after_round(report);
+    }
   }
-  for (std::size_t r = 0; r < searches.size(); ++r)
-    report.records.push_back(summarise(names[r], record_ims[r], searches[r].runs));
+  summarise_all();
   return report;
 }
 

@@ -118,10 +118,14 @@ struct IdaReport {
 // The run of record r at IM x (r indexes the records).
 using IdaPointOf = std::function<SweepPoint(std::size_t record, double im, double factor)>;
 
+// Called after each round with the report so far (e.g. to write the tables).
+using IdaProgress = std::function<void(const IdaReport&)>;
+
 // Hunt-and-fill for every record (names and IMs as given), through `run`.
 // Throws std::invalid_argument for settings that are not > 0 (max_runs ≥ 1).
 IdaReport hunt_and_fill(const std::vector<std::string>& names, const std::vector<double>& record_ims,
-                        const HuntAndFill& settings, const IdaPointOf& point_of, const BatchRunner& run);
+                        const HuntAndFill& settings, const IdaPointOf& point_of, const BatchRunner& run,
+                        const IdaProgress& after_round = {});
 
 // Every record at every IM of `ims` (stripes) or, with `factors`, at every
 // scale factor: one batch.

@@ -32,7 +32,8 @@ SuiteRecord one_component(const std::string& name, double scale = 1.0) {
   return r;
 }
 
-IdaReport search(const std::vector<double>& capacity, const HuntAndFill& h, int* batches = nullptr) {
+IdaReport search(const std::vector<double>& capacity, const HuntAndFill& h, int* batches = nullptr,
+                 const IdaProgress& after_round = {}) {
   std::vector<std::string> names;
   std::vector<double> ims;
   for (std::size_t r = 0; r < capacity.size(); ++r) {
@@ -60,7 +61,7 @@ IdaReport search(const std::vector<double>& capacity, const HuntAndFill& h, int*
     }
     return out;
   };
-  return hunt_and_fill(names, ims, h, point_of, run);
+  return hunt_and_fill(names, ims, h, point_of, run, after_round);
 }
 
 TEST(HuntAndFill, BracketsEachRecordsCollapseToTheTolerance) {
@@ -118,6 +119,21 @@ TEST(HuntAndFill, ARecordThatNeverCollapsesIsCensoredAtItsLargestRun) {
   EXPECT_TRUE(std::isnan(rec.collapse_im));
   EXPECT_EQ(rec.runs.size(), 5u);
   EXPECT_DOUBLE_EQ(rec.below_collapse_im, 0.55);  // 0.05, 0.1, 0.2, 0.35, 0.55
+}
+
+TEST(HuntAndFill, ReportsTheRunsSoFarAfterEachRound) {
+  std::vector<long> runs;
+  IdaReport last;
+  const IdaReport rep = search({0.537, 0.2}, HuntAndFill{}, nullptr, [&](const IdaReport& so_far) {
+    runs.push_back(so_far.runs);
+    last = so_far;
+  });
+  ASSERT_EQ(static_cast<int>(runs.size()), rep.rounds);
+  EXPECT_EQ(runs.front(), 2);  // both records' first run
+  EXPECT_EQ(runs.back(), rep.runs);
+  ASSERT_EQ(last.records.size(), 2u);
+  EXPECT_EQ(last.records[0].runs.size(), rep.records[0].runs.size());
+  EXPECT_EQ(last.records[1].collapse_im, rep.records[1].collapse_im);
 }
 
 TEST(HuntAndFill, RefusesSettingsThatCannotSearch) {
