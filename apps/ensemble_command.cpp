@@ -22,13 +22,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// True when DIR already holds an ensemble's (or a sweep's) results.
-bool has_results(const std::string& dir) {
-  if (fs::exists(fs::path(dir) / "replicas.csv")) return true;
-  const fs::path points = fs::path(dir) / "points";
-  return fs::is_directory(points) && !fs::is_empty(points);
-}
-
 std::string figure(double x) { return std::isfinite(x) ? fmt::format("{:.6g}", x) : std::string("-"); }
 
 }  // namespace
@@ -57,7 +50,7 @@ int ensemble_command(const EnsembleOptions& o) {
     seed = base.ensemble.seed;
     for (long k = 0; k < replicas; ++k) points.push_back(SweepPoint{{{kReplicaKey, static_cast<double>(k)}}});
     for (const SweepPoint& p : points) (void)point_directory(setup, p);  // every replica's deck is valid
-    if (!o.resume && has_results(o.out_dir))
+    if (!o.resume && has_study_results(o.out_dir, "replicas.csv"))
       throw std::invalid_argument(o.out_dir + " holds the results of an earlier ensemble or sweep: give --resume "
                                               "to continue it, or another --out");
   } catch (const std::exception& e) {
@@ -74,17 +67,9 @@ int ensemble_command(const EnsembleOptions& o) {
                                r.collapse_mode.empty() ? "" : " (Mode " + r.collapse_mode + ")", r.wall_seconds, done,
                                replicas, r.message.empty() ? "" : "  " + r.message);
     };
-  std::unique_ptr<PointRunner> runner;
-  try {
-    runner = point_runner(setup, o.jobs);
-  } catch (const std::exception& e) {
-    std::cerr << "polydem ensemble: error: " << e.what() << "\n";
-    return exit_bad_input;
-  }
-  if (!runner->leader()) {
-    runner->serve();
-    return exit_success;
-  }
+  int done_code = exit_success;
+  const std::unique_ptr<PointRunner> runner = leader_runner(setup, o.jobs, "ensemble", done_code);
+  if (!runner) return done_code;
   if (!o.quiet)
     std::cerr << fmt::format("polydem ensemble: {} replica{} of {} (seed {}) on {}\n", replicas,
                              replicas == 1 ? "" : "s", deck_name, seed, runner->describe());

@@ -73,6 +73,9 @@ int run(const FragilityArgs& a) {
   if (!(o.confidence > 0.0 && o.confidence < 1.0)) throw std::invalid_argument("--confidence must be in (0, 1)");
   o.points = static_cast<int>(read_whole_option("points", a.points, 2, 100000));
   const FragilityInput in = read_fragility_runs(a.input);
+  if (in.undetermined > 0)
+    std::cerr << "polydem analytic fragility: warning: " << in.undetermined << " run" << (in.undetermined == 1 ? "" : "s")
+              << " of state undetermined left out of the fit\n";
   if (a.method == "ida" && !in.has_records)
     throw std::invalid_argument(a.input + ": --method ida needs a record column (or use --method stripes)");
   o.method = a.method == "stripes" || (a.method == "auto" && !in.has_records) ? pa::FragilityMethod::stripes

@@ -1,7 +1,8 @@
-// polydem: the command line. Subcommands: run, collapse, sweep, ensemble, analytic, mesh.
+// polydem: the command line. Subcommands: run, collapse, sweep, ensemble, ida, analytic, mesh.
 #include "apps/analytic_command.hpp"
 #include "apps/collapse_command.hpp"
 #include "apps/ensemble_command.hpp"
+#include "apps/ida_command.hpp"
 #include "apps/mesh_command.hpp"
 #include "apps/run_command.hpp"
 #include "apps/sweep_command.hpp"
@@ -93,6 +94,29 @@ int main(int argc, char** argv) {
   ensemble_cmd->add_flag("--resume", ens.resume, "Continue an ensemble in DIR: replicas finished on disk are kept");
   ensemble_cmd->add_flag("--quiet", ens.quiet, "Only the final table");
 
+  polydem::IdaOptions ida;
+  auto* ida_cmd = app.add_subcommand(
+      "ida", "Incremental dynamic analysis (hunt-and-fill to collapse) or multiple stripes of a deck under a record "
+             "suite (local processes or mpirun): DIR/ida.csv, capacities.csv, ida.json; --resume continues");
+  ida_cmd->add_option("suite", ida.suite_path, "Record suite file (TOML, docs/records.md)")->required();
+  ida_cmd->add_option("deck", ida.deck_path, "Deck file (TOML); its ground motion is replaced by each record");
+  ida_cmd->add_flag("--default", ida.use_default, "Use the built-in default deck");
+  ida_cmd->add_option("--im", ida.im, "Intensity measure: pga, or sa (with --period)")->capture_default_str();
+  ida_cmd->add_option("--period", ida.period, "T1 (s) of Sa(T1)");
+  ida_cmd->add_option("--damping", ida.damping, "Damping ratio of Sa")->capture_default_str();
+  ida_cmd->add_option("--hunt", ida.hunt, "FIRST:STEP:GROWTH of the hunt's IMs, g (default 0.05:0.05:0.05)");
+  ida_cmd->add_option("--tolerance", ida.tolerance, "Collapse bracket and fill stop below this IM width (g)")
+      ->capture_default_str();
+  ida_cmd->add_option("--max-runs", ida.max_runs, "Runs per record")->capture_default_str();
+  ida_cmd->add_option("--stripes", ida.stripes, "IM1,IM2,...: every record at each IM (multiple stripes)");
+  ida_cmd->add_option("--scales", ida.scales, "F1,F2,...: every record at each scale factor");
+  ida_cmd->add_option("--out", ida.out_dir, "Output directory (runs in DIR/points)")->capture_default_str();
+  ida_cmd->add_option("--jobs", ida.jobs, "Local worker processes (0: cores / threads)")->capture_default_str();
+  ida_cmd->add_option("--threads", ida.threads, "OpenMP threads of each run")->capture_default_str();
+  ida_cmd->add_option("--set", ida.overrides, "Override a deck key for every run (repeatable)");
+  ida_cmd->add_flag("--resume", ida.resume, "Continue an analysis in DIR: runs finished on disk are kept");
+  ida_cmd->add_flag("--quiet", ida.quiet, "Only the final table");
+
   auto* analytic_cmd = app.add_subcommand("analytic", "Analytical models of the paper (polydem analytic --help)");
   analytic_cmd->prefix_command();  // the models and their options: apps/analytic_command.cpp
   analytic_cmd->set_help_flag();
@@ -120,6 +144,13 @@ int main(int argc, char** argv) {
       return polydem::exit_bad_input;
     }
     return polydem::sweep_command(sweep);
+  }
+  if (ida_cmd->parsed()) {
+    if (ida.deck_path.empty() && !ida.use_default) {
+      std::cerr << "polydem ida: error: give a deck file or --default\n";
+      return polydem::exit_bad_input;
+    }
+    return polydem::ida_command(ida);
   }
   if (ensemble_cmd->parsed()) {
     if (ens.deck_path.empty() && !ens.use_default) {

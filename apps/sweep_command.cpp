@@ -84,17 +84,9 @@ int sweep_command(const SweepOptions& o) {
     return exit_bad_input;
   }
 
-  std::unique_ptr<PointRunner> runner;
-  try {
-    runner = point_runner(setup, o.jobs);
-  } catch (const std::exception& e) {
-    std::cerr << "polydem sweep: error: " << e.what() << "\n";
-    return exit_bad_input;
-  }
-  if (!runner->leader()) {
-    runner->serve();
-    return exit_success;
-  }
+  int done_code = exit_success;
+  const std::unique_ptr<PointRunner> runner = leader_runner(setup, o.jobs, "sweep", done_code);
+  if (!runner) return done_code;
 
   // Every result so far, by point directory; the tables are rewritten from it
   // after each batch.

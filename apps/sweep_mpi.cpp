@@ -1,7 +1,7 @@
 // The MPI point runner (only when CMake found MPI; see sweep_points.hpp).
 //
 // Protocol, per batch: rank 0 broadcasts the unfinished points as JSON
-// ([{dir, values}]), rank r runs points r, r + size, ... in its own process,
+// ([{dir, values, fixed}]), rank r runs points r, r + size, ... in its own process,
 // and the summaries (text) come back to rank 0 with one gather. An empty
 // broadcast with "stop" ends the sweep. Points are dealt out round-robin
 // rather than on request: the runs of one batch take similar times (the same
@@ -81,7 +81,9 @@ class MpiRunner final : public PointRunner {
     for (std::size_t i : pending) {
       Json values = Json::array();
       for (const auto& [key, value] : batch[i].values) values.push_back(Json::array().push_back(key).push_back(value));
-      work.push_back(Json::object().set("dir", dirs[i]).set("values", std::move(values)));
+      Json fixed = Json::array();
+      for (const std::string& f : batch[i].fixed) fixed.push_back(f);
+      work.push_back(Json::object().set("dir", dirs[i]).set("values", std::move(values)).set("fixed", std::move(fixed)));
     }
     if (pending.empty()) return results;
     Json message = Json::object().set("work", std::move(work));
@@ -150,6 +152,8 @@ class MpiRunner final : public PointRunner {
       const Json& values = *item.find("values");
       for (std::size_t v = 0; v < values.size(); ++v)
         p.values.emplace_back(values.at(v).at(0).as_string(), values.at(v).at(1).as_number());
+      const Json& fixed = *item.find("fixed");
+      for (std::size_t f = 0; f < fixed.size(); ++f) p.fixed.push_back(fixed.at(f).as_string());
       const std::string dir = item.find("dir")->as_string();
       const PointResult r = run_point_here(setup_, p, dir);
       const std::string summary = r.status == "error" ? std::string() : read_file_text(dir + "/summary.json");

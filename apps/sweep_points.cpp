@@ -82,6 +82,12 @@ std::string point_directory(const SweepSetup& setup, const SweepPoint& point) {
 
 
 
+bool has_study_results(const std::string& dir, const std::string& table) {
+  if (fs::exists(fs::path(dir) / table)) return true;
+  const fs::path points = fs::path(dir) / "points";
+  return fs::is_directory(points) && !fs::is_empty(points);
+}
+
 bool point_finished(const std::string& dir) { return !read_point_result(dir).status.empty(); }
 
 void prepare_point_directory(const std::string& dir, const SweepPoint& point, const SweepSetup& setup) {
@@ -224,6 +230,21 @@ std::unique_ptr<PointRunner> point_runner(const SweepSetup& setup, int jobs) {
   }
   if (jobs <= 0) jobs = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / std::max(1, setup.threads));
   return local_runner(setup, jobs);
+}
+
+std::unique_ptr<PointRunner> leader_runner(const SweepSetup& setup, int jobs, const std::string& name, int& exit_code) {
+  std::unique_ptr<PointRunner> runner;
+  try {
+    runner = point_runner(setup, jobs);
+  } catch (const std::exception& e) {
+    std::cerr << "polydem " << name << ": error: " << e.what() << "\n";
+    exit_code = exit_bad_input;
+    return nullptr;
+  }
+  if (runner->leader()) return runner;
+  runner->serve();
+  exit_code = exit_success;
+  return nullptr;
 }
 
 bool started_by_mpirun() {

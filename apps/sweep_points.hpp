@@ -53,6 +53,10 @@ SweepSetup setup_from(const Options& o) {
   return setup;
 }
 
+// True when DIR already holds a study's results: its `table` (e.g.
+// "replicas.csv") or finished points in DIR/points.
+bool has_study_results(const std::string& dir, const std::string& table);
+
 // The point's directory: DIR/points/<16 hex digits>. Throws DeckError-like
 // std::runtime_error if the deck with these overrides is not valid.
 std::string point_directory(const SweepSetup& setup, const SweepPoint& point);
@@ -109,6 +113,12 @@ bool started_by_mpirun();
 // local processes (0: the cores over setup.threads). Throws
 // std::runtime_error when started by mpirun without MPI in this build.
 std::unique_ptr<PointRunner> point_runner(const SweepSetup& setup, int jobs);
+
+// The runner of `polydem NAME` as its leader uses it; nullptr, with
+// `exit_code` set, when this process is done: a rank other than the leader
+// once it has served (exit_success), or no runner could be made ("polydem
+// NAME: error: ..." printed, exit_bad_input).
+std::unique_ptr<PointRunner> leader_runner(const SweepSetup& setup, int jobs, const std::string& name, int& exit_code);
 
 // Runs one point in this process (MPI ranks) and returns its result.
 PointResult run_point_here(const SweepSetup& setup, const SweepPoint& point, const std::string& dir);

@@ -83,6 +83,10 @@ FragilityInput parse_fragility_runs(const std::string& content, const std::strin
     const auto r = std::from_chars(im.data(), im.data() + im.size(), run.im);
     if (r.ec != std::errc() || r.ptr != im.data() + im.size()) fail("im: not a number: '" + im + "'");
     if (!(run.im > 0.0) || !std::isfinite(run.im)) fail("im: must be finite and > 0 (got " + im + ")");
+    if (lower(f[*col_state]) == "undetermined") {  // a run that decided nothing: not fitted
+      ++in.undetermined;
+      continue;
+    }
     const auto state = pa::damage_state_named(lower(f[*col_state]));
     if (!state) fail("state: '" + f[*col_state] + "' is not intact, damaged, stones_lost, collapsed or 0-3");
     run.state = *state;
@@ -93,7 +97,9 @@ FragilityInput parse_fragility_runs(const std::string& content, const std::strin
     in.runs.push_back(std::move(run));
   }
   if (!header) throw std::runtime_error(name + ": empty file: no header line");
-  if (in.runs.empty()) throw std::runtime_error(name + ": no runs after the header");
+  if (in.runs.empty())
+    throw std::runtime_error(name + (in.undetermined > 0 ? ": no runs but undetermined ones after the header"
+                                                         : ": no runs after the header"));
   return in;
 }
 

@@ -272,6 +272,7 @@ PointResult point_result_from_summary(const std::string& text, const std::string
     r.max_displacement = number_or(a->find("max_displacement_m"), 0);
     r.residual_displacement = number_or(a->find("max_residual_displacement_m"), 0);
     r.collapse_time = number_or(a->find("collapse_time_s"), -1);
+    r.damage_time = number_or(a->find("damage_time_s"), -1);
     if (const Json* d = a->find("dislodged")) r.dislodged = static_cast<int>(number_or(d->find("count"), 0));
     r.ground_acceleration_at_damage_g = number_or(a->find("ground_acceleration_at_damage_g"), kNone);
   }

@@ -46,7 +46,7 @@ void write_synthetic_suite(const std::string& dir, const SyntheticSuiteRun& run)
   std::ostringstream toml, table;
   toml << "# A record suite (docs/records.md) of synthetic records made by\n"
        << "# polydem analytic synthetic (docs/fragility.md): " << scenario_text(run) << ".\n"
-       << "name = \"synthetic " << scenario_text(run) << "\"\n";
+       << "[suite]\nname = \"synthetic " << scenario_text(run) << "\"\n";
   table << "name,file,seed,arias_intensity_m_s,d5_95_s,t_mid_s,f_mid_hz,f_slope_hz_s,zeta_f,"
            "measured_arias_intensity_m_s,measured_d5_95_s,measured_t_mid_s,pga_m_s2,pgv_m_s,samples,dt_s\n";
   for (const pa::SyntheticRecord& r : run.records) {

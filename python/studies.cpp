@@ -9,19 +9,24 @@
 // run's summary the way polydem sweep reads summary.json (io/summary.hpp).
 // The Python half (polydem/studies.py) makes numpy structured arrays. An
 // ensemble is the sweep of its replicas (ensemble.replica = 0..N-1),
-// summarised by studies/ensemble.hpp as `polydem ensemble` does.
+// summarised by studies/ensemble.hpp as `polydem ensemble` does. An IDA is
+// studies/ida.hpp's search over the suite's records, its runs as a sweep's.
 #include "python/bindings.hpp"
 
 #include "io/collapse_results.hpp"
 #include "io/deck.hpp"
+#include "io/ida_tables.hpp"
+#include "io/record_suite.hpp"
 #include "io/summary.hpp"
 #include "studies/collapse_search.hpp"
 #include "studies/ensemble.hpp"
+#include "studies/ida.hpp"
 #include "studies/sweep_search.hpp"
 
 #include <pybind11/stl.h>
 
 #include <filesystem>
+#include <map>
 
 namespace polydem::python {
 
@@ -282,6 +287,107 @@ void bind_studies(py::module_& m) {
       },
       py::arg("scene"), py::arg("vary"), py::arg("search"), py::arg("resolution"), py::arg("threads"),
       py::arg("progress"));
+
+  m.def(
+      "ida",
+      [](const Scene& scene, const std::string& suite_path, const std::string& measure, double period, double damping,
+         const std::string& mode, const std::vector<double>& levels, const HuntAndFill& hunt, int threads,
+         const std::string& out, py::object progress) {
+        IntensitySpec im;
+        if (measure == "sa") {
+          im.measure = IntensityMeasure::sa;
+          im.period = period;
+          im.damping = damping;
+          if (!(period > 0)) raise_python("DeckError", "im \"sa\" needs a period > 0 (got " + value_text(period) + ")");
+          if (!(damping >= 0 && damping < 1)) raise_python("DeckError", "damping must be in [0, 1)");
+        } else if (measure != "pga") {
+          raise_python("DeckError", "im must be \"pga\" or \"sa\" (got \"" + measure + "\")");
+        }
+        const RecordSuite suite = read_record_suite(suite_path);
+        const SceneSpec base = parse_deck(scene.spec.deck_text, scene.name, scene.overrides);
+        std::vector<std::string> names, motions;
+        std::vector<double> record_ims;
+        for (const SuiteRecord& r : suite.records) {
+          try {
+            record_ims.push_back(record_intensity(r, im));
+          } catch (const std::invalid_argument& e) {
+            raise_python("DeckError", suite.path + ":" + std::to_string(r.line) + ": " + e.what());
+          }
+          names.push_back(r.name);
+          motions.push_back(record_motion_override(r, suite, base.ground_motion));
+          std::vector<std::string> overrides = scene.overrides;  // the deck takes every record
+          for (const std::string& o : record_point(r, motions.back(), 1.0).overrides()) overrides.push_back(o);
+          (void)parse_deck(scene.spec.deck_text, scene.name, overrides);
+        }
+        std::map<std::vector<std::string>, std::pair<std::size_t, double>> at;  // a run's record and IM
+        const IdaPointOf point_of = [&](std::size_t r, double x, double factor) {
+          SweepPoint p = record_point(suite.records[r], motions[r], factor);
+          at[p.overrides()] = {r, x};
+          return p;
+        };
+        const BatchRunner run = [&](const std::vector<SweepPoint>& batch) {
+          std::vector<PointResult> results;
+          for (const SweepPoint& p : batch) {
+            results.push_back(run_point(scene, p, threads));
+            if (progress.is_none()) continue;
+            py::gil_scoped_acquire gil;
+            py::dict d;
+            const auto [r, x] = at[p.overrides()];
+            d["record"] = names[r];
+            d["im"] = x;
+            d["status"] = results.back().status;
+            d["collapse_mode"] = results.back().collapse_mode;
+            d["wall_seconds"] = results.back().wall_seconds;
+            progress(d);
+          }
+          return results;
+        };
+        IdaReport report;
+        try {
+          py::gil_scoped_release nogil;
+          report = mode == "hunt" ? hunt_and_fill(names, record_ims, hunt, point_of, run)
+                                  : run_stripes(names, record_ims, levels, mode == "scales", point_of, run);
+          if (!out.empty()) write_ida_tables(out, report);
+        } catch (const std::invalid_argument& e) {
+          raise_python("DeckError", e.what());
+        }
+        py::list rows, records;
+        for (const IdaRecord& rec : report.records) {
+          for (const IdaRun& r : rec.runs) {
+            py::dict d = point_dict(SweepPoint{}, r.result);
+            d["record"] = rec.name;
+            d["im"] = r.im;
+            d["scale"] = r.factor;
+            d["state"] = r.state;
+            d["damage_time"] = r.result.damage_time;
+            d["max_bed_opening"] = r.result.max_bed_opening;
+            d["max_vertical_opening"] = r.result.max_vertical_opening;
+            rows.append(d);
+          }
+          py::dict c;
+          c["record"] = rec.name;
+          c["record_im"] = rec.record_im;
+          c["damage_im"] = rec.damage_im;
+          c["stones_lost_im"] = rec.stones_im;
+          c["collapse_im"] = rec.collapse_im;
+          c["below_collapse_im"] = rec.below_collapse_im;
+          c["collapse_scale"] = rec.collapse_im / rec.record_im;
+          c["runs"] = static_cast<long>(rec.runs.size());
+          c["undetermined"] = rec.undetermined;
+          records.append(c);
+        }
+        return py::make_tuple(rows, records);
+      },
+      py::arg("scene"), py::arg("suite"), py::arg("im"), py::arg("period"), py::arg("damping"), py::arg("mode"),
+      py::arg("levels"), py::arg("hunt"), py::arg("threads"), py::arg("out"), py::arg("progress"));
+
+  py::class_<HuntAndFill>(m, "HuntAndFill")
+      .def(py::init<>())
+      .def_readwrite("first", &HuntAndFill::first)
+      .def_readwrite("step", &HuntAndFill::step)
+      .def_readwrite("growth", &HuntAndFill::growth)
+      .def_readwrite("tolerance", &HuntAndFill::tolerance)
+      .def_readwrite("max_runs", &HuntAndFill::max_runs);
 }
 
 }  // namespace polydem::python

@@ -17,6 +17,7 @@ struct PointResult {
   double max_displacement = 0;       // m, of any block
   double residual_displacement = 0;  // m, largest at the end
   double collapse_time = -1;         // s, -1 when not collapsed
+  double damage_time = -1;           // s, -1 when never damaged
   int dislodged = 0;                 // stones moved beyond collapse_displacement (assessment.dislodged.count)
   // Read for ensembles (studies/ensemble.hpp); NaN when the summary has none:
   // a_g at the first damage (the mechanism's acceleration under a ramp), in g,

@@ -76,7 +76,7 @@ SweepAxis parse_axis(const std::string& arg, const std::string& option) {
 }
 
 std::vector<std::string> SweepPoint::overrides() const {
-  std::vector<std::string> out;
+  std::vector<std::string> out = fixed;
   for (const auto& [key, value] : values) out.push_back(key + "=" + value_text(value));
   return out;
 }

@@ -30,8 +30,11 @@ double lattice_value(double start, double stop, long i, long n);
 
 struct SweepPoint {
   std::vector<std::pair<std::string, double>> values;  // key, value
+  // Overrides set before the values, as written ("key=value"): what is not
+  // one number, e.g. an IDA's ground motion (studies/ida.hpp). Usually none.
+  std::vector<std::string> fixed = {};
 
-  std::vector<std::string> overrides() const;  // "key=value"
+  std::vector<std::string> overrides() const;  // fixed, then "key=value"
   std::string label() const;                   // "period=0.5 acceleration_g=0.6" (last part of each key)
   SweepPoint with(const std::string& key, double value) const;
 };

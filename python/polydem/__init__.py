@@ -13,11 +13,11 @@ from . import _polydem, analytical
 from .errors import DeckError, GeometryError, InstabilityError, PolydemError, SceneError
 from .run import Progress, Run, run
 from .scene import Scene
-from .studies import CollapseResult, EnsembleResult, SweepResult, collapse_search, ensemble, sweep
+from .studies import CollapseResult, EnsembleResult, IdaResult, SweepResult, collapse_search, ensemble, ida, sweep
 
 __version__ = _polydem.version
 deck_keys = _polydem.deck_keys
 
-__all__ = ["analytical", "Scene", "Run", "run", "collapse_search", "sweep", "ensemble", "CollapseResult", "SweepResult",
-           "EnsembleResult", "Progress",
+__all__ = ["analytical", "Scene", "Run", "run", "collapse_search", "sweep", "ensemble", "ida", "CollapseResult", "SweepResult",
+           "EnsembleResult", "IdaResult", "Progress",
            "PolydemError", "DeckError", "SceneError", "GeometryError", "InstabilityError", "deck_keys"]

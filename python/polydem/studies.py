@@ -1,4 +1,5 @@
-"""Studies: the collapse search and sweeps, as numpy structured arrays.
+"""Studies: the collapse search, sweeps, ensembles and IDA, as numpy
+structured arrays.
 
 The runs go on in C++ with the GIL released, one after the other in this
 process (each on `threads` OpenMP threads); `progress` is called after each
@@ -166,3 +167,59 @@ def ensemble(scene, replicas, seed=None, threads=1, progress=None, set=None):
         f"  ({r['wall_seconds']:.1f} s)"))
     rows, summary = _polydem.ensemble(scene.parsed(), int(replicas), int(threads), report)
     return EnsembleResult(structured(rows), summary)
+
+
+class IdaResult:
+    """runs: one row per run (record, im, scale, state, status,
+    collapse_mode, peak_tip_displacement, residual_displacement,
+    max_displacement, max_bed_opening, max_vertical_opening (NaN unless
+    output.walking), dislodged, damage_time, collapse_time (-1: none), steps,
+    wall_seconds, exit_code, message), by record then IM; records: one row
+    per record (record, record_im, damage_im, stones_lost_im, collapse_im
+    (NaN: not reached), below_collapse_im, collapse_scale, runs,
+    undetermined), as capacities.csv (docs/ida.md)."""
+
+    def __init__(self, runs, records):
+        self.runs, self.records = runs, records
+
+    def __repr__(self):
+        return f"<polydem.IdaResult {len(self.records)} record(s), {len(self.runs)} runs>"
+
+
+def ida(scene, suite, im="pga", period=None, damping=0.05, *, stripes=None, scales=None, hunt=(0.05, 0.05, 0.05),
+        tolerance=0.01, max_runs=12, threads=1, out=None, progress=None, set=None):
+    """Incremental dynamic analysis of the scene under the records of a
+    suite file, as `polydem ida` (docs/ida.md): im "pga" or "sa" (with
+    period T1 in s and damping), in g. By default hunt-and-fill on each
+    record: hunt = (first, step, growth) IMs up to the first collapse, the
+    bracket bisected to `tolerance`, the gaps below filled, at most
+    max_runs runs per record. stripes = [IM, ...]: a multiple-stripe
+    analysis instead; scales = [factor, ...]: every record at those scale
+    factors. The runs go one after the other in this process. out: a
+    directory for ida.csv and capacities.csv (`polydem analytic fragility`
+    reads ida.csv). Returns an IdaResult."""
+    scene = as_scene(scene)
+    if set:
+        scene = scene.with_set(set)
+    if stripes is not None and scales is not None:
+        raise ValueError("give stripes or scales, not both")
+    if im not in ("pga", "sa"):
+        raise ValueError(f"im must be 'pga' or 'sa' (got {im!r})")
+    if im == "pga" and period is not None:
+        raise ValueError("period goes with im='sa'")
+    h = _polydem.HuntAndFill()
+    h.first, h.step, h.growth = (float(x) for x in hunt)
+    h.tolerance, h.max_runs = float(tolerance), int(max_runs)
+    mode = "stripes" if stripes is not None else "scales" if scales is not None else "hunt"
+    levels = [float(x) for x in (stripes if stripes is not None else scales if scales is not None else [])]
+    report = _printer(progress, lambda r: (
+        f"  {r['record']} im={r['im']:g}: {r['status']}"
+        f"{' (Mode ' + r['collapse_mode'] + ')' if r['collapse_mode'] else ''}  ({r['wall_seconds']:.1f} s)"))
+    rows, records = _polydem.ida(scene.parsed(), str(suite), im, float(period or 0), float(damping), mode, levels, h,
+                                 int(threads), "" if out is None else str(out), report)
+    fields = ["record", "im", "scale", "state", "status", "collapse_mode", "peak_tip_displacement",
+              "residual_displacement", "max_displacement", "max_bed_opening", "max_vertical_opening", "dislodged",
+              "damage_time", "collapse_time", "steps", "wall_seconds", "exit_code", "message"]
+    return IdaResult(structured(rows, fields) if rows else structured([]),
+                     structured(records, ["record", "record_im", "damage_im", "stones_lost_im", "collapse_im",
+                                          "below_collapse_im", "collapse_scale", "runs", "undetermined"]))

@@ -2,6 +2,7 @@
 // in-process: the files they write, determinism of the written bits, and
 // bad input refused with the file, line or option before anything is written.
 #include "apps/analytic_command.hpp"
+#include "io/record_suite.hpp"
 
 #include <gtest/gtest.h>
 #include <toml++/toml.h>
@@ -101,9 +102,13 @@ TEST(SyntheticCommand, WritesASuiteAndTheSameSeedGivesTheSameBits) {
   EXPECT_NE(toml.find("[[record]]\nname = \"synthetic_03\"\nfile = \"synthetic_03.csv\"\ndirection = [1.0, 0.0, 0.0]\n"
                       "scale = 1.0\n"),
             std::string::npos);
-  // The suite is TOML a reader takes: a name and one [[record]] per record.
+  // The suite is what the suite reader takes: [suite] with its name, one
+  // [[record]] per record.
+  const polydem::RecordSuite read = polydem::read_record_suite((a / "suite.toml").string());
+  EXPECT_EQ(read.name.rfind("synthetic M ", 0), 0u) << read.name;
+  ASSERT_EQ(read.records.size(), 3u);
+  EXPECT_EQ(read.records[2].name, "synthetic_03");
   const toml::table suite = toml::parse_file((a / "suite.toml").string());
-  EXPECT_TRUE(suite["name"].is_string());
   const toml::array* records = suite["record"].as_array();
   ASSERT_TRUE(records);
   ASSERT_EQ(records->size(), 3u);

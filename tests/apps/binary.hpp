@@ -1,12 +1,15 @@
 // The built polydem binary from a test: started with fork + exec, its
-// stdout and stderr into a log file (shared by the command-line tests).
+// stdout and stderr into a log file, and the cells of its CSV tables
+// (shared by the command-line tests).
 #pragma once
 
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -42,6 +45,26 @@ inline int exit_code(pid_t pid) {
 
 inline int run_binary(const std::vector<std::string>& args, const std::filesystem::path& log) {
   return exit_code(start_binary(args, log));
+}
+
+// Cell `name` of every data row of a CSV (no quoted cells).
+inline std::vector<std::string> column(const std::string& csv, const std::string& name) {
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> header;
+  std::stringstream hs(line);
+  for (std::string c; std::getline(hs, c, ',');) header.push_back(c);
+  const auto at = std::find(header.begin(), header.end(), name) - header.begin();
+  std::vector<std::string> out;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::stringstream ls(line);
+    for (std::string c; std::getline(ls, c, ',');) cells.push_back(c);
+    cells.resize(header.size());
+    out.push_back(cells[static_cast<std::size_t>(at)]);
+  }
+  return out;
 }
 
 }  // namespace polydem::test

@@ -20,6 +20,7 @@ namespace polydem {
 namespace {
 
 namespace fs = std::filesystem;
+using test::column;
 using test::exit_code;
 using test::read_text;
 using test::run_binary;
@@ -44,26 +45,6 @@ class EnsembleCommand : public ::testing::Test {
 
   fs::path dir_;
 };
-
-// Cell `column` of every data row of a CSV.
-std::vector<std::string> column(const std::string& csv, const std::string& name) {
-  std::istringstream in(csv);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> header;
-  std::stringstream hs(line);
-  for (std::string c; std::getline(hs, c, ',');) header.push_back(c);
-  const auto at = std::find(header.begin(), header.end(), name) - header.begin();
-  std::vector<std::string> out;
-  while (std::getline(in, line)) {
-    std::vector<std::string> cells;
-    std::stringstream ls(line);
-    for (std::string c; std::getline(ls, c, ',');) cells.push_back(c);
-    cells.resize(header.size());
-    out.push_back(cells[static_cast<std::size_t>(at)]);
-  }
-  return out;
-}
 
 TEST_F(EnsembleCommand, SameSeedSameTablesOnOneAndTwoWorkersAndAResumeThatRunsOnlyWhatIsMissing) {
   const fs::path one = dir_ / "one", two = dir_ / "two";

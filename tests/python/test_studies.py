@@ -83,3 +83,61 @@ def test_ensemble_bad_input_raises_before_running():
     with pytest.raises(polydem.DeckError) as e:
         polydem.ensemble(TIP, 2, set={"ensemble.stiffness": 0.9}, progress=False)
     assert e.value.key == "ensemble.stiffness"
+
+
+def _pulse_suite(tmp_path):
+    """Two one-sine pulses of peak 1 g (T = 1 s and 0.7 s, the second at
+    suite scale 0.8) as two-column records, and their suite file."""
+    import math
+    for name, period in (("pulse10", 1.0), ("pulse07", 0.7)):
+        n = round(period / 0.01)
+        lines = ["time_s,acceleration_g"]
+        lines += [f"{i * 0.01:.2f},{1.0 if i == n // 4 else math.sin(2 * math.pi * i * 0.01 / period)!r}"
+                  for i in range(n + 1)]
+        (tmp_path / f"{name}.csv").write_text("\n".join(lines) + "\n")
+    suite = tmp_path / "suite.toml"
+    suite.write_text('[[record]]\nfile = "pulse10.csv"\n[[record]]\nfile = "pulse07.csv"\nscale = 0.8\n')
+    return suite
+
+
+def test_ida_matches_the_command_line(tmp_path):
+    """polydem.ida and `polydem ida` run the same searches: the same IMs,
+    states and responses, bit for bit, and the same capacities table."""
+    import csv
+    from conftest import polydem_cli
+    suite = _pulse_suite(tmp_path)
+    seen = []
+    r = polydem.ida(TIP, suite, tolerance=0.05, max_runs=6, threads=1, progress=seen.append, out=tmp_path / "py",
+                    set={"simulation.end_time": 2.5})
+    assert len(r.runs) == len(seen) == 12 and list(r.records["record"]) == ["pulse10", "pulse07"]
+    out = tmp_path / "cli"
+    done = polydem_cli("ida", suite, TIP, "--tolerance", 0.05, "--max-runs", 6, "--jobs", 2, "--threads", 1,
+                       "--set", "simulation.end_time=2.5", "--out", out)
+    assert done.returncode == 0, done.stderr
+    with open(out / "ida.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert [x["record"] for x in rows] == list(r.runs["record"])
+    assert [x["state"] for x in rows] == list(r.runs["state"])
+    for csv_name, name in (("im", "im"), ("scale", "scale"), ("peak_tip_displacement_m", "peak_tip_displacement"),
+                           ("residual_displacement_m", "residual_displacement")):
+        assert [float(x[csv_name]) for x in rows] == list(r.runs[name]), name
+    assert (out / "capacities.csv").read_text() == (tmp_path / "py" / "capacities.csv").read_text()
+    # Six runs each: the hunt's IMs 0.05, 0.1, 0.2, 0.35, 0.55, 0.8 g; the
+    # first pulse collapses the tip at the last.
+    assert list(r.runs["im"][:6]) == [0.05, 0.1, 0.2, 0.35, 0.55, 0.8]
+    assert r.records["collapse_im"][0] == 0.8 and np.isnan(r.records["collapse_im"][1])
+    stripes = polydem.ida(TIP, suite, stripes=[0.5, 0.9], threads=1, progress=False, set={"simulation.end_time": 2.5})
+    assert list(stripes.runs["im"]) == [0.5, 0.9, 0.5, 0.9] and stripes.runs["scale"][3] == 0.9 / 0.8
+
+
+def test_ida_bad_input_raises_before_running(tmp_path):
+    suite = _pulse_suite(tmp_path)
+    bad = tmp_path / "bad.toml"
+    bad.write_text('[[record]]\nfile = "pulse10.csv"\nscale = -1\n')
+    with pytest.raises(polydem.DeckError) as e:
+        polydem.ida(TIP, bad, progress=False)
+    assert e.value.key == "record[1].scale" and e.value.line == 3
+    with pytest.raises(ValueError):
+        polydem.ida(TIP, suite, im="pgv", progress=False)
+    with pytest.raises(polydem.DeckError):
+        polydem.ida(TIP, suite, im="sa", period=0, progress=False)
