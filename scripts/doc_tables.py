@@ -215,7 +215,8 @@ def table_convergence():
     def crack(q):
         if "crack angle" not in q:
             return "none"
-        return f'{q["crack angle"]}°, z {q["crack lowest z"]}–{q["crack highest z"]} m ({q["opened joints"]} joints)'
+        low, high = (float(q[k]) + 0.0 for k in ("crack lowest z", "crack highest z"))  # + 0.0: no "-0.00"
+        return f'{q["crack angle"]}°, z {low:.2f}–{high:.2f} m ({q["opened joints"]} joints)'
 
     def outcome(q):
         text = q["status"] + (f' {q["collapse mode"]}' if q["collapse mode"] != "-" else "")
