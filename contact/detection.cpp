@@ -267,6 +267,7 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
   }
   if (pair_joints_) {  // the overlap model: each joint's history goes with its pair
     carry_pair_joints(old, contacts);
+    rechoose_joint_planes(b.props.local_shape, b.state, contacts.pairs, contacts.joints, im.overlap);
     find_joint_cells(b.props.local_shape, b.state, contacts.pairs, contacts.sub, margin_, contacts.joints,
                      im.overlap);
   } else {

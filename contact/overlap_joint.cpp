@@ -273,6 +273,48 @@ void overlap_joint_forces(const JointLaws& laws, const std::vector<Polyhedron>& 
   }
 }
 
+namespace {
+
+// ∫t² over the joint between blocks r and c on the plane (normal·x = offset
+// in r's frame), every face pair considered: the layer's strain energy over
+// ½kn.
+double layer_overlap_squared(const std::vector<Polyhedron>& shapes, const BlockState& st, int r, int c,
+                             const Vec3& normal_local, double offset_local, OverlapScratch& scratch) {
+  const Vec3 n = st.rotation[r] * normal_local;
+  const double plane = offset_local + n.dot(st.position[r]);
+  const Vec3 mid = 0.5 * (st.position[r] + st.position[c]);
+  const JointFrame frame = make_joint_frame(n, mid - (n.dot(mid) - plane) * n);
+  const PosedBlock A{&shapes[static_cast<std::size_t>(r)], st.rotation[r], st.position[r]};
+  const PosedBlock B{&shapes[static_cast<std::size_t>(c)], st.rotation[c], st.position[c]};
+  return overlap_integral(A, B, frame, scratch).overlap_squared;
+}
+
+}  // namespace
+
+int rechoose_joint_planes(const std::vector<Polyhedron>& shapes, const BlockState& st,
+                          const std::vector<ContactPair>& pairs, PairJoints& j, OverlapScratch& scratch) {
+  int changed = 0;
+  for (std::size_t q = 0; q < pairs.size(); ++q) {
+    const ContactPair& cp = pairs[q];
+    if (j.ref_block[q] == cp.ref_block && j.normal_local[q] == cp.normal_local &&
+        j.offset_local[q] == cp.offset_local)
+      continue;
+    const int r = j.ref_block[q];
+    if (layer_overlap_squared(shapes, st, r, r == cp.a ? cp.b : cp.a, j.normal_local[q], j.offset_local[q],
+                              scratch) > 0)
+      continue;  // closed on its plane: kept
+    const int rd = cp.ref_block;
+    if (layer_overlap_squared(shapes, st, rd, rd == cp.a ? cp.b : cp.a, cp.normal_local, cp.offset_local,
+                              scratch) > 0)
+      continue;  // the detection's plane would load it: no force may appear at a detection
+    j.ref_block[q] = cp.ref_block;
+    j.normal_local[q] = cp.normal_local;
+    j.offset_local[q] = cp.offset_local;
+    ++changed;
+  }
+  return changed;
+}
+
 void find_joint_cells(const std::vector<Polyhedron>& shapes, const BlockState& st,
                       const std::vector<ContactPair>& pairs, const Subcontacts& sub, double reach, PairJoints& j,
                       OverlapScratch& scratch) {

@@ -54,11 +54,17 @@
 //
 // The joint's plane is the one the detection chose when it first found the
 // pair (contact_patch.hpp: a face of one block, its reference block), fixed
-// in that block and kept for as long as the pair is found again: a
-// detection that would now prefer the other block's face does not move it,
-// so the forces at a pose do not depend on when the contacts were last
-// detected. A pair lost (beyond the margin) and found again takes the plane
-// found then. The subcontacts are still built: their points, fixed in the
+// in that block and kept for as long as the pair is found again and the
+// joint stays closed on it: a detection that would now prefer the other
+// block's face does not move it, so the forces at a pose do not depend on
+// when the contacts were last detected. A joint found open at a detection
+// (no overlap along its plane, nor along the plane the detection chose)
+// takes the plane found then, as does a pair lost beyond the margin and
+// found again: both carry no force and no shear, so the change moves
+// nothing, and a stone that tumbles meets its neighbours on the faces it
+// now presents, not on the plane of the joint it left (a plane kept in the
+// reference block while the stones turn past each other measures the
+// overlap across them and lets them pass through). The subcontacts are still built: their points, fixed in the
 // blocks, sample the joint's opening for the assessment and the records;
 // they carry no force.
 //
@@ -95,6 +101,13 @@ void settle_pair_damping(const BlockState& state, const std::vector<ContactPair>
 // plane of its patch; the dissipation of pairs that are gone retires into
 // current's totals.
 void carry_pair_joints(const ContactSet& previous, ContactSet& current);
+
+// After carry_pair_joints: a joint open on its kept plane (no overlap
+// along it, so no force and no stored shear) takes the plane this detection
+// chose for its pair when that one finds it open too. The number of planes
+// changed.
+int rechoose_joint_planes(const std::vector<Polyhedron>& shapes, const BlockState& state,
+                          const std::vector<ContactPair>& pairs, PairJoints& joints, OverlapScratch& scratch);
 
 // Each pair's face pairs that can meet before the next detection, the
 // blocks moving by less than `reach` relative to each other (the margin):

@@ -7,8 +7,10 @@
 
 namespace polydem {
 
-AssessmentMonitor::AssessmentMonitor(const AssessmentSpec& spec, const Simulation& sim, const Vec3& gravity)
-    : spec_(spec), up_(gravity.norm() > 0 ? Vec3(-gravity.normalized()) : Vec3(0, 0, 1)) {
+AssessmentMonitor::AssessmentMonitor(const AssessmentSpec& spec, const Simulation& sim, const Vec3& gravity,
+                                     double joint_tolerance)
+    : spec_(spec), up_(gravity.norm() > 0 ? Vec3(-gravity.normalized()) : Vec3(0, 0, 1)),
+      crack_(sim, up_, joint_tolerance) {
   const Blocks& b = sim.blocks();
   direction_ = sim.ground_motion().active() ? sim.ground_motion().direction : Vec3(1, 0, 0);
   start_ = b.state.position;
@@ -110,48 +112,14 @@ void AssessmentMonitor::record_crack(const Simulation& sim) {
   result_.moved_blocks.clear();
   for (int i : b.free_blocks)
     if (displacement(sim, i).norm() > spec_.damage_displacement) result_.moved_blocks.push_back(b.props.name[i]);
-  // The crack: the joints that have opened by more than half the damage
-  // displacement, each at the mean of its subcontacts. Its angle from
-  // horizontal is that of the principal axis of those points in the
-  // vertical plane of the ground motion (total least squares, so a vertical
-  // crack is as well defined as a horizontal one).
-  const ContactSet& c = sim.contacts();
-  const Vec3& up = up_;
-  double n = 0, ms = 0, mz = 0;
-  std::vector<std::pair<double, double>> pts;
-  double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin;
-  for (const ContactPair& p : c.pairs) {
-    if (p.count == 0) continue;
-    double gap = -std::numeric_limits<double>::infinity();
-    Vec3 at = Vec3::Zero();
-    for (int k = p.first; k < p.first + p.count; ++k) {
-      gap = std::max(gap, -c.sub.geometric_overlap(k));
-      at += c.sub.point[k];
-    }
-    if (gap <= 0.5 * spec_.damage_displacement) continue;
-    at /= p.count;
-    const double sx = at.dot(direction_), z = at.dot(up);
-    pts.emplace_back(sx, z);
-    n += 1;
-    ms += sx;
-    mz += z;
-    zmin = std::min(zmin, z);
-    zmax = std::max(zmax, z);
-  }
-  result_.opened_joints = static_cast<int>(pts.size());
-  if (n < 2) return;
-  ms /= n;
-  mz /= n;
-  double css = 0, csz = 0, czz = 0;
-  for (const auto& [sx, z] : pts) {
-    css += (sx - ms) * (sx - ms);
-    csz += (sx - ms) * (z - mz);
-    czz += (z - mz) * (z - mz);
-  }
-  const double theta = 0.5 * std::atan2(2 * csz, css - czz);  // principal axis from the s axis
-  result_.crack_angle_deg = std::abs(theta) * 180.0 / std::numbers::pi;
-  result_.crack_low_z = zmin;
-  result_.crack_high_z = zmax;
+  // The crack: the joints of the initial mesh whose faces have moved apart
+  // by more than half the damage displacement (run/crack.hpp).
+  const Crack c = crack_.measure(sim, direction_, 0.5 * spec_.damage_displacement);
+  result_.opened_joints = c.cracked_joints;
+  if (c.cracked_joints < 2) return;
+  result_.crack_angle_deg = c.angle_deg;
+  result_.crack_low_z = c.low_z;
+  result_.crack_high_z = c.high_z;
 }
 
 Assessment AssessmentMonitor::finish(const Simulation& sim) {

@@ -6,6 +6,7 @@
 
 #include "core/scene_spec.hpp"
 #include "integrators/simulation.hpp"
+#include "run/crack.hpp"
 
 #include <string>
 #include <vector>
@@ -26,7 +27,8 @@ struct Assessment {
   // (the peak tip displacement of a spire), sampled as max_displacement is.
   double monitor_peak_displacement = 0;
   // When the run collapsed (or at the end if damaged): the blocks that had
-  // moved more than damage_displacement, and the crack — the joints opened by
+  // moved more than damage_displacement, and the crack (run/crack.hpp) —
+  // the joints of the initial mesh whose faces moved apart, open or slid, by
   // more than half of it — with the angle from horizontal of its principal
   // axis in the vertical plane of the ground motion (degrees) and the height
   // range it spans.
@@ -50,7 +52,10 @@ class AssessmentMonitor {
  public:
   // `gravity` gives "up" (the monitor block is the highest free block
   // against it; the crack's heights are measured along it).
-  AssessmentMonitor(const AssessmentSpec& spec, const Simulation& sim, const Vec3& gravity);
+  // `joint_tolerance`: how close two blocks' faces must be at t = 0 to make a
+  // joint of the initial mesh (simulation.overlap_tolerance), on which the
+  // crack is judged (run/crack.hpp).
+  AssessmentMonitor(const AssessmentSpec& spec, const Simulation& sim, const Vec3& gravity, double joint_tolerance);
   void observe(const Simulation& sim);  // cheap: samples every 16th step
   bool collapsed() const { return collapsed_; }
   Assessment finish(const Simulation& sim);
@@ -67,6 +72,7 @@ class AssessmentMonitor {
 
   AssessmentSpec spec_;
   Vec3 up_;
+  CrackGauge crack_;
   Vec3 direction_;
   int monitor_ = -1;
   int reference_ = -1;  // a kinematic base block: displacements are relative to it

@@ -72,44 +72,6 @@ Openings joint_openings(const Simulation& sim, const JointMesh& mesh) {
 
 }  // namespace
 
-JointMesh JointMesh::from_contacts(const Simulation& sim, const Vec3& up, double tolerance) {
-  JointMesh m;
-  const ContactSet& c = sim.contacts();
-  const auto& st = sim.blocks().state;
-  for (const ContactPair& p : c.pairs) {
-    if (p.count == 0) continue;
-    bool touching = false;
-    for (int s = p.first; s < p.first + p.count; ++s) touching = touching || c.sub.geometric_overlap(s) >= -tolerance;
-    if (!touching) continue;  // a gap within the contact margin is not a joint
-    InitialJoint j;
-    j.a = p.a;
-    j.b = p.b;
-    j.ref = p.ref_block;
-    j.inc = p.ref_block == p.a ? p.b : p.a;
-    j.normal_local = c.sub.ref_normal_local[p.first];
-    // The geometric plane: a pair's crush (the same for all its subcontacts)
-    // moved the spring's zero, not the face.
-    j.offset_local = c.sub.ref_offset_local[p.first] + c.sub.crush[p.first];
-    j.bed = std::abs((st.rotation[j.ref] * j.normal_local).dot(up)) > std::sqrt(0.5);
-    j.first = static_cast<int>(m.corners.size());
-    for (int s = p.first; s < p.first + p.count; ++s) m.corners.push_back(c.sub.inc_point_local[s]);
-    j.count = p.count;
-    m.joints.push_back(j);
-  }
-  return m;
-}
-
-double JointMesh::opening(const Simulation& sim, const InitialJoint& j) const {
-  const Mat3 Rr = sim.orientation_at_force_time(j.ref).toRotationMatrix();
-  const Mat3 Rc = sim.orientation_at_force_time(j.inc).toRotationMatrix();
-  const Vec3 xr = sim.position_at_force_time(j.ref);
-  const Vec3 xc = sim.position_at_force_time(j.inc);
-  const Vec3 n = Rr * j.normal_local;
-  double gap = -std::numeric_limits<double>::infinity();
-  for (int k = j.first; k < j.first + j.count; ++k) gap = std::max(gap, n.dot(xc + Rc * corners[k] - xr) - j.offset_local);
-  return gap;
-}
-
 Recorder::Recorder(const SceneSpec& spec, const Simulation& sim) {
   histories.columns.push_back("time");
   histories.units.push_back("s");

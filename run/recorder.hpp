@@ -12,14 +12,8 @@
 //              and of vertical joints, over the run and at the end
 //
 // Walking is measured from the blocks' motion, not from the contacts the
-// search happens to hold: the joints are those of the initial mesh (every
-// pair of blocks touching at t = 0, within simulation.overlap_tolerance),
-// each with its reference plane fixed in one block and its patch corners
-// fixed in the other. A joint's opening is the largest distance of its
-// corners from the plane, n·(p − x_ref) − offset, with both blocks at their
-// current pose: exact for a rigid block whatever the opening (1 mm or 1 m),
-// while a detected contact exists only within the contact margin. A closed
-// joint reads minus its overlap (µm under self-weight).
+// search happens to hold: on the joints of the initial mesh
+// (run/joint_mesh.hpp).
 //
 // Records are taken at the force time (time() − dt()), where the leapfrog's
 // velocities and forces belong together. Plain data: run_scene writes its
@@ -28,6 +22,7 @@
 
 #include "core/scene_spec.hpp"
 #include "integrators/simulation.hpp"
+#include "run/joint_mesh.hpp"
 
 #include <string>
 #include <vector>
@@ -48,26 +43,6 @@ struct Walking {
   double bed_opening = 0, vertical_opening = 0;          // m, at the end
   double max_bed_opening = 0, max_vertical_opening = 0;  // m, during the run
   std::string bed_joint, vertical_joint;                 // "blockA|blockB" at the end
-};
-
-// A joint of the initial mesh: the reference plane n·x = offset in the
-// reference block's frame and the patch corners in the other block's frame
-// (corners[first, first + count)).
-struct InitialJoint {
-  int a = 0, b = 0;             // the blocks, a < b
-  int ref = 0, inc = 0;         // reference and incident block
-  Vec3 normal_local;            // unit, reference frame
-  double offset_local = 0;      // m
-  bool bed = false;             // normal within 45° of up at t = 0
-  int first = 0, count = 0;
-};
-
-// The joints of the initial mesh and their openings at the force time.
-struct JointMesh {
-  std::vector<InitialJoint> joints;
-  std::vector<Vec3> corners;  // incident frame
-  static JointMesh from_contacts(const Simulation& sim, const Vec3& up, double tolerance);
-  double opening(const Simulation& sim, const InitialJoint& j) const;  // m, > 0 open
 };
 
 // One recorded quantity of one block.

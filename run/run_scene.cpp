@@ -197,7 +197,7 @@ void finish_report(RunReport& rep, const Simulation& sim, Recorder& recorder, As
 // What a run keeps between advance() calls besides the Simulation.
 struct SceneRun::Loop {
   Loop(const SceneSpec& spec, const Simulation& sim)
-      : assessment(spec.assessment, sim, spec.simulation.gravity), monitors(checks(spec, sim)), recorder(spec, sim) {}
+      : assessment(spec.assessment, sim, spec.simulation.gravity, spec.simulation.overlap_tolerance), monitors(checks(spec, sim)), recorder(spec, sim) {}
   static std::vector<std::unique_ptr<CheckMonitor>> checks(const SceneSpec& spec, const Simulation& sim) {
     std::vector<std::unique_ptr<CheckMonitor>> m;
     for (const CheckSpec& c : spec.checks) m.push_back(make_check(c, spec, sim));

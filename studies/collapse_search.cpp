@@ -180,7 +180,7 @@ CollapseTrial static_collapse_trial(const SceneSpec& scene, double deg, double a
   t.acceleration_g = a_g;
   // Collapse as a run judges it: the dislodged mass fraction
   // (assessment.collapse_mass_fraction), sampled every 16th step.
-  AssessmentMonitor monitor(s.assessment, *sim, g);
+  AssessmentMonitor monitor(s.assessment, *sim, g, s.simulation.overlap_tolerance);
   for (int k = 1; k <= o.static_increments && !t.collapsed && !t.no_equilibrium; ++k) {
     // A ground acceleration +a d pushes the blocks by −m a d.
     const Vec3 load = g - (a_g * k / o.static_increments) * g.norm() * d;

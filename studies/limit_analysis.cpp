@@ -1,6 +1,6 @@
 #include "studies/limit_analysis.hpp"
 
-#include "run/recorder.hpp"
+#include "run/joint_mesh.hpp"
 #include "run/setup.hpp"
 
 #include <glpk.h>

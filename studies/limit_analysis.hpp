@@ -6,7 +6,7 @@
 //
 // The model
 //   Blocks are rigid. The interfaces are the joints of the initial mesh
-//   (run/recorder.hpp's JointMesh: every pair of blocks touching at t = 0
+//   (run/joint_mesh.hpp's JointMesh: every pair of blocks touching at t = 0
 //   within simulation.overlap_tolerance, as polydem's own contact detection
 //   finds them): each is a planar convex patch with a unit normal n (out of
 //   the reference block, into the incident one) and its polygon's vertices

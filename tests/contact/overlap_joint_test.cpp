@@ -149,6 +149,29 @@ TEST(OverlapJoint, TheDashpotNeverPullsTheBlocksTogether) {
 }
 
 // The default spire's blocks, the base fixed.
+// A stone that left its bed and now lies beside the base, 2 mm from its
+// side face, within the margin: the pair is found again, open on the bed's
+// plane, and takes the side face's plane, so that pressed into that face it
+// is pushed back across it, kn·A·δ, not along the bed's normal.
+TEST(OverlapJoint, AJointFoundOpenTakesThePlaneTheDetectionFinds) {
+  CubeOnBase s;
+  ASSERT_EQ(s.contacts.pairs.size(), 1u);
+  const auto normal = [&s] {
+    const int r = s.contacts.joints.ref_block[0];
+    return Vec3(s.blocks.state.rotation[r] * s.contacts.joints.normal_local[0]);
+  };
+  EXPECT_NEAR(std::abs(normal().z()), 1.0, 1e-15);
+  s.blocks.state.position[1] = Vec3(1.5 + 0.5 + 0.002, 0, -0.5);
+  s.detect();
+  ASSERT_EQ(s.contacts.pairs.size(), 1u);
+  EXPECT_NEAR(std::abs(normal().x()), 1.0, 1e-15);
+  s.blocks.state.position[1].x() -= 0.002 + kDelta;
+  const double kn = law_for_test().kn;
+  const Vec3 f = s.force();
+  EXPECT_NEAR(f.x(), kn * 1.0 * kDelta, 1e-12 * kn * kDelta);
+  EXPECT_NEAR(std::hypot(f.y(), f.z()), 0.0, 1e-12 * kn * kDelta);
+}
+
 Blocks spire_blocks() {
   const SpireModel model = build_spire(SpireSpec{});
   std::vector<BlockSpec> specs;

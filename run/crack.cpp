@@ -1,0 +1,72 @@
+// The crack on the initial mesh's joints (crack.hpp).
+#include "run/crack.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace polydem {
+
+namespace {
+
+// Corner k of joint j in the reference block's frame, at the force time.
+Vec3 in_reference(const Simulation& sim, const JointMesh& m, const InitialJoint& j, int k) {
+  const Mat3 Rr = sim.orientation_at_force_time(j.ref).toRotationMatrix();
+  const Mat3 Rc = sim.orientation_at_force_time(j.inc).toRotationMatrix();
+  const Vec3 p = sim.position_at_force_time(j.inc) + Rc * m.corners[static_cast<std::size_t>(k)];
+  return Rr.transpose() * (p - sim.position_at_force_time(j.ref));
+}
+
+}  // namespace
+
+CrackGauge::CrackGauge(const Simulation& sim, const Vec3& up, double tolerance)
+    : mesh_(JointMesh::from_contacts(sim, up, tolerance)), up_(up) {
+  start_.reserve(mesh_.corners.size());
+  for (const InitialJoint& j : mesh_.joints) {
+    for (int k = j.first; k < j.first + j.count; ++k) start_.push_back(in_reference(sim, mesh_, j, k));
+    centre_.push_back(mesh_.centre(sim, j));
+  }
+}
+
+double CrackGauge::separation(const Simulation& sim, std::size_t q) const {
+  const InitialJoint& j = mesh_.joints[q];
+  double worst = 0;
+  for (int k = j.first; k < j.first + j.count; ++k)
+    worst = std::max(worst, (in_reference(sim, mesh_, j, k) - start_[static_cast<std::size_t>(k)]).norm());
+  return worst;
+}
+
+Crack CrackGauge::measure(const Simulation& sim, const Vec3& direction, double opening) const {
+  Crack c;
+  double n = 0, ms = 0, mz = 0;
+  double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin;
+  std::vector<std::pair<double, double>> pts;
+  for (std::size_t q = 0; q < mesh_.joints.size(); ++q) {
+    if (!(separation(sim, q) > opening)) continue;
+    const double sx = centre_[q].dot(direction), z = centre_[q].dot(up_);
+    pts.emplace_back(sx, z);
+    n += 1;
+    ms += sx;
+    mz += z;
+    zmin = std::min(zmin, z);
+    zmax = std::max(zmax, z);
+  }
+  c.cracked_joints = static_cast<int>(pts.size());
+  if (pts.empty()) return c;
+  c.low_z = zmin;
+  c.high_z = zmax;
+  if (pts.size() < 2) return c;
+  ms /= n;
+  mz /= n;
+  double css = 0, csz = 0, czz = 0;
+  for (const auto& [sx, z] : pts) {
+    css += (sx - ms) * (sx - ms);
+    csz += (sx - ms) * (z - mz);
+    czz += (z - mz) * (z - mz);
+  }
+  const double theta = 0.5 * std::atan2(2 * csz, css - czz);  // principal axis from the s axis
+  c.angle_deg = std::abs(theta) * 180.0 / std::numbers::pi;
+  return c;
+}
+
+}  // namespace polydem
