@@ -34,11 +34,15 @@ std::string moment(const SceneSpec& spec, double time, double ground_acceleratio
   return fmt::format("at {:.3g} g (t = {:.3g} s)", ground_acceleration / kGravity, time);
 }
 
-// ", 15 joints open at z = 0.00-0.77 m" (the crack the assessment found).
+// ", 15 joints cracked at z = 0.00-0.77 m" (the crack the assessment found:
+// joints of the initial mesh that opened or slid, run/crack.hpp).
 std::string crack(const Assessment& a) {
   if (a.opened_joints == 0) return "";
-  if (a.crack_angle_deg < 0) return fmt::format(", {} joint open", a.opened_joints);
-  return fmt::format(", {} joints open at z = {:.2f}-{:.2f} m", a.opened_joints, a.crack_low_z, a.crack_high_z);
+  if (a.crack_angle_deg < 0) return fmt::format(", {} joint cracked", a.opened_joints);
+  // Heights within half a centimetre of zero print as 0.00, not -0.00.
+  const auto cm = [](double z) { return std::abs(z) < 0.005 ? 0.0 : z; };
+  return fmt::format(", {} joints cracked at z = {:.2f}-{:.2f} m", a.opened_joints, cm(a.crack_low_z),
+                     cm(a.crack_high_z));
 }
 
 // "largest displacement 534 mm (tip), 5.0 mm at the end"
