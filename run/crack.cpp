@@ -9,13 +9,17 @@ namespace polydem {
 
 namespace {
 
-// Corner k of joint j in the reference block's frame, at the force time.
-Vec3 in_reference(const Simulation& sim, const JointMesh& m, const InitialJoint& j, int k) {
-  const Mat3 Rr = sim.orientation_at_force_time(j.ref).toRotationMatrix();
-  const Mat3 Rc = sim.orientation_at_force_time(j.inc).toRotationMatrix();
-  const Vec3 p = sim.position_at_force_time(j.inc) + Rc * m.corners[static_cast<std::size_t>(k)];
-  return Rr.transpose() * (p - sim.position_at_force_time(j.ref));
-}
+// Joint j's corners in its reference block's frame, at the force time.
+struct JointPose {
+  Mat3 Rr, Rc;
+  Vec3 xr, xc;
+  JointPose(const Simulation& sim, const InitialJoint& j)
+      : Rr(sim.orientation_at_force_time(j.ref).toRotationMatrix()),
+        Rc(sim.orientation_at_force_time(j.inc).toRotationMatrix()),
+        xr(sim.position_at_force_time(j.ref)),
+        xc(sim.position_at_force_time(j.inc)) {}
+  Vec3 in_reference(const Vec3& corner) const { return Rr.transpose() * (xc + Rc * corner - xr); }
+};
 
 }  // namespace
 
@@ -23,16 +27,21 @@ CrackGauge::CrackGauge(const Simulation& sim, const Vec3& up, double tolerance)
     : mesh_(JointMesh::from_contacts(sim, up, tolerance)), up_(up) {
   start_.reserve(mesh_.corners.size());
   for (const InitialJoint& j : mesh_.joints) {
-    for (int k = j.first; k < j.first + j.count; ++k) start_.push_back(in_reference(sim, mesh_, j, k));
+    const JointPose pose(sim, j);
+    for (int k = j.first; k < j.first + j.count; ++k)
+      start_.push_back(pose.in_reference(mesh_.corners[static_cast<std::size_t>(k)]));
     centre_.push_back(mesh_.centre(sim, j));
   }
 }
 
 double CrackGauge::separation(const Simulation& sim, std::size_t q) const {
   const InitialJoint& j = mesh_.joints[q];
+  const JointPose pose(sim, j);
   double worst = 0;
-  for (int k = j.first; k < j.first + j.count; ++k)
-    worst = std::max(worst, (in_reference(sim, mesh_, j, k) - start_[static_cast<std::size_t>(k)]).norm());
+  for (int k = j.first; k < j.first + j.count; ++k) {
+    const auto c = static_cast<std::size_t>(k);
+    worst = std::max(worst, (pose.in_reference(mesh_.corners[c]) - start_[c]).norm());
+  }
   return worst;
 }
 
