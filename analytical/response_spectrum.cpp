@@ -42,41 +42,23 @@ void check_oscillator(double period, double damping) {
     throw std::invalid_argument("damping ratio must be in [0, 1), got " + text(damping));
 }
 
-// The exact step map of the oscillator over a step h under a load varying
-// linearly from −a0 to −a1:  (u, v)₁ = A (u, v)₀ + B (a0, a1).
+// The step map with the step length it was made for (integrate reuses it
+// while the substep length stays the same).
 struct StepMap {
   double h = -1.0;
   double A[2][2] = {{0, 0}, {0, 0}};
   double B[2][2] = {{0, 0}, {0, 0}};
 };
 
-// A: the damped free vibration from (u0, v0),
-//   u(τ) = e^{−ξωτ} [u0 cos ω_d τ + (v0 + ξω u0)/ω_d sin ω_d τ],
-// and its derivative. B: the response from rest to p(τ) = p0 + p1 τ (the
-// right-hand side −a_g), the particular solution
-//   u_p(τ) = (p0 + p1 τ)/ω² − 2ξ p1/ω³,  u̇_p = p1/ω²
-// plus the free vibration that cancels u_p(0) and u̇_p(0); the columns are
-// a0 = 1 (p0 = −1, p1 = 1/h) and a1 = 1 (p0 = 0, p1 = −1/h).
 StepMap step_map(double h, double omega, double xi) {
+  const OscillatorStep o = oscillator_step(h, omega, xi);
   StepMap m;
   m.h = h;
-  const double wd = omega * std::sqrt(1.0 - xi * xi);
-  const double e = std::exp(-xi * omega * h);
-  const double c = std::cos(wd * h), s = std::sin(wd * h);
-  const double w2 = omega * omega;
-  m.A[0][0] = e * (c + xi * omega / wd * s);
-  m.A[0][1] = e * s / wd;
-  m.A[1][0] = -e * w2 / wd * s;
-  m.A[1][1] = e * (c - xi * omega / wd * s);
-  const auto forced = [&](double p0, double p1, int column) {
-    const double up0 = p0 / w2 - 2.0 * xi * p1 / (w2 * omega);
-    const double uph = up0 + p1 * h / w2;
-    const double vp = p1 / w2;
-    m.B[0][column] = uph - m.A[0][0] * up0 - m.A[0][1] * vp;
-    m.B[1][column] = vp - m.A[1][0] * up0 - m.A[1][1] * vp;
-  };
-  forced(-1.0, 1.0 / h, 0);
-  forced(0.0, -1.0 / h, 1);
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) {
+      m.A[i][j] = o.A[i][j];
+      m.B[i][j] = o.B[i][j];
+    }
   return m;
 }
 
@@ -150,6 +132,35 @@ double integrate(const std::vector<double>& t, const std::vector<double>& a, dou
 }
 
 }  // namespace
+
+// A: the damped free vibration from (u0, v0),
+//   u(τ) = e^{−ξωτ} [u0 cos ω_d τ + (v0 + ξω u0)/ω_d sin ω_d τ],
+// and its derivative. B: the response from rest to p(τ) = p0 + p1 τ (the
+// right-hand side −a_g), the particular solution
+//   u_p(τ) = (p0 + p1 τ)/ω² − 2ξ p1/ω³,  u̇_p = p1/ω²
+// plus the free vibration that cancels u_p(0) and u̇_p(0); the columns are
+// a0 = 1 (p0 = −1, p1 = 1/h) and a1 = 1 (p0 = 0, p1 = −1/h).
+OscillatorStep oscillator_step(double h, double omega, double xi) {
+  OscillatorStep m;
+  const double wd = omega * std::sqrt(1.0 - xi * xi);
+  const double e = std::exp(-xi * omega * h);
+  const double c = std::cos(wd * h), s = std::sin(wd * h);
+  const double w2 = omega * omega;
+  m.A[0][0] = e * (c + xi * omega / wd * s);
+  m.A[0][1] = e * s / wd;
+  m.A[1][0] = -e * w2 / wd * s;
+  m.A[1][1] = e * (c - xi * omega / wd * s);
+  const auto forced = [&](double p0, double p1, int column) {
+    const double up0 = p0 / w2 - 2.0 * xi * p1 / (w2 * omega);
+    const double uph = up0 + p1 * h / w2;
+    const double vp = p1 / w2;
+    m.B[0][column] = uph - m.A[0][0] * up0 - m.A[0][1] * vp;
+    m.B[1][column] = vp - m.A[1][0] * up0 - m.A[1][1] * vp;
+  };
+  forced(-1.0, 1.0 / h, 0);
+  forced(0.0, -1.0 / h, 1);
+  return m;
+}
 
 ResponseSpectrum response_spectrum(const std::vector<double>& time, const std::vector<double>& acceleration,
                                    const std::vector<double>& periods, double damping) {

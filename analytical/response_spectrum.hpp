@@ -52,6 +52,17 @@ ResponseSpectrum response_spectrum(const std::vector<double>& time, const std::v
 std::vector<double> oscillator_displacement(const std::vector<double>& time, const std::vector<double>& acceleration,
                                             double period, double damping);
 
+// The exact step of the oscillator (ω = 2π/T, damping ξ < 1) over a step h
+// under a ground acceleration varying linearly from a0 to a1:
+//   (u, u̇)₁ = A (u, u̇)₀ + B (a0, a1).
+// The step response_spectrum takes; also for linear maps of a record
+// (synthetic_target.hpp).
+struct OscillatorStep {
+  double A[2][2] = {{0, 0}, {0, 0}};
+  double B[2][2] = {{0, 0}, {0, 0}};
+};
+OscillatorStep oscillator_step(double h, double omega, double xi);
+
 // The periods the spectrum command uses when given none: 0.01 s to 5 s, 100
 // values evenly spaced in log T (s).
 std::vector<double> default_spectrum_periods();

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <functional>
 #include <stdexcept>
 
 namespace polydem::analytical {
@@ -129,6 +130,76 @@ std::vector<double> high_pass(const std::vector<double>& x, double dt, double f_
   return out;
 }
 
+// The record's length and envelope for parameters and options, after the
+// checks every simulation makes.
+struct RecordLayout {
+  ModulatingFunction q;
+  std::size_t n_noise = 0;  // samples carrying noise, from t = 0
+  std::size_t n_total = 0;  // plus the post-filter's tail
+};
+
+RecordLayout record_layout(const SyntheticMotionParameters& p, const SyntheticOptions& o) {
+  if (!(o.dt > 0.0 && o.dt <= 0.1)) throw std::invalid_argument("synthetic motion: dt must be in (0, 0.1] s");
+  if (!(o.high_pass >= 0.0) || !(o.min_frequency > 0.0) || !(o.energy_end > 0.5 && o.energy_end < 1.0) ||
+      !(o.tail >= 0.0) || !(o.g > 0.0))
+    throw std::invalid_argument("synthetic motion: options out of range");
+  if (!(p.f_mid > 0.0) || !(p.zeta_f > 0.0 && p.zeta_f < 1.0))
+    throw std::invalid_argument("synthetic motion: f_mid must be > 0 and zeta_f in (0, 1)");
+  RecordLayout l;
+  l.q = modulating_function(p, o.g);
+  const double t_noise = gamma_quantile(l.q.shape(), o.energy_end) / l.q.rate();
+  l.n_noise = static_cast<std::size_t>(std::ceil(t_noise / o.dt)) + 1;
+  l.n_total = l.n_noise + static_cast<std::size_t>(std::ceil(o.tail / o.dt));
+  return l;
+}
+
+// The filter bank behind x(t) = q(t) Σᵢ sᵢ(t) uᵢ, walked over the noise
+// samples k = 1 … n_noise − 1. Each impulse keeps its filter's state as a
+// complex number w with Im w = h(t − tᵢ; tᵢ): w is multiplied by
+// e^{(−ζω + iω_d)Δt} per step. Impulses whose |w| has decayed below 1e-9 of
+// its start contribute nothing measurable and are dropped (in order).
+//
+// At t_k the impulse of t_{k−1} enters carrying enter(k) (its uᵢ when
+// simulating, its index when the record is taken apart); then
+// sample(k, q(t_k), Σ h², live) sees every live impulse (h = w.imag(), and
+// its payload) before they advance one step.
+template <class Payload, class Enter, class Sample>
+void walk_filter_bank(const SyntheticMotionParameters& p, const SyntheticOptions& o, const RecordLayout& l,
+                      Enter enter, Sample sample) {
+  struct Impulse {
+    std::complex<double> w, step;
+    Payload payload;
+    double floor;
+  };
+  std::vector<Impulse> live;
+  const double root = std::sqrt(1.0 - p.zeta_f * p.zeta_f);
+  for (std::size_t k = 1; k < l.n_noise; ++k) {
+    const double t = static_cast<double>(k) * o.dt;
+    // The impulse at t_{k−1} enters; it has advanced one step by t_k.
+    const double tau = t - o.dt;
+    const double f = std::max(o.min_frequency, p.f_mid + p.f_slope * (tau - p.t_mid));
+    const double omega = 2.0 * pi * f;
+    const std::complex<double> step = std::exp(std::complex<double>(-p.zeta_f * omega, omega * root) * o.dt);
+    const double amplitude = omega / root;
+    live.push_back({amplitude * step, step, enter(k), 1e-9 * amplitude});
+    double norm = 0.0;
+    for (const Impulse& m : live) {
+      const double h = m.w.imag();
+      norm += h * h;
+    }
+    const ModulatingFunction& q = l.q;
+    const double envelope = q.alpha1 * std::pow(t, q.alpha2 - 1.0) * std::exp(-q.alpha3 * t);
+    sample(k, envelope, norm, live);
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < live.size(); ++i) {
+      Impulse& m = live[i];
+      m.w *= m.step;
+      if (std::abs(m.w) >= m.floor) live[kept++] = m;
+    }
+    live.resize(kept);
+  }
+}
+
 }  // namespace
 
 ModulatingFunction modulating_function(const SyntheticMotionParameters& p, double g) {
@@ -175,56 +246,50 @@ SyntheticMotionParameters sample_parameters(const EarthquakeScenario& s, RandomS
 }
 
 SyntheticRecord simulate_record(const SyntheticMotionParameters& p, const SyntheticOptions& o, RandomStream& rs) {
-  if (!(o.dt > 0.0 && o.dt <= 0.1)) throw std::invalid_argument("synthetic motion: dt must be in (0, 0.1] s");
-  if (!(o.high_pass >= 0.0) || !(o.min_frequency > 0.0) || !(o.energy_end > 0.5 && o.energy_end < 1.0) ||
-      !(o.tail >= 0.0) || !(o.g > 0.0))
-    throw std::invalid_argument("synthetic motion: options out of range");
-  if (!(p.f_mid > 0.0) || !(p.zeta_f > 0.0 && p.zeta_f < 1.0))
-    throw std::invalid_argument("synthetic motion: f_mid must be > 0 and zeta_f in (0, 1)");
-  const ModulatingFunction q = modulating_function(p, o.g);
-  const double t_noise = gamma_quantile(q.shape(), o.energy_end) / q.rate();
-  const std::size_t n_noise = static_cast<std::size_t>(std::ceil(t_noise / o.dt)) + 1;
-  const std::size_t n_total = n_noise + static_cast<std::size_t>(std::ceil(o.tail / o.dt));
-
-  // Each impulse i keeps its filter's state as a complex number w with
-  // Im w = h(t − tᵢ; tᵢ): w is multiplied by e^{(−ζω + iω_d)Δt} per step.
-  // Impulses whose |w| has decayed below 1e-9 of its start contribute
-  // nothing measurable to either sum and are dropped (in order).
-  struct Impulse {
-    std::complex<double> w, step;
-    double u, floor;
-  };
-  std::vector<Impulse> live;
-  std::vector<double> x(n_total, 0.0);
-  const double root = std::sqrt(1.0 - p.zeta_f * p.zeta_f);
-  for (std::size_t k = 1; k < n_noise; ++k) {
-    const double t = static_cast<double>(k) * o.dt;
-    // The impulse at t_{k−1} enters; it has advanced one step by t_k.
-    const double tau = t - o.dt;
-    const double f = std::max(o.min_frequency, p.f_mid + p.f_slope * (tau - p.t_mid));
-    const double omega = 2.0 * pi * f;
-    const std::complex<double> step = std::exp(std::complex<double>(-p.zeta_f * omega, omega * root) * o.dt);
-    const double amplitude = omega / root;
-    live.push_back({amplitude * step, step, rs.normal(), 1e-9 * amplitude});
-    double sum = 0.0, norm = 0.0;
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < live.size(); ++i) {
-      Impulse& m = live[i];
-      const double h = m.w.imag();
-      sum += h * m.u;
-      norm += h * h;
-      m.w *= m.step;
-      if (std::abs(m.w) >= m.floor) live[kept++] = m;
-    }
-    live.resize(kept);
-    const double envelope = q.alpha1 * std::pow(t, q.alpha2 - 1.0) * std::exp(-q.alpha3 * t);
-    x[k] = norm > 0.0 ? envelope * sum / std::sqrt(norm) : 0.0;
-  }
+  const RecordLayout l = record_layout(p, o);
+  std::vector<double> x(l.n_total, 0.0);
+  walk_filter_bank<double>(
+      p, o, l, [&](std::size_t) { return rs.normal(); },
+      [&](std::size_t k, double envelope, double norm, const auto& live) {
+        double sum = 0.0;
+        for (const auto& m : live) {
+          const double h = m.w.imag();
+          sum += h * m.payload;
+        }
+        x[k] = norm > 0.0 ? envelope * sum / std::sqrt(norm) : 0.0;
+      });
   SyntheticRecord r;
   r.parameters = p;
   r.dt = o.dt;
   r.acceleration = o.high_pass > 0.0 ? high_pass(x, o.dt, o.high_pass) : x;
   return r;
+}
+
+std::size_t for_each_unit_record(const SyntheticMotionParameters& p, const SyntheticOptions& o,
+                                 const std::function<void(std::size_t, const std::vector<double>&)>& visit) {
+  const RecordLayout l = record_layout(p, o);
+  // terms[i][j]: the pre-filter sample i + 1 + j per unit uᵢ (an impulse
+  // is live over consecutive samples from the one after it enters).
+  std::vector<std::vector<double>> terms;
+  walk_filter_bank<std::size_t>(
+      p, o, l,
+      [&](std::size_t k) {
+        terms.emplace_back();
+        return k - 1;
+      },
+      [&](std::size_t, double envelope, double norm, const auto& live) {
+        const double scale = norm > 0.0 ? envelope / std::sqrt(norm) : 0.0;
+        for (const auto& m : live) terms[m.payload].push_back(scale * m.w.imag());
+      });
+  for (std::size_t i = 0; i < terms.size(); ++i) {
+    // From sample i (zero: the impulse enters there) to the record's end.
+    std::vector<double> g(l.n_total - i, 0.0);
+    std::copy(terms[i].begin(), terms[i].end(), g.begin() + 1);
+    std::vector<double>().swap(terms[i]);
+    if (o.high_pass > 0.0) g = high_pass(g, o.dt, o.high_pass);
+    visit(i, g);
+  }
+  return l.n_total;
 }
 
 std::vector<SyntheticRecord> synthetic_suite(const EarthquakeScenario& s, int count, std::uint64_t seed,

@@ -33,7 +33,9 @@
 
 #include "analytical/probability.hpp"
 
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -103,6 +105,19 @@ struct SyntheticRecord {
 
 // One record for given parameters, drawing its noise from `rs`.
 SyntheticRecord simulate_record(const SyntheticMotionParameters& p, const SyntheticOptions& o, RandomStream& rs);
+
+// The record taken apart: for fixed parameters it is linear in its noise,
+//   acceleration = Σᵢ uᵢ gᵢ,
+// uᵢ the standard normals in the order simulate_record draws them and gᵢ
+// the record it makes with uᵢ = 1 and every other u zero, post-filter
+// included. Calls visit(i, gᵢ) for i = 0, 1, …, with gᵢ[j] the sample
+// i + j (the samples before i are zero) up to the record's end; returns
+// the record's length. Anything linear in the record then has its exact
+// variance Σᵢ (its value on gᵢ)²: the expected Arias intensity, an
+// oscillator's response (synthetic_target.hpp). Same checks as
+// simulate_record.
+std::size_t for_each_unit_record(const SyntheticMotionParameters& p, const SyntheticOptions& o,
+                                 const std::function<void(std::size_t, const std::vector<double>&)>& visit);
 
 // `count` records for the scenario. Record i (0-based) is named
 // "<prefix>_<i+1, zero-padded>" and draws its parameters, then its noise,
