@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 namespace polydem {
@@ -100,7 +101,9 @@ TEST(Assessment, AStoneFallingOffIsDislodgedAndCollapseWhenOneStoneCounts) {
   EXPECT_EQ(a.dislodged_blocks[0], "stone");
   EXPECT_NEAR(a.dislodged_mass, 2600.0 * 0.008, 1e-9);
   EXPECT_NEAR(a.dislodged_mass_fraction, 0.008 / 2.008, 1e-12);
-  EXPECT_GT(a.first_dislodged_time, 0.0);
+  ASSERT_EQ(a.fallen_blocks.size(), 1u);  // pushed off its base: it ends below its place
+  EXPECT_NEAR(a.fallen_mass_fraction, 0.008 / 2.008, 1e-12);
+  EXPECT_EQ(a.collapse_reason, "lost mass");
   EXPECT_NEAR(a.dislodged_low_z, 2.1, 1e-12);
   EXPECT_EQ(a.status, "collapsed");
 }
@@ -110,6 +113,40 @@ TEST(Assessment, AStoneFallingOffLeavesTheStructureDamagedByDefault) {
   EXPECT_EQ(r.assessment.dislodged_blocks.size(), 1u);
   EXPECT_EQ(r.assessment.status, "damaged");
   EXPECT_EQ(r.assessment.collapse_time, -1.0);
+  EXPECT_EQ(r.assessment.stones_lost(), 1);
+}
+
+// A stone still sliding fast when the run ends: where it stops is not
+// known yet, so the run is undetermined, not intact or damaged.
+TEST(Assessment, AStoneStillSlidingAtTheEndIsUndetermined) {
+  const RunReport r = run_scene(parse_deck(R"(
+[simulation]
+end_time = 0.05
+
+[joint]
+normal_stiffness = 1e9
+friction_angle = 10.0
+
+[[block]]
+name = "ground"
+shape = "box"
+size = [8.0, 8.0, 0.5]
+center = [0.0, 0.0, -0.25]
+motion = "fixed"
+
+[[block]]
+name = "stone"
+shape = "box"
+size = [0.2, 0.2, 0.2]
+center = [0.0, 0.0, 0.1]
+velocity = [3.0, 0.0, 0.0]
+)", "slide.toml"));
+  const Assessment& a = r.assessment;
+  EXPECT_EQ(a.status, "undetermined");
+  EXPECT_EQ(a.fastest_block, "stone");
+  EXPECT_GT(a.fastest_speed, 2.5);
+  EXPECT_NEAR(a.moving_speed_limit, std::sqrt(2 * 9.81 * 0.005), 1e-3);
+  EXPECT_TRUE(a.dislodged_blocks.empty());
 }
 
 }  // namespace
