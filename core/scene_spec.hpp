@@ -234,8 +234,7 @@ struct OutputSpec {
 // ends more than collapse_displacement away is dislodged (a stone lost),
 // and fallen if it ends that far below its place. The structure has
 // collapsed when the dislodged blocks make up collapse_mass_fraction of the
-// free blocks' mass at the end, or when the fallen blocks (with the monitor
-// block once past its point of no return) do during the run. The monitor
+// free blocks' mass at the end, or when the fallen blocks do during the run. The monitor
 // block (default: the highest free block, the spire's tip) gives the
 // collapse mode: Mode I if its horizontal displacement along the ground
 // motion changed sign before collapse (it rocked back and impacted), Mode II
@@ -249,7 +248,7 @@ struct AssessmentSpec {
   // 0.1: a tenth of the structure (the spire's solid tip is 11 % of it) has
   // come away, not one stone falling out of a standing structure.
   double collapse_mass_fraction = 0.1;
-  bool stop_on_collapse = false;      // only once collapse is certain (fallen mass, point of no return)
+  bool stop_on_collapse = false;      // only once collapse is certain (the fallen mass)
   std::string monitor_block;           // empty: the highest free block against gravity
   std::string monitor_group;           // not empty: the highest free block of this group
   int deck_line = 0;

@@ -152,8 +152,9 @@ void AssessmentMonitor::sample(const Simulation& sim) {
     mark_collapse(sim, "lost mass");
     return;
   }
-  if (monitor_ >= 0 && !fallen(sim, monitor_) && reaches(lost + b.props.mass[monitor_]) && past_no_return(sim))
-    mark_collapse(sim, "point of no return");
+  // The monitor's point of no return is reported (monitor_past_no_return)
+  // but does not decide: its support test fires on a tip that rocks on a
+  // course which itself rocks, and the tip then comes back.
 }
 
 void AssessmentMonitor::observe(const Simulation& sim) {

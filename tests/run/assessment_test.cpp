@@ -121,7 +121,7 @@ TEST(Assessment, AStoneFallingOffLeavesTheStructureDamagedByDefault) {
 TEST(Assessment, AStoneStillSlidingAtTheEndIsUndetermined) {
   const RunReport r = run_scene(parse_deck(R"(
 [simulation]
-end_time = 0.05
+end_time = 0.02
 
 [joint]
 normal_stiffness = 1e9
