@@ -37,7 +37,13 @@ AssessmentMonitor::AssessmentMonitor(const AssessmentSpec& spec, const Simulatio
   }
   if (monitor_ >= 0) result_.monitor_block = b.props.name[monitor_];
   for (int i : b.free_blocks) free_mass_ += b.props.mass[i];
-  result_.moving_speed_limit = std::sqrt(2 * gravity_.norm() * spec.damage_displacement);
+  // The bottom of the model as built: a block whose centre drops below it
+  // has fallen off the model and no longer bears on the verdict's timing.
+  model_bottom_ = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < static_cast<int>(b.state.position.size()); ++i)
+    for (int v = 0; v < static_cast<int>(b.props.local_shape[i].vertices.size()); ++v)
+      model_bottom_ = std::min(model_bottom_, world_vertex(b, i, v).dot(up_));
+  result_.moving_speed_limit = std::sqrt(2 * gravity_.norm() * 0.1 * spec.damage_displacement);
 }
 
 Vec3 AssessmentMonitor::displacement(const Simulation& sim, int i) const {
@@ -211,7 +217,7 @@ Assessment AssessmentMonitor::finish(const Simulation& sim) {
   Vec3 v_base = reference_ >= 0 ? b.state.velocity[reference_] : Vec3::Zero();
   for (int i : b.free_blocks) {
     a.max_residual_displacement = std::max(a.max_residual_displacement, displacement(sim, i).norm());
-    if (fallen(sim, i)) continue;
+    if (displacement(sim, i).dot(up_) + start_[i].dot(up_) < model_bottom_) continue;  // off the model
     const double v = (b.state.velocity[i] - v_base).norm() + b.state.angular_velocity[i].norm() * b.props.radius[i];
     if (v > a.fastest_speed) {
       a.fastest_speed = v;
