@@ -13,6 +13,7 @@ RockingResult pulse_response(const RockingBody& body, double a_p_g, double T_p, 
   ro.g = opt.g;
   ro.form = opt.form;
   ro.restitution = opt.restitution;
+  ro.overturn = opt.overturn;
   ro.dt = std::min(T_p, T_free) / opt.steps_per_pulse;
   ro.t_end = T_p + opt.free_periods * T_free;
   return simulate_rocking(body, sine_pulse_ground_motion(a_p_g * opt.g, T_p), ro);

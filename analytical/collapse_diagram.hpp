@@ -30,6 +30,7 @@ struct CollapseScanOptions {
   RockingForm form = RockingForm::nonlinear;
   double g = standard_gravity;
   std::optional<double> restitution;  // default: the body's eq. 10 value
+  OverturnRule overturn = OverturnRule::past_alpha;  // rocking_response.hpp
 };
 
 struct CollapseTransition {

@@ -1,6 +1,7 @@
 #include "analytical/rocking_response.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace polydem::analytical {
@@ -95,6 +96,8 @@ RockingResult simulate_rocking(const RockingBody& body, const GroundMotion& grou
   if (o.theta0 != 0.0) side = o.theta0 > 0.0 ? 1 : -1;
   else if (o.omega0 != 0.0) side = o.omega0 > 0.0 ? 1 : -1;
   if (side != 0) { r.uplifted = true; r.t_uplift = 0.0; }
+  double past_alpha_time = -1.0;  // OverturnRule::no_return: the last passage over α
+  CollapseMode past_alpha_mode = CollapseMode::none;
 
   auto record = [&] {
     if (o.record_history) r.history.push_back({t, y.theta, y.omega, ground.acceleration(t)});
@@ -141,7 +144,26 @@ RockingResult simulate_rocking(const RockingBody& body, const GroundMotion& grou
 
     const State y1 = st.step(side, t, y, h);
     ++r.steps;
-    if (side * y1.theta > body.alpha) {  // overturning inside this step
+    if (o.overturn == OverturnRule::no_return) {
+      if (side * y.theta <= body.alpha && side * y1.theta > body.alpha) {  // over α: note when, and the mode
+        past_alpha_time = t + h;
+        past_alpha_mode = r.impacts > 0 ? CollapseMode::mode_1 : CollapseMode::mode_2;
+      }
+      const bool still = t + h >= ground.quiet_after;
+      const bool beyond = side * y1.theta > body.alpha;
+      const bool no_way_back =
+          side * y1.omega >= 0.0 || rocking_energy_margin(body.p, body.alpha, o.form, side, y1.theta, y1.omega) <= 0.0;
+      if (beyond && (side * y1.theta >= 0.5 * std::numbers::pi || (still && no_way_back))) {
+        y = y1;
+        t = t_next;
+        r.overturned = true;
+        r.t_overturn = past_alpha_time;
+        r.mode = past_alpha_mode;
+        r.max_abs_theta = std::max(r.max_abs_theta, std::abs(y.theta));
+        record();
+        break;
+      }
+    } else if (side * y1.theta > body.alpha) {  // overturning inside this step
       auto f = [&](double tau) { return body.alpha - side * st.step(side, t, y, tau).theta; };
       const double tau = locate(f, 0.0, body.alpha - side * y.theta, h, body.alpha - side * y1.theta);
       y = st.step(side, t, y, tau);

@@ -17,6 +17,14 @@
 //     (the impact sequence is otherwise infinite in finite time);
 //   - overturning: |θ| > α (the centroid passes over the pivot). Mode I if at
 //     least one impact came first, Mode II if none (Zhang & Makris 2001).
+//     Under OverturnRule::no_return the body is followed past α (eq. 7
+//     holds there too): a pulse still acting can pull it back, as it does a
+//     block that passes α early in a strong pulse's first half. It has
+//     overturned once it is past α with the ground still for good and
+//     cannot come back (moving outward, or too slowly to climb back over
+//     α), or once |θ| reaches π/2 (on its side). The time and the mode are
+//     those of its last passage over α. This is the judgement a DEM run
+//     makes from where the blocks end up (run/assessment.hpp).
 
 #include <optional>
 #include <vector>
@@ -29,6 +37,9 @@ namespace polydem::analytical {
 
 enum class RockingForm { nonlinear, linearised };  // eq. 7 / eq. 9
 enum class CollapseMode { none, mode_1, mode_2 };
+// When a rocking body has overturned: at |θ| > α (the convention of the
+// collapse diagrams, Zhang & Makris 2001), or past α with no return.
+enum class OverturnRule { past_alpha, no_return };
 
 const char* to_string(CollapseMode m);
 
@@ -42,6 +53,7 @@ struct RockingOptions {
   // Stop early once a_g has gone quiet for good and the body can no longer
   // reach |θ| = α (rocking_energy_margin < 0) or is at rest.
   bool stop_when_safe = true;
+  OverturnRule overturn = OverturnRule::past_alpha;
   bool record_history = false;
   double theta0 = 0.0;  // initial rotation [rad]; nonzero starts rocking on its side
   double omega0 = 0.0;  // initial θ̇ [rad/s] (with theta0 = 0, rocks on its side)

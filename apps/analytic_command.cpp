@@ -285,7 +285,7 @@ struct CollapseArgs {
   pa::CollapseDiagramCase c;
   BodyArgs body;
   double count = 15, points = 80, restitution = 0.0;
-  bool linear = false, json = false;
+  bool linear = false, json = false, no_return = false;
   CLI::Option* restitution_given = nullptr;
 };
 
@@ -301,6 +301,8 @@ CLI::App* add_collapse(CLI::App& app, CollapseArgs& a) {
   positive(c, "tol", s.tolerance_g, "Width of each bisected transition, g");
   positive(c, "g", s.g, "Gravity, m/s2");
   flag(c, "linear", a.linear, "The small-angle form, eq. 9");
+  flag(c, "no-return", a.no_return,
+       "Overturned once past alpha with no return (the pulse over, or on its side), not at |theta| > alpha");
   a.restitution_given =
       number(c, "restitution", a.restitution, "Coefficient of restitution (default: eq. 10)")->option_text("NUMBER");
   flag(c, "json", a.json, "One JSON object");
@@ -312,6 +314,7 @@ int run_collapse(CollapseArgs& a) {
   a.c.body = a.body.spec;
   pa::CollapseScanOptions& s = a.c.scan;
   if (a.linear) s.form = pa::RockingForm::linearised;
+  if (a.no_return) s.overturn = pa::OverturnRule::no_return;
   if (a.restitution_given->count() > 0) s.restitution = a.restitution;
   a.c.T_p_count = whole("Tp_count", a.count, 1, 1000);
   s.coarse_points = whole("points", a.points, 2, 10000);

@@ -228,24 +228,27 @@ struct OutputSpec {
   double checkpoint_interval = 0.0;
 };
 
-// [assessment] : how a run is judged. A free block whose centroid ends more
-// than damage_displacement from where it started is visible damage; one that
-// moves more than collapse_displacement at any time is dislodged, and the
-// structure has collapsed when the dislodged blocks make up
-// collapse_mass_fraction of the free blocks' mass (run/assessment.hpp). The
-// monitor block (default: the highest free block, the spire's tip) gives the
+// [assessment] : how a run is judged, on where the blocks end up
+// (run/assessment.hpp). A free block whose centroid ends more than
+// damage_displacement from where it started is visible damage; one that
+// ends more than collapse_displacement away is dislodged (a stone lost),
+// and fallen if it ends that far below its place. The structure has
+// collapsed when the dislodged blocks make up collapse_mass_fraction of the
+// free blocks' mass at the end, or when the fallen blocks do during the run. The monitor
+// block (default: the highest free block, the spire's tip) gives the
 // collapse mode: Mode I if its horizontal displacement along the ground
 // motion changed sign before collapse (it rocked back and impacted), Mode II
 // if not (Zhang & Makris 2001, paper section 3.3).
 struct AssessmentSpec {
   double damage_displacement = 0.005;  // m
   double collapse_displacement = 0.1;  // m
-  // Collapse when the free blocks moved beyond collapse_displacement make up
-  // at least this fraction of the free blocks' mass; 0: the first one does.
+  // Collapse when the free blocks lost (dislodged at the end, or fallen)
+  // make up at least this fraction of the free blocks' mass; 0: the first
+  // one does.
   // 0.1: a tenth of the structure (the spire's solid tip is 11 % of it) has
   // come away, not one stone falling out of a standing structure.
   double collapse_mass_fraction = 0.1;
-  bool stop_on_collapse = false;
+  bool stop_on_collapse = false;      // only once collapse is certain (the fallen mass)
   std::string monitor_block;           // empty: the highest free block against gravity
   std::string monitor_group;           // not empty: the highest free block of this group
   int deck_line = 0;

@@ -31,7 +31,9 @@ namespace polydem {
 // 4: the subcontacts' pending dashpot force, the dropped shear and the
 //    re-sampled normal strain energies.
 // 5: the subcontacts' crush (the re-sampling's shift of a spring's zero).
-inline constexpr std::uint32_t kCheckpointVersion = 5;
+// 6: the assessment judges the final state: its excursions past the
+//    collapse fraction, the certain collapse.
+inline constexpr std::uint32_t kCheckpointVersion = 6;
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
 
 // A checkpoint file that cannot be used; the message says why.

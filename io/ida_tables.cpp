@@ -26,13 +26,13 @@ Json number_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(); }
 std::string ida_csv(const IdaReport& report) {
   std::string out =
       "record,im,scale,state,status,collapse_mode,peak_tip_displacement_m,residual_displacement_m,"
-      "max_displacement_m,max_bed_opening_m,max_vertical_opening_m,dislodged,damage_time_s,collapse_time_s,point\n";
+      "peak_displacement_m,max_bed_opening_m,max_vertical_opening_m,dislodged,damage_time_s,collapse_time_s,point\n";
   for (const IdaRecord& rec : report.records)
     for (const IdaRun& run : rec.runs) {
       const PointResult& r = run.result;
       out += cell(rec.name) + ',' + text(run.im) + ',' + text(run.factor) + ',' + run.state + ',' + r.status + ',' +
              r.collapse_mode + ',' + text(r.peak_tip_displacement) + ',' + text(r.residual_displacement) + ',' +
-             text(r.max_displacement) + ',' + text(r.max_bed_opening) + ',' + text(r.max_vertical_opening) + ',' +
+             text(r.peak_displacement) + ',' + text(r.max_bed_opening) + ',' + text(r.max_vertical_opening) + ',' +
              std::to_string(r.dislodged) + ',' + (r.damage_time >= 0 ? text(r.damage_time) : "nan") + ',' +
              (r.collapse_time >= 0 ? text(r.collapse_time) : "nan") + ',' +
              std::filesystem::path(r.directory).filename().string() + '\n';

@@ -142,25 +142,34 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   const Assessment& a = r.assessment;
   Json as = Json::object();
   as.set("collapse_mode", a.collapse_mode);
+  as.set("collapse_reason", a.collapse_reason);
   as.set("collapse_time_s", a.collapse_time >= 0 ? Json(a.collapse_time) : Json());
   as.set("damage_time_s", a.damage_time >= 0 ? Json(a.damage_time) : Json());
   // Under a rising load this is the acceleration at which the mechanism formed.
   as.set("ground_acceleration_at_damage_g",
          a.damage_time >= 0 ? Json(a.ground_acceleration_at_damage / kGravity) : Json());
-  as.set("max_displacement_m", a.max_displacement);
-  as.set("max_displacement_block", a.max_displacement_block);
+  as.set("peak_displacement_m", a.peak_displacement);
+  as.set("peak_displacement_block", a.peak_displacement_block);
   as.set("max_residual_displacement_m", a.max_residual_displacement);
   as.set("monitor_block", a.monitor_block);
   as.set("monitor_peak_displacement_m", a.monitor_peak_displacement);
+  as.set("monitor_residual_displacement_m", a.monitor_residual_displacement);
+  as.set("monitor_past_no_return", a.monitor_past_no_return);
+  as.set("fastest_speed_m_s", a.fastest_speed);
+  as.set("fastest_block", a.fastest_block);
+  as.set("moving_speed_limit_m_s", a.moving_speed_limit);
+  as.set("stones_lost", a.stones_lost());
   set_crack(as, a);
   Json dis = Json::object();
-  dis.set("count", static_cast<int>(a.dislodged_blocks.size()));
+  dis.set("count", a.stones_lost());
   dis.set("mass_kg", a.dislodged_mass);
   dis.set("mass_fraction", a.dislodged_mass_fraction);
-  dis.set("first_time_s", a.first_dislodged_time >= 0 ? Json(a.first_dislodged_time) : Json());
   dis.set("lowest_z_m", a.dislodged_blocks.empty() ? Json() : Json(a.dislodged_low_z));
   dis.set("highest_z_m", a.dislodged_blocks.empty() ? Json() : Json(a.dislodged_high_z));
   dis.set("blocks", Json(a.dislodged_blocks));
+  dis.set("fallen_count", static_cast<int>(a.fallen_blocks.size()));
+  dis.set("fallen_mass_fraction", a.fallen_mass_fraction);
+  dis.set("fallen_blocks", Json(a.fallen_blocks));
   as.set("dislodged", std::move(dis));
   s.set("assessment", std::move(as));
   if (!r.walking.bed_joint.empty() || !r.walking.vertical_joint.empty()) {
@@ -200,8 +209,8 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
       j.set("blocks", g.blocks);
       j.set("mass_kg", g.mass);
       // The group's own collapse measure: its blocks the assessment found
-      // dislodged (moved beyond assessment.collapse_displacement), and their
-      // fraction of the group's mass.
+      // dislodged (ending beyond assessment.collapse_displacement from their
+      // place), and their fraction of the group's mass.
       j.set("dislodged_blocks", g.dislodged);
       j.set("dislodged_mass_fraction", g.mass > 0 ? g.dislodged_mass / g.mass : 0.0);
       gs.push_back(std::move(j));
@@ -269,7 +278,9 @@ PointResult point_result_from_summary(const std::string& text, const std::string
   if (const Json* a = s.find("assessment")) {
     r.collapse_mode = string_or(a->find("collapse_mode"), "");
     r.peak_tip_displacement = number_or(a->find("monitor_peak_displacement_m"), 0);
-    r.max_displacement = number_or(a->find("max_displacement_m"), 0);
+    // A summary of an earlier version names the peak max_displacement_m.
+    const Json* peak = a->find("peak_displacement_m");
+    r.peak_displacement = number_or(peak ? peak : a->find("max_displacement_m"), 0);
     r.residual_displacement = number_or(a->find("max_residual_displacement_m"), 0);
     r.collapse_time = number_or(a->find("collapse_time_s"), -1);
     r.damage_time = number_or(a->find("damage_time_s"), -1);

@@ -55,13 +55,13 @@ void write_sweep_tables(const std::string& out_dir, const SweepTables& t) {
 
   std::string csv;
   for (const auto& key : t.keys) csv += key + ",";
-  csv += "status,collapse_mode,peak_tip_displacement_m,max_displacement_m,residual_displacement_m,collapse_time_s,"
+  csv += "status,collapse_mode,peak_tip_displacement_m,peak_displacement_m,residual_displacement_m,collapse_time_s,"
          "run_wall_seconds,steps,exit_code,point,dislodged_blocks\n";
   for (const SweepRow* r : rows) {
     for (const auto& key : t.keys) csv += cell(value_of(r->point, key)) + ",";
     const PointResult& p = r->result;
     csv += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", p.status, p.collapse_mode, cell(p.peak_tip_displacement),
-                       cell(p.max_displacement), cell(p.residual_displacement),
+                       cell(p.peak_displacement), cell(p.residual_displacement),
                        cell(none(p.collapse_time, p.collapse_time >= 0)), cell(p.wall_seconds), p.steps, p.exit_code,
                        r->id);
     csv.pop_back();
@@ -92,7 +92,7 @@ void write_sweep_tables(const std::string& out_dir, const SweepTables& t) {
   strings("collapse_mode", [](const SweepRow& r) { return r.result.collapse_mode; });
   strings("point", [](const SweepRow& r) { return r.id; });
   column("peak_tip_displacement", "m", [](const PointResult& p) { return p.peak_tip_displacement; });
-  column("max_displacement", "m", [](const PointResult& p) { return p.max_displacement; });
+  column("peak_displacement", "m", [](const PointResult& p) { return p.peak_displacement; });
   column("residual_displacement", "m", [](const PointResult& p) { return p.residual_displacement; });
   column("collapse_time", "s", [&](const PointResult& p) { return none(p.collapse_time, p.collapse_time >= 0); });
   column("run_wall_seconds", "s", [](const PointResult& p) { return p.wall_seconds; });

@@ -72,7 +72,7 @@ py::dict point_dict(const SweepPoint& point, const PointResult& r) {
   d["status"] = r.status;
   d["collapse_mode"] = r.collapse_mode;
   d["peak_tip_displacement"] = r.peak_tip_displacement;
-  d["max_displacement"] = r.max_displacement;
+  d["peak_displacement"] = r.peak_displacement;
   d["residual_displacement"] = r.residual_displacement;
   d["collapse_time"] = r.collapse_time;
   d["dislodged"] = r.dislodged;

@@ -240,6 +240,8 @@ SceneRun::SceneRun(const SceneSpec& spec, const RunControl& control)
 
   // 2. Monitors and the recorder.
   loop_ = std::make_unique<Loop>(spec_, sim);
+  loop_->assessment.set_loads_final_time(std::max(
+      loads_final_time(spec_), control_.ground_acceleration ? control_.ground_acceleration_final_time : 0.0));
   loop_->wall_start = wall_start;
   LoopState& loop = loop_->state;
   const double end = spec_.simulation.end_time;

@@ -62,7 +62,7 @@ struct RunProfile {
 };
 
 struct RunReport {
-  std::string status;  // "intact", "damaged" or "collapsed" (see assessment), "unstable"
+  std::string status;  // "intact", "damaged", "collapsed" or "undetermined" (see assessment), "unstable"
   bool settled = false;      // stopped early: every block at rest (simulation.settle_*)
   bool unstable = false;     // stopped by the guard (see Simulation::check_health)
   std::string instability;   // the guard's message
@@ -166,7 +166,7 @@ class SceneRun {
   // (s; the loop's own test: stop when time ≥ until − dt/2) or the run is
   // over. Returns the steps taken. Does nothing once over() or finished.
   long advance(long max_steps, double until = std::numeric_limits<double>::infinity());
-  // The run has reached its end time, collapsed (assessment.stop_on_collapse),
+  // The run has reached its end time, collapsed for certain (assessment.stop_on_collapse),
   // settled, or been stopped by the guard.
   bool over() const;
   bool finished() const { return finished_; }

@@ -45,11 +45,17 @@ std::string crack(const Assessment& a) {
                      cm(a.crack_high_z));
 }
 
-// "largest displacement 534 mm (tip), 5.0 mm at the end"
+// "peak displacement 534 mm (tip), 5.0 mm at the end"
 std::string displacements(const Assessment& a) {
-  return fmt::format("largest displacement {} ({}), {} at the end", length(a.max_displacement),
-                     a.max_displacement_block.empty() ? "no free block" : a.max_displacement_block,
+  return fmt::format("peak displacement {} ({}), {} at the end", length(a.peak_displacement),
+                     a.peak_displacement_block.empty() ? "no free block" : a.peak_displacement_block,
                      length(a.max_residual_displacement));
+}
+
+// ": the tip past its point of no return" when that decided the collapse.
+std::string reason(const Assessment& a) {
+  if (a.collapse_reason != "point of no return") return "";
+  return fmt::format("; {} past its point of no return", a.monitor_block);
 }
 
 std::string status_line(const SceneSpec& spec, const RunReport& r) {
@@ -58,15 +64,18 @@ std::string status_line(const SceneSpec& spec, const RunReport& r) {
   const std::string first_moved =
       when.empty() ? "" : fmt::format("the first block moved {} {}", length(spec.assessment.damage_displacement), when);
   if (a.status == "collapsed")
-    return fmt::format("collapsed (Mode {}) at t = {:.3g} s: the mechanism formed {}{}", a.collapse_mode,
-                       a.collapse_time, when.empty() ? "at the start" : when, crack(a));
+    return fmt::format("collapsed (Mode {}) at t = {:.3g} s: the mechanism formed {}{}{}", a.collapse_mode,
+                       a.collapse_time, when.empty() ? "at the start" : when, crack(a), reason(a));
+  if (a.status == "undetermined")
+    return fmt::format("undetermined (run longer): {} still moves at {:.3g} m/s at t = {:.3g} s (over {:.3g} m/s); {}",
+                       a.fastest_block, a.fastest_speed, r.end_time, a.moving_speed_limit, displacements(a));
   if (a.status == "damaged")
     return fmt::format("damaged: {}{}{}{}", first_moved, first_moved.empty() ? "" : "; ", displacements(a), crack(a));
   return fmt::format("intact: {}{}{}", displacements(a), first_moved.empty() ? "" : "; ", first_moved);
 }
 
-// The groups the fallen blocks belong to, in the deck's order, each with how
-// many of its blocks fell: "course18 (16 of 16), tip"; at most four named.
+// The groups the lost blocks belong to, in the deck's order, each with how
+// many of its blocks were lost: "course18 (16 of 16), tip"; at most four named.
 std::string fallen_groups(const SceneSpec& spec, const std::vector<std::string>& fallen) {
   struct Count {
     std::string name;
@@ -97,16 +106,17 @@ std::string fallen_groups(const SceneSpec& spec, const std::vector<std::string>&
   return out;
 }
 
-std::string fell_line(const SceneSpec& spec, const RunReport& r) {
+std::string lost_line(const SceneSpec& spec, const RunReport& r) {
   const Assessment& a = r.assessment;
   if (a.dislodged_blocks.empty())
-    return fmt::format("fell: nothing (no block moved more than {})", length(spec.assessment.collapse_displacement));
+    return fmt::format("lost: nothing (no block ends more than {} from its place)",
+                       length(spec.assessment.collapse_displacement));
   const std::string from = a.dislodged_high_z - a.dislodged_low_z < 0.005
                                ? fmt::format("z = {:.2f} m", a.dislodged_low_z)
                                : fmt::format("z = {:.2f}-{:.2f} m", a.dislodged_low_z, a.dislodged_high_z);
-  return fmt::format("fell: {} of {} block{}, {:.3g} % of the free mass, from {}{}", a.dislodged_blocks.size(),
-                     r.free_blocks, r.free_blocks == 1 ? "" : "s", 100 * a.dislodged_mass_fraction, from,
-                     fallen_groups(spec, a.dislodged_blocks));
+  return fmt::format("lost: {} of {} block{} ({} fell), {:.3g} % of the free mass, from {}{}",
+                     a.dislodged_blocks.size(), r.free_blocks, r.free_blocks == 1 ? "" : "s", a.fallen_blocks.size(),
+                     100 * a.dislodged_mass_fraction, from, fallen_groups(spec, a.dislodged_blocks));
 }
 
 std::string energy_line(const RunReport& r) {
@@ -122,7 +132,7 @@ std::string energy_line(const RunReport& r) {
 
 std::vector<std::string> verdict_lines(const SceneSpec& spec, const RunReport& report) {
   if (report.unstable) return {};
-  return {status_line(spec, report), fell_line(spec, report), energy_line(report)};
+  return {status_line(spec, report), lost_line(spec, report), energy_line(report)};
 }
 
 }  // namespace polydem

@@ -76,7 +76,13 @@ CollapseTrial run_trial(const SceneSpec& s, double deg, double a_g, const Collap
   CollapseTrial t;
   t.direction_deg = deg;
   t.acceleration_g = a_g;
-  t.collapsed = r.assessment.status == "collapsed";
+  // Under a held or rising acceleration nothing pulls a mechanism back: a
+  // trial that ends still moving with the collapse fraction away from its
+  // place (undetermined for a run in general) has collapsed.
+  t.collapsed = r.assessment.status == "collapsed" ||
+                (r.assessment.status == "undetermined" &&
+                 r.assessment.dislodged_mass > 0 &&
+                 r.assessment.dislodged_mass_fraction >= s.assessment.collapse_mass_fraction);
   t.steps = r.steps;
   t.wall_seconds = r.wall_seconds;
   t.assessment = r.assessment;
@@ -178,8 +184,9 @@ CollapseTrial static_collapse_trial(const SceneSpec& scene, double deg, double a
   CollapseTrial t;
   t.direction_deg = deg;
   t.acceleration_g = a_g;
-  // Collapse as a run judges it: the dislodged mass fraction
-  // (assessment.collapse_mass_fraction), sampled every 16th step.
+  // Collapse as a run judges it: the fallen mass fraction
+  // (assessment.collapse_mass_fraction), sampled every 16th step, stops the
+  // trial; the blocks dislodged at the end of it count too.
   AssessmentMonitor monitor(s.assessment, *sim, g, s.simulation.overlap_tolerance);
   for (int k = 1; k <= o.static_increments && !t.collapsed && !t.no_equilibrium; ++k) {
     // A ground acceleration +a d pushes the blocks by −m a d.
@@ -207,6 +214,7 @@ CollapseTrial static_collapse_trial(const SceneSpec& scene, double deg, double a
     }
   }
   t.assessment = monitor.finish(*sim);
+  if (t.assessment.status == "collapsed") t.collapsed = true;
   if (t.no_equilibrium) t.assessment.status = t.collapsed ? "collapsed" : "no_equilibrium";
   t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return t;

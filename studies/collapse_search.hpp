@@ -13,8 +13,9 @@
 //               `static_increments` equal steps, each solved until the
 //               unbalanced-force ratio falls below `static_ratio`. The trial
 //               stands when the last increment is solved; it collapses when
-//               the blocks moved beyond the deck's collapse_displacement make
-//               up its collapse_mass_fraction, or when an increment finds no
+//               the blocks fallen (or, at its end, dislodged) beyond the
+//               deck's collapse_displacement make up its
+//               collapse_mass_fraction, or when an increment finds no
 //               equilibrium in `static_max_steps` steps while a mechanism is
 //               under way; an increment without equilibrium and with nothing
 //               moving away stops the search (`no_equilibrium`, below).
@@ -22,7 +23,11 @@
 //               question: no rise time to choose, no hold time to wait out.
 // Each trial is the caller's scene with its ground motion, end time and
 // output edited field by field (no deck text is parsed again): the
-// histories and the energy ledger are off and the run stops at collapse.
+// histories and the energy ledger are off and the run stops once collapse
+// is certain (run/assessment.hpp). A dynamic trial collapses when the run
+// says so, or when it ends still moving with the collapse fraction of the
+// free mass away from its place: under a held acceleration nothing brings it
+// back.
 #pragma once
 
 #include "run/run_scene.hpp"

@@ -11,14 +11,14 @@ namespace polydem {
 
 // What the sweep keeps of one run (io/summary.hpp reads it from summary.json).
 struct PointResult {
-  std::string status;         // intact | damaged | collapsed | unstable | error
+  std::string status;         // intact | damaged | collapsed | undetermined | unstable | error
   std::string collapse_mode;  // I | II | "" (not collapsed)
   double peak_tip_displacement = 0;  // m, the monitor block's largest displacement along the motion
-  double max_displacement = 0;       // m, of any block
+  double peak_displacement = 0;      // m, the largest of any block during the run
   double residual_displacement = 0;  // m, largest at the end
   double collapse_time = -1;         // s, -1 when not collapsed
   double damage_time = -1;           // s, -1 when never damaged
-  int dislodged = 0;                 // stones moved beyond collapse_displacement (assessment.dislodged.count)
+  int dislodged = 0;                 // stones lost: ending beyond collapse_displacement (assessment.dislodged.count)
   // Read for ensembles (studies/ensemble.hpp); NaN when the summary has none:
   // a_g at the first damage (the mechanism's acceleration under a ramp), in g,
   // and with output.walking the largest and the residual bed and vertical

@@ -85,7 +85,7 @@ def collapse_search(scene, directions=(0.0,), method="bisection", *, low_g=0.05,
 
 class SweepResult:
     """points: one row per run (the varied keys, status, collapse_mode,
-    peak_tip_displacement, max_displacement, residual_displacement,
+    peak_tip_displacement, peak_displacement, residual_displacement,
     collapse_time, dislodged, steps, wall_seconds, exit_code, message); columns (a
     boundary search only): one row per column of the outer grid with
     damage_threshold, stones_lost_threshold, collapse_threshold, collapse_mode, runs."""
@@ -120,7 +120,7 @@ def sweep(scene, vary=None, search=None, resolution=None, threads=1, progress=No
         f": {p['status']}{' (Mode ' + p['collapse_mode'] + ')' if p['collapse_mode'] else ''}  ({p['wall_seconds']:.1f} s)"))
     rows, columns = _polydem.sweep(scene.parsed(), axes, search or "", float(resolution or 0), int(threads), report)
     keys = [k for k, _ in axes] + ([search.split("=", 1)[0]] if search else [])
-    fields = keys + ["status", "collapse_mode", "peak_tip_displacement", "max_displacement", "residual_displacement",
+    fields = keys + ["status", "collapse_mode", "peak_tip_displacement", "peak_displacement", "residual_displacement",
                      "collapse_time", "dislodged", "steps", "wall_seconds", "exit_code", "message"]
     cols = structured(columns, [k for k, _ in axes] + ["damage_threshold", "stones_lost_threshold", "collapse_threshold", "collapse_mode",
                                                      "runs", "wall_seconds"]) if columns else structured([])
@@ -172,7 +172,7 @@ def ensemble(scene, replicas, seed=None, threads=1, progress=None, set=None):
 class IdaResult:
     """runs: one row per run (record, im, scale, state, status,
     collapse_mode, peak_tip_displacement, residual_displacement,
-    max_displacement, max_bed_opening, max_vertical_opening (NaN unless
+    peak_displacement, max_bed_opening, max_vertical_opening (NaN unless
     output.walking), dislodged, damage_time, collapse_time (-1: none), steps,
     wall_seconds, exit_code, message), by record then IM; records: one row
     per record (record, record_im, damage_im, stones_lost_im, collapse_im
@@ -218,7 +218,7 @@ def ida(scene, suite, im="pga", period=None, damping=0.05, *, stripes=None, scal
     rows, records = _polydem.ida(scene.parsed(), str(suite), im, float(period or 0), float(damping), mode, levels, h,
                                  int(threads), "" if out is None else str(out), report)
     fields = ["record", "im", "scale", "state", "status", "collapse_mode", "peak_tip_displacement",
-              "residual_displacement", "max_displacement", "max_bed_opening", "max_vertical_opening", "dislodged",
+              "residual_displacement", "peak_displacement", "max_bed_opening", "max_vertical_opening", "dislodged",
               "damage_time", "collapse_time", "steps", "wall_seconds", "exit_code", "message"]
     return IdaResult(structured(rows, fields) if rows else structured([]),
                      structured(records, ["record", "record_im", "damage_im", "stones_lost_im", "collapse_im",

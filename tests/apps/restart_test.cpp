@@ -221,7 +221,7 @@ void expect_identical(const RunReport& a, const RunReport& b) {
     EXPECT_EQ(a.checks[k].passed, b.checks[k].passed);
   }
   EXPECT_EQ(a.status, b.status);
-  EXPECT_TRUE(same_bits(a.assessment.max_displacement, b.assessment.max_displacement));
+  EXPECT_TRUE(same_bits(a.assessment.peak_displacement, b.assessment.peak_displacement));
   EXPECT_TRUE(same_bits(a.assessment.damage_time, b.assessment.damage_time));
   EXPECT_EQ(a.assessment.moved_blocks, b.assessment.moved_blocks);
 }
@@ -233,7 +233,7 @@ TEST_F(Restart, KilledRunContinuesBitwiseIdentical) {
   const RunReport ref = run_scene(spec);
   ASSERT_GT(ref.steps, 1000);
   ASSERT_GT(ref.detections, 2) << "the scene should slide enough to re-detect contacts";
-  ASSERT_GT(ref.assessment.max_displacement, 1e-3) << "the slab should slide";
+  ASSERT_GT(ref.assessment.peak_displacement, 1e-3) << "the slab should slide";
 
   // Kill points: a random step past the first checkpoint (logged), and the
   // last step before the end.

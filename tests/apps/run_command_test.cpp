@@ -400,7 +400,7 @@ TEST_F(VerdictTest, ACollapseSaysWhenHowAndWhatFell) {
   EXPECT_TRUE(has(out_lines_[0], ": the mechanism formed at 0.5 g (t = ")) << out_lines_[0];
   // Both stones went (the collapse waits for 90 % of the mass), each its
   // group's only block; they started at heights 0.5 and 1.5 m.
-  EXPECT_EQ(out_lines_[1], "fell: 2 of 2 blocks, 100 % of the free mass, from z = 0.50-1.50 m: course0, course1");
+  EXPECT_EQ(out_lines_[1], "lost: 2 of 2 blocks (2 fell), 100 % of the free mass, from z = 0.50-1.50 m: course0, course1");
   EXPECT_TRUE(starts_with(out_lines_[2], "energy: ")) << out_lines_[2];
   EXPECT_TRUE(has(out_lines_[2], " put in, ")) << out_lines_[2];
   EXPECT_TRUE(has(out_lines_[2], " dissipated (slip ")) << out_lines_[2];
@@ -412,9 +412,9 @@ TEST_F(VerdictTest, ACollapseSaysWhenHowAndWhatFell) {
 TEST_F(VerdictTest, AStoneThatStaysPutIsIntactAndNothingFell) {
   EXPECT_EQ(run_binary(kDeck), exit_success) << err_;
   ASSERT_EQ(out_lines_.size(), 3u) << err_;
-  EXPECT_TRUE(starts_with(out_lines_[0], "intact: largest displacement ")) << out_lines_[0];
+  EXPECT_TRUE(starts_with(out_lines_[0], "intact: peak displacement ")) << out_lines_[0];
   EXPECT_TRUE(has(out_lines_[0], " µm (stone), ")) << out_lines_[0];
-  EXPECT_EQ(out_lines_[1], "fell: nothing (no block moved more than 100 mm)");
+  EXPECT_EQ(out_lines_[1], "lost: nothing (no block ends more than 100 mm from its place)");
   EXPECT_TRUE(starts_with(out_lines_[2], "energy: ")) << out_lines_[2];
   EXPECT_TRUE(has(out_lines_[2], "; numerical ")) << out_lines_[2];
   // The deck's check comes before the verdict, on stderr.

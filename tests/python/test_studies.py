@@ -31,7 +31,7 @@ def test_sweep_matches_single_runs():
     assert list(p["ground_motion.acceleration_g"]) == [0.1, 0.45] and len(seen) == 2
     assert p["status"][0] == "intact" and p["status"][1] != "intact"
     one = polydem.run(scene, set={"ground_motion.acceleration_g": 0.45}, threads=1, progress=False)
-    assert p["max_displacement"][1] == one.assessment["max_displacement_m"]
+    assert p["peak_displacement"][1] == one.assessment["peak_displacement_m"]
     assert p["steps"][1] == one.steps
     assert p["dislodged"][1] == one.assessment["dislodged"]["count"]
 

@@ -17,7 +17,8 @@ namespace {
 // top stones slide together along x at 10 mm/s; the top one also lifts at
 // `lift` m/s. After 1 s the joint at z = 0.5 m has slid 10 mm without
 // opening, the one at z = 1 m has opened by lift·t, the one at z = 0 has not
-// moved.
+// moved. The stones still drift at the end, so the run is `undetermined`
+// (run/assessment.hpp); its crack is measured all the same.
 std::string column_deck(double lift, const std::string& extra = "") {
   std::ostringstream d;
   d << "[simulation]\nend_time = 1.0\ngravity = [0.0, 0.0, 0.0]\ncontact_margin = 0.003\n" << extra << "\n"
@@ -38,7 +39,7 @@ std::string column_deck(double lift, const std::string& extra = "") {
 
 TEST(Crack, AJointThatSlidCracksAndStonesMovingTogetherDoNot) {
   const RunReport r = run_scene(parse_deck(column_deck(0.0), "slide.toml"));
-  ASSERT_EQ(r.assessment.status, "damaged");
+  ASSERT_EQ(r.assessment.status, "undetermined");
   EXPECT_NEAR(r.end_time, 1.0, 1e-3);
   // One joint, the slid one at z = 0.5 m: one point has no axis.
   EXPECT_EQ(r.assessment.opened_joints, 1);
@@ -50,7 +51,7 @@ TEST(Crack, ASlidJointAndAnOpenedOneAboveItMakeAVerticalCrack) {
     std::string text = column_deck(0.01);
     if (*margin) text.replace(text.find("contact_margin = 0.003"), 22, margin);
     const RunReport r = run_scene(parse_deck(text, "lift.toml"));
-    ASSERT_EQ(r.assessment.status, "damaged") << margin;
+    ASSERT_EQ(r.assessment.status, "undetermined") << margin;
     EXPECT_EQ(r.assessment.opened_joints, 2) << margin;
     EXPECT_NEAR(r.assessment.crack_angle_deg, 90.0, 1e-9) << margin;
     EXPECT_NEAR(r.assessment.crack_low_z, 0.5, 1e-12) << margin;

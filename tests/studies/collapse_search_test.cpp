@@ -153,7 +153,7 @@ TEST(CollapseSearch, StaticTrialStandsBelowAndCollapsesAbove) {
   CollapseSearchOptions o;
   const CollapseTrial below = static_collapse_trial(s, 0.0, 0.45, o);
   EXPECT_FALSE(below.collapsed);
-  EXPECT_LT(below.assessment.max_displacement, 1e-3);
+  EXPECT_LT(below.assessment.peak_displacement, 1e-3);
   const CollapseTrial above = static_collapse_trial(s, 0.0, 0.55, o);
   EXPECT_TRUE(above.collapsed);
   EXPECT_FALSE(above.no_equilibrium);
@@ -193,7 +193,7 @@ TEST(CollapseSearch, AStaticSolveOutOfStepsWithAMechanismUnderWayIsACollapse) {
   EXPECT_TRUE(t.collapsed);
   EXPECT_EQ(t.assessment.status, "collapsed");
   EXPECT_NE(t.no_equilibrium_detail.find("a mechanism under way"), std::string::npos) << t.no_equilibrium_detail;
-  EXPECT_LT(t.assessment.max_displacement, s.assessment.collapse_displacement);  // the monitor had not seen it
+  EXPECT_LT(t.assessment.peak_displacement, s.assessment.collapse_displacement);  // the monitor had not seen it
 }
 
 }  // namespace
