@@ -108,6 +108,7 @@ def run_quantities(s):
                 ("crack lowest z", f'{a["crack_lowest_z_m"]:.2f}', "m"),
                 ("crack highest z", f'{a["crack_highest_z_m"]:.2f}', "m")]
     out += [("dislodged", str(a["dislodged"]["count"]), "blocks"),
+            ("fallen", str(a["dislodged"].get("fallen_count", 0)), "blocks"),
             ("simulated time", f'{s["end_time_s"]:.3f}', "s"),
             ("steps", str(s["steps"]), ""),
             ("time step", f'{s["time_step_s"]:.4g}', "s"),

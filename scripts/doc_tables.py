@@ -222,7 +222,10 @@ def table_convergence():
         text = q["status"] + (f' {q["collapse mode"]}' if q["collapse mode"] != "-" else "")
         if "collapse time" in q:
             text += f' at {q["collapse time"]} s'
-        return text + f', {q["dislodged"]} fell'
+        return text + f', {lost(q)}'
+
+    def lost(q):
+        return f'{q["dislodged"]} lost' + (f' ({q["fallen"]} fell)' if "fallen" in q else "")
 
     def setting_name(s):
         name = s.replace(" x", " ×")
@@ -233,7 +236,7 @@ def table_convergence():
         v = q.get("numerical energy of slip and damping")
         return f"{float(v):+.2f} %" if v not in (None, "", "-") else "-"
 
-    header = ["setting", "time step (µs)", "mechanism (g)", "crack", "stones fallen", "main job",
+    header = ["setting", "time step (µs)", "mechanism (g)", "crack", "stones lost", "main job",
               "numerical (of slip + damping)", "pulse 0.25 g", "pulse 0.35 g", "pulse 0.5 g", "λ onto a window face (g, bracket)"]
     table = []
     for s in settings:
@@ -241,7 +244,7 @@ def table_convergence():
         line = [setting_name(s)]
         if m:
             line += [f'{1e6 * float(m["time step"]):.2f}', m["mechanism acceleration"], crack(m),
-                     m["dislodged"], m["status"] + (f' {m["collapse mode"]}' if m["collapse mode"] != "-" else ""),
+                     lost(m), m["status"] + (f' {m["collapse mode"]}' if m["collapse mode"] != "-" else ""),
                      numerical(m)]
         else:
             line += ["not run"] * 6
