@@ -3,9 +3,11 @@
 // pass. The decks are what a user runs; this test is what keeps them honest.
 #include "run/run_scene.hpp"
 #include "io/deck.hpp"
+#include "core/units.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 namespace polydem {
@@ -130,6 +132,38 @@ TEST(VerificationOverlapModel, AWinklerBedLiftsItsHeelAtTheMiddleThird) {
   const double b_over_h = r.checks[0].expected;
   std::cout << "  heel lifts at " << r.checks[0].measured << " g, b/(3h) = " << b_over_h / 3 << "\n";
   EXPECT_NEAR(r.checks[0].measured, b_over_h / 3, 0.005);
+}
+
+// On a Winkler bed a rocking block cannot reach b/h: as the resultant nears
+// the toe the bed under it narrows to a strip of width c whose pressure
+// acts c/3 inside the toe, and the block must turn by θ = 2W/(kn·w·c²) to
+// squeeze the strip, moving its centroid θ·h_c towards the toe. A horizontal
+// load λW at the centroid's height h_c is held while
+//   λ·h_c ≤ b/2 − c/3 − θ·h_c   for some c,
+// whose right side is largest at c³ = 12·W·h_c/(kn·w): the limit is
+// λ_W = (b − c)/(2·h_c), below b/h by c/(2·h_c). rocking_onset.toml's
+// pillar (b = w = 0.5 m, h_c = 1 m, 12.75 kN, kn = 98 GPa/m): c = 14.6 mm,
+// λ_W = 0.2427 against b/h = 0.25. The loss grows with the weight a joint
+// carries over its width, W·h_c/(kn·w): under the overlap model a tall
+// structure on narrow, heavily loaded joints holds less than its rigid
+// blocks would; the subcontacts at the base's corners hold the rigid b/h.
+TEST(VerificationOverlapModel, APillarOnAWinklerBedTipsAtTheLimitOfItsSqueezedToe) {
+  const auto run_at = [](double lambda, const char* model) {
+    const std::string a = std::to_string(lambda);
+    const SceneSpec spec = read_deck(
+        deck("rocking_onset.toml"),
+        {std::string("simulation.joint_model=\"") + model + "\"", "ground_motion.kind=\"constant\"",
+         "ground_motion.acceleration_g=" + a, "ground_motion.rise_time=2.0", "simulation.end_time=5.0",
+         "assessment.stop_on_collapse=true"});
+    return run_scene(spec).status;
+  };
+  const double b = 0.5, w = 0.5, h_c = 1.0, weight = 2600.0 * b * w * 2 * h_c * kGravity, kn = 98e9;
+  const double c = std::cbrt(12 * weight * h_c / (kn * w));
+  const double lambda_w = (b - c) / (2 * h_c);
+  std::cout << "  Winkler limit " << lambda_w << " g, b/h = " << b / (2 * h_c) << "\n";
+  EXPECT_EQ(run_at(lambda_w - 0.003, "overlap"), "intact");
+  EXPECT_EQ(run_at(lambda_w + 0.002, "overlap"), "collapsed");
+  EXPECT_EQ(run_at(lambda_w + 0.002, "subcontacts"), "intact");
 }
 
 // slope_equilibrium.toml's bed (kn = 1e7 Pa/m) is so soft that a Winkler bed
