@@ -100,7 +100,7 @@ int ensemble_command(const EnsembleOptions& o) {
 
   fs::create_directories(o.out_dir);
   write_file_atomic(o.out_dir + "/replicas.csv", replicas_csv(rows));
-  write_file_atomic(o.out_dir + "/ensemble.csv", ensemble_csv({}, {EnsemblePoint{SweepPoint{}, outcome}}));
+  write_file_atomic(o.out_dir + "/ensemble.csv", ensemble_csv({}, {EnsemblePoint{SweepPoint{}, outcome, {}}}));
   Json j = Json::object();
   j.set("deck", deck_name);
   j.set("seed", static_cast<std::int64_t>(seed));
