@@ -86,15 +86,15 @@ std::string bands_csv(const std::vector<std::string>& column_keys, const std::st
                       const std::vector<ColumnBands>& bands) {
   std::string csv;
   for (const auto& key : column_keys) csv += key + ",";
-  csv += fmt::format("outcome,status,{0}_16,{0}_50,{0}_84,beta,{0}_below,{0}_above,runs,reached,undetermined,"
-                     "failed,largest_gap\n",
+  csv += fmt::format("outcome,status,{0}_16,{0}_50,{0}_84,beta,{0}_below,{0}_above,{0}_falls_back,runs,reached,"
+                     "undetermined,failed,largest_gap\n",
                      axis_key);
   for (const ColumnBands& c : bands)
     for (const OutcomeBand& b : c.outcomes) {
       for (const auto& key : column_keys) csv += cell(value_of(c.column, key)) + ",";
-      csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{}\n", b.outcome, b.status, cell(b.at16),
-                         cell(b.at50), cell(b.at84), cell(b.beta), cell(b.below), cell(b.above), b.runs,
-                         b.reached, b.undetermined, b.failed, cell(b.largest_gap));
+      csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", b.outcome, b.status, cell(b.at16),
+                         cell(b.at50), cell(b.at84), cell(b.beta), cell(b.below), cell(b.above),
+                         cell(b.falls_back), b.runs, b.reached, b.undetermined, b.failed, cell(b.largest_gap));
     }
   return csv;
 }

@@ -48,8 +48,8 @@ std::string ensemble_csv(const std::vector<std::string>& keys, const std::vector
 
 // One row per column and outcome (studies/ensemble_bands.hpp): the column's
 // values of `column_keys`, the outcome, the fit's status, <axis>_16, _50,
-// _84, beta, <axis>_below, _above, runs, reached, undetermined, failed,
-// largest_gap (layout in docs/ensembles.md).
+// _84, beta, <axis>_below, _above, _falls_back, runs, reached,
+// undetermined, failed, largest_gap (layout in docs/ensembles.md).
 std::string bands_csv(const std::vector<std::string>& column_keys, const std::string& axis_key,
                       const std::vector<ColumnBands>& bands);
 

@@ -55,13 +55,48 @@ bool step_within_one_point(const std::vector<analytical::FragilityPoint>& points
   return partial <= 1;
 }
 
-OutcomeBand band_of(const analytical::FragilityCurveFit& fit, const BandOutcome& outcome) {
+// The column's points for one outcome, in increasing order of the axis.
+std::vector<analytical::FragilityPoint> points_of(const std::vector<analytical::FragilityRun>& runs,
+                                                  DamageState state) {
+  std::map<double, analytical::FragilityPoint> by_value;
+  for (const analytical::FragilityRun& r : runs) {
+    analytical::FragilityPoint& p = by_value.try_emplace(r.im, analytical::FragilityPoint{"", r.im, 0, 0}).first->second;
+    ++p.runs;
+    p.reached += r.state >= state ? 1 : 0;
+  }
+  std::vector<analytical::FragilityPoint> points;
+  for (const auto& [x, p] : by_value) points.push_back(p);
+  return points;
+}
+
+OutcomeBand band_of(const std::vector<analytical::FragilityRun>& runs, std::size_t index) {
+  const BandOutcome& outcome = kOutcomes[index];
+  const std::vector<analytical::FragilityPoint> points = points_of(runs, outcome.state);
   OutcomeBand band;
   band.outcome = outcome.name;
+  for (const analytical::FragilityPoint& p : points) band.runs += p.runs, band.reached += p.reached;
+  bracket(band, points);
+  // The fit's range: up to the first point at which every replica reached
+  // the outcome. A fall above it is another boundary (a Mode I region that
+  // closes before Mode II): fitted with the rise, it would widen the band
+  // of the first.
+  double top = std::numeric_limits<double>::infinity();
+  for (const analytical::FragilityPoint& p : points) {
+    if (p.im > top && p.reached < p.runs) {
+      band.falls_back = p.im;
+      break;
+    }
+    if (p.reached == p.runs && p.im < top) top = p.im;
+  }
+  std::vector<analytical::FragilityRun> range;
+  for (const analytical::FragilityRun& r : runs)
+    if (r.im <= top) range.push_back(r);
+  analytical::FragilityOptions options;
+  options.method = analytical::FragilityMethod::stripes;
+  options.bootstrap = 0;
+  options.points = 2;
+  const analytical::FragilityCurveFit fit = analytical::fit_fragility(range, options).states[index];
   band.status = analytical::to_string(fit.status);
-  band.runs = fit.observations;
-  band.reached = fit.reached;
-  bracket(band, fit.points);
   if (fit.status != analytical::FitStatus::fitted) return band;
   if (step_within_one_point(fit.points)) {
     band.status = analytical::to_string(analytical::FitStatus::not_identified);
@@ -127,23 +162,17 @@ std::vector<ColumnBands> fit_bands(const std::vector<std::string>& column_keys, 
       ++c.failed;
   }
 
-  analytical::FragilityOptions options;
-  options.method = analytical::FragilityMethod::stripes;
-  options.bootstrap = 0;
-  options.points = 2;
   std::vector<ColumnBands> out;
   for (const auto& [at, c] : columns) {
     ColumnBands bands;
     for (std::size_t k = 0; k < column_keys.size(); ++k) bands.column.values.emplace_back(column_keys[k], at[k]);
-    std::vector<analytical::FragilityCurveFit> fits;
-    if (!c.runs.empty()) fits = analytical::fit_fragility(c.runs, options).states;
     for (std::size_t i = 0; i < kBandOutcomes; ++i) {
       OutcomeBand band;
-      if (fits.empty()) {
+      if (c.runs.empty()) {
         band.outcome = kOutcomes[i].name;
         band.status = "no_runs";
       } else {
-        band = band_of(fits[i], kOutcomes[i]);
+        band = band_of(c.runs, i);
       }
       band.undetermined = c.undetermined;
       band.failed = c.failed;

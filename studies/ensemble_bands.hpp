@@ -22,6 +22,12 @@
 // unstable or in error — says nothing about any of them: it is left out and
 // counted.
 //
+// The fit covers the column's points up to the first at which every replica
+// reached the outcome: a fall above it (a Mode I region that closes before
+// Mode II, a survival window) is another boundary, which fitted together
+// with the first rise would only widen its band. `falls_back` names the
+// first such point; the observed fractions show the rest.
+//
 // Where the data have no interior maximum of the likelihood there is no
 // fit, and the column reports why (the status) and bounds instead: every
 // replica of the column short of the outcome (none_reached: the 50 % point
@@ -83,6 +89,9 @@ struct OutcomeBand {
   // The observed bracket of the 50 % point (NaN: none on that side).
   double below = std::numeric_limits<double>::quiet_NaN();
   double above = std::numeric_limits<double>::quiet_NaN();
+  // Above the fit's range, the smallest value at which not every replica
+  // reached the outcome again (NaN: none).
+  double falls_back = std::numeric_limits<double>::quiet_NaN();
   long runs = 0;          // replicas with a verdict
   long reached = 0;       // of them, those that reached the outcome
   long undetermined = 0;  // left out: still moving at the end

@@ -202,7 +202,8 @@ TEST_F(EnsembleCommand, BandsAlongAnIntensityAxisFromEachColumnsReplicas) {
   EXPECT_EQ(bands.substr(0, bands.find('\n')),
             "ground_motion.period,outcome,status,ground_motion.acceleration_g_16,ground_motion.acceleration_g_50,"
             "ground_motion.acceleration_g_84,beta,ground_motion.acceleration_g_below,"
-            "ground_motion.acceleration_g_above,runs,reached,undetermined,failed,largest_gap");
+            "ground_motion.acceleration_g_above,ground_motion.acceleration_g_falls_back,runs,reached,undetermined,"
+            "failed,largest_gap");
   EXPECT_EQ(column(bands, "ground_motion.period"), (std::vector<std::string>{"0.5", "0.5", "0.5", "1", "1", "1"}));
   EXPECT_EQ(column(bands, "outcome"), (std::vector<std::string>{"damage", "stones_lost", "collapse", "damage",
                                                                  "stones_lost", "collapse"}));

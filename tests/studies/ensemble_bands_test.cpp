@@ -179,6 +179,41 @@ TEST(EnsembleBands, NoFitGivesTheBracketOfTheFiftyPerCentPoint) {
   }
 }
 
+TEST(EnsembleBands, AFallAboveTheFirstRiseIsLeftOutOfItsFit) {
+  // Collapses out of 20 at 0.5 ... 1.2 g: a rise to certainty at 0.9 g,
+  // then a window at 1.1 g where 5 survive (a Mode I region closing before
+  // Mode II). The fit is the rise's alone, and the window is named.
+  const std::vector<std::pair<double, int>> counts = {{0.5, 0}, {0.6, 2},  {0.7, 8},  {0.8, 15},
+                                                      {0.9, 20}, {1.0, 20}, {1.1, 15}, {1.2, 20}};
+  Rows all, rise;
+  for (const auto& [x, collapsed] : counts)
+    for (int k = 0; k < 20; ++k) {
+      all.emplace_back(at(1.0, x), replica(k < collapsed ? "collapsed" : "damaged"));
+      if (x < 0.95) rise.push_back(all.back());
+    }
+  const OutcomeBand alone = fit_bands({kColumn}, kAxis, rise)[0].outcomes[2];
+  const OutcomeBand b = fit_bands({kColumn}, kAxis, all)[0].outcomes[2];
+  ASSERT_EQ(alone.status, "fitted");
+  EXPECT_EQ(b.status, "fitted");
+  EXPECT_DOUBLE_EQ(b.at50, alone.at50);
+  EXPECT_DOUBLE_EQ(b.beta, alone.beta);
+  EXPECT_DOUBLE_EQ(b.falls_back, 1.1);
+  EXPECT_TRUE(std::isnan(alone.falls_back));
+  EXPECT_EQ(b.runs, 160);
+  EXPECT_EQ(b.reached, 100);
+  // The rise: 50 % between 0.7 and 0.8 g, β about 0.2.
+  EXPECT_GT(b.at50, 0.7);
+  EXPECT_LT(b.at50, 0.8);
+  EXPECT_NEAR(b.beta, 0.2, 0.1);
+  // Fitted with the window, the band would be wider.
+  analytical::FragilityOptions o;
+  o.method = analytical::FragilityMethod::stripes;
+  o.bootstrap = 0;
+  std::vector<analytical::FragilityRun> runs;
+  for (const auto& [point, r] : all) runs.push_back({"", point.values[1].second, *replica_state(r)});
+  EXPECT_GT(analytical::fit_fragility(runs, o).states[2].curve.beta, 1.3 * b.beta);
+}
+
 TEST(EnsembleBands, ObservedFractionsCountEachReplicaInEveryOutcomeItReached) {
   const std::vector<PointResult> replicas = {replica("intact"),      replica("damaged"),
                                              replica("damaged", 2),  replica("collapsed"),
