@@ -17,12 +17,6 @@ constexpr BandOutcome kOutcomes[kBandOutcomes] = {
     {"collapse", DamageState::collapsed},
 };
 
-double value_at(const SweepPoint& p, const std::string& key) {
-  for (const auto& [k, v] : p.values)
-    if (k == key) return v;
-  return std::numeric_limits<double>::quiet_NaN();
-}
-
 // The 50 % bracket from the observed fractions (points in increasing order).
 void bracket(OutcomeBand& band, const std::vector<analytical::FragilityPoint>& points) {
   std::size_t first_half = points.size();
@@ -148,11 +142,11 @@ std::vector<ColumnBands> fit_bands(const std::vector<std::string>& column_keys, 
   };
   std::map<std::vector<double>, Column> columns;
   for (const auto& [point, result] : rows) {
-    const double x = value_at(point, axis_key);
+    const double x = value_of(point, axis_key);
     if (!(x > 0.0) || !std::isfinite(x))
       throw std::invalid_argument("bands along " + axis_key + " need its values finite and > 0");
     std::vector<double> at;
-    for (const auto& key : column_keys) at.push_back(value_at(point, key));
+    for (const auto& key : column_keys) at.push_back(value_of(point, key));
     Column& c = columns[at];
     if (const std::optional<DamageState> s = replica_state(result))
       c.runs.push_back({"", x, *s});
