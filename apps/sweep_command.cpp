@@ -191,12 +191,16 @@ int sweep_command(const SweepOptions& o) {
   }
   runner->finish();
   const bool ensembles = !o.replicas.empty();
+  std::string courses;
   if (ensembles) {
     std::vector<std::string> outer(keys.begin(), keys.end() - 1);
     std::vector<std::pair<SweepPoint, PointResult>> results;
     for (const auto& [id, row] : rows) results.emplace_back(row.point, row.result);
     const bool bands = !o.band_axis.empty();
-    write_file_atomic(setup.out_dir + "/ensembles.csv", ensemble_csv(outer, ensemble_points(outer, results), bands));
+    const std::vector<EnsemblePoint> points = ensemble_points(outer, results);
+    write_file_atomic(setup.out_dir + "/ensembles.csv", ensemble_csv(outer, points, bands));
+    courses = courses_csv(outer, points);
+    if (!courses.empty()) write_file_atomic(setup.out_dir + "/courses.csv", courses);
     if (bands) write_bands(o, outer, results);
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
@@ -250,7 +254,7 @@ int sweep_command(const SweepOptions& o) {
                              ran, reused, failed, wall);
   }
   std::cout << "results in " << setup.out_dir << "/sweep.csv" << (searching ? ", boundaries.csv" : "")
-            << (ensembles ? ", ensembles.csv" : "") << (o.band_axis.empty() ? "" : ", bands.csv")
+            << (ensembles ? ", ensembles.csv" : "") << (courses.empty() ? "" : ", courses.csv") << (o.band_axis.empty() ? "" : ", bands.csv")
             << " and sweep.h5\n";
   return failed > 0 ? exit_instability : exit_success;
 }

@@ -99,6 +99,26 @@ std::string bands_csv(const std::vector<std::string>& column_keys, const std::st
   return csv;
 }
 
+std::string courses_csv(const std::vector<std::string>& keys, const std::vector<EnsemblePoint>& points) {
+  if (std::none_of(points.begin(), points.end(), [](const EnsemblePoint& p) { return !p.outcome.courses.empty(); }))
+    return {};
+  std::string csv;
+  for (const auto& key : keys) csv += key + ",";
+  csv += "course,level_m,bed_joints,vertical_joints";
+  for (const CourseQuantity& q : course_quantities()) csv += fmt::format(",{0}_n,{0}_p16,{0}_median,{0}_p84", q.name);
+  csv += "\n";
+  for (const EnsemblePoint& p : points)
+    for (std::size_t k = 0; k < p.outcome.courses.size(); ++k) {
+      const CourseDistribution& c = p.outcome.courses[k];
+      for (const auto& key : keys) csv += cell(value_of(p.point, key)) + ",";
+      csv += fmt::format("{},{},{},{}", k, cell(c.level), c.bed_joints, c.vertical_joints);
+      for (const Distribution& d : c.quantities)
+        csv += fmt::format(",{},{},{},{}", d.n, cell(d.p16), cell(d.median), cell(d.p84));
+      csv += "\n";
+    }
+  return csv;
+}
+
 Json outcome_json(const EnsembleOutcome& o) {
   Json j = Json::object();
   j.set("replicas", static_cast<std::int64_t>(o.replicas));

@@ -5,6 +5,8 @@
 //                      collapse mode, and the 16th, 50th and 84th percentiles
 //                      of each outcome (one row; `polydem sweep --replicas`
 //                      writes one row per point of its grid, ensembles.csv)
+//   DIR/courses.csv    (decks with output.walking) per point and course,
+//                      the distributions of its joints' openings
 //   DIR/bands.csv      (sweep --replicas --band-axis) per column of the grid
 //                      and outcome, the lognormal fit along the axis: the
 //                      axis values at 16, 50 and 84 %, β, the counts
@@ -45,6 +47,12 @@ struct EnsemblePoint {
 // and the observed p_damage, p_stones_lost, p_collapse among them.
 std::string ensemble_csv(const std::vector<std::string>& keys, const std::vector<EnsemblePoint>& points,
                          bool fractions = false);
+
+// With output.walking: one row per point and course (from the bottom):
+// the point's values of `keys`, course, level_m, bed_joints,
+// vertical_joints and, per course_quantities(), its n, p16, median and p84
+// over the replicas. Empty when no point has courses.
+std::string courses_csv(const std::vector<std::string>& keys, const std::vector<EnsemblePoint>& points);
 
 // One row per column and outcome (studies/ensemble_bands.hpp): the column's
 // values of `column_keys`, the outcome, the fit's status, <axis>_16, _50,

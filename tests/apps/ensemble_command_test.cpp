@@ -154,6 +154,50 @@ TEST_F(EnsembleCommand, ASweepWithReplicasSummarisesEachPoint) {
             column(read_text(lone / "ensemble.csv"), "peak_tip_displacement_m_p84")[0]);
 }
 
+// With output.walking: courses.csv, one row per course with the
+// distribution of its joints' openings, the same on one and two workers,
+// and the same rows in a sweep's courses.csv after the point's values. The
+// column of four drums on a fixed plinth (examples/verification/
+// column_rocking.toml): four bed levels, no vertical joints.
+TEST_F(EnsembleCommand, CoursesOfAWalkingDeck) {
+  const std::string deck = std::string(POLYDEM_SOURCE_DIR) + "/examples/verification/column_rocking.toml";
+  auto args = [&](const fs::path& out, const std::string& jobs) {
+    return std::vector<std::string>{"ensemble", deck, "--replicas", "4", "--seed", "3", "--jobs", jobs, "--threads",
+                                    "1", "--quiet", "--set", "output.walking=true", "--out", out.string()};
+  };
+  ASSERT_EQ(run_binary(args(dir_ / "one", "1"), dir_ / "one.txt"), 0) << read_text(dir_ / "one.txt");
+  ASSERT_EQ(run_binary(args(dir_ / "two", "2"), dir_ / "two.txt"), 0) << read_text(dir_ / "two.txt");
+  const std::string courses = read_text(dir_ / "one" / "courses.csv");
+  EXPECT_EQ(read_text(dir_ / "two" / "courses.csv"), courses);
+  EXPECT_EQ(column(courses, "course"), (std::vector<std::string>{"0", "1", "2", "3"})) << courses;
+  for (const auto& n : column(courses, "vertical_joints")) EXPECT_EQ(n, "0");
+  for (const auto& n : column(courses, "bed_joints")) EXPECT_EQ(n, "1");
+  for (const auto& n : column(courses, "residual_bed_largest_m_n")) EXPECT_EQ(n, "4");
+  // A drum's bed joint opens while the column rocks: the largest during the
+  // run is at least the residual, replica by replica and so in the median.
+  const auto peak = column(courses, "max_bed_m_median"), residual = column(courses, "residual_bed_largest_m_median");
+  for (std::size_t k = 0; k < peak.size(); ++k) {
+    EXPECT_GE(std::stod(peak[k]), std::stod(residual[k]));
+    EXPECT_GT(std::stod(peak[k]), 1e-3) << "course " << k;
+  }
+  // In each replica the structure's largest residual bed opening
+  // (ensemble.csv) bounds every course's, so no course's median exceeds its
+  // median, nor its p84.
+  const double largest_p84 = std::stod(column(read_text(dir_ / "one" / "ensemble.csv"), "residual_bed_opening_m_p84")[0]);
+  for (const auto& r : residual) EXPECT_LE(std::stod(r), largest_p84 + 1e-12);
+
+  const fs::path sweep = dir_ / "sweep";
+  ASSERT_EQ(run_binary({"sweep", deck, "--out", sweep.string(), "--jobs", "2", "--threads", "1", "--quiet", "--vary",
+                        "ground_motion.acceleration_g=0.4", "--replicas", "4", "--seed", "3", "--set",
+                        "output.walking=true"},
+                       dir_ / "sweep.txt"),
+            0)
+      << read_text(dir_ / "sweep.txt");
+  const std::string by_point = read_text(sweep / "courses.csv");
+  EXPECT_EQ(column(by_point, "ground_motion.acceleration_g"), (std::vector<std::string>{"0.4", "0.4", "0.4", "0.4"}));
+  EXPECT_EQ(column(by_point, "max_bed_m_p84"), column(courses, "max_bed_m_p84"));
+}
+
 TEST_F(EnsembleCommand, BandsAlongAnIntensityAxisFromEachColumnsReplicas) {
   // Two periods, three amplitudes about the tip's uplift (tan α = 0.506 g),
   // four replicas each, run until the tip is at rest. Without a band axis
