@@ -100,7 +100,9 @@ int ensemble_command(const EnsembleOptions& o) {
 
   fs::create_directories(o.out_dir);
   write_file_atomic(o.out_dir + "/replicas.csv", replicas_csv(rows));
-  write_file_atomic(o.out_dir + "/ensemble.csv", ensemble_csv({}, {EnsemblePoint{SweepPoint{}, outcome}}));
+  write_file_atomic(o.out_dir + "/ensemble.csv", ensemble_csv({}, {EnsemblePoint{SweepPoint{}, outcome, {}}}));
+  const std::string courses = courses_csv({}, {EnsemblePoint{SweepPoint{}, outcome, {}}});
+  if (!courses.empty()) write_file_atomic(o.out_dir + "/courses.csv", courses);
   Json j = Json::object();
   j.set("deck", deck_name);
   j.set("seed", static_cast<std::int64_t>(seed));
@@ -133,7 +135,8 @@ int ensemble_command(const EnsembleOptions& o) {
     std::cout << fmt::format("{:<34} {:>4} {:>12} {:>12} {:>12}\n", quantities[i].name, d.n, figure(d.p16),
                              figure(d.median), figure(d.p84));
   }
-  std::cout << "results in " << o.out_dir << "/replicas.csv, ensemble.csv and ensemble.json\n";
+  std::cout << "results in " << o.out_dir << "/replicas.csv, ensemble.csv" << (courses.empty() ? "" : ", courses.csv")
+            << " and ensemble.json\n";
   return failed > 0 ? exit_instability : exit_success;
 }
 

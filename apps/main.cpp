@@ -77,6 +77,9 @@ int main(int argc, char** argv) {
   sweep_cmd->add_option("--replicas", sweep.replicas,
                         "Each point as an ensemble of N replicas (polydem ensemble): DIR/ensembles.csv");
   sweep_cmd->add_option("--seed", sweep.seed, "Seed of the replicas' perturbations (with --replicas)");
+  sweep_cmd->add_option("--band-axis", sweep.band_axis,
+                        "With --replicas: a --vary KEY of intensity; per column of the other keys, the lognormal "
+                        "fit of damage, stones lost and collapse along it: DIR/bands.csv");
   sweep_cmd->add_flag("--quiet", sweep.quiet, "Only the final table");
 
   polydem::EnsembleOptions ens;

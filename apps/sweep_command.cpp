@@ -4,6 +4,7 @@
 #include "apps/run_command.hpp"
 #include "apps/sweep_points.hpp"
 #include "studies/ensemble.hpp"
+#include "studies/ensemble_bands.hpp"
 #include "studies/sweep_search.hpp"
 #include "io/ensemble_tables.hpp"
 #include "io/sweep_tables.hpp"
@@ -13,6 +14,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -31,6 +33,40 @@ Json axis_json(const std::string& key, const std::vector<double>& values) {
 // a bad key or value stops the sweep at once (exit 2, nothing run).
 void validate(const SweepSetup& setup, const std::vector<SweepPoint>& points) {
   for (const SweepPoint& p : points) (void)point_directory(setup, p);
+}
+
+// --band-axis needs the replicas and names a --vary key whose values are
+// intensities (> 0: the fit is in ln of them).
+void check_band_axis(const SweepOptions& o, const std::vector<SweepAxis>& axes) {
+  if (o.replicas.empty()) throw std::invalid_argument("--band-axis goes with --replicas");
+  const auto axis = std::find_if(axes.begin(), axes.end(), [&](const SweepAxis& a) { return a.key == o.band_axis; });
+  if (axis == axes.end() || axis->key == kReplicaKey)
+    throw std::invalid_argument("--band-axis " + o.band_axis + " is not one of the --vary keys");
+  for (double x : axis->values)
+    if (!(x > 0.0)) throw std::invalid_argument("--band-axis " + o.band_axis + ": every value must be > 0");
+}
+
+// DIR/bands.csv, and the table of the collapse bands on stdout.
+void write_bands(const SweepOptions& o, const std::vector<std::string>& outer,
+                 const std::vector<std::pair<SweepPoint, PointResult>>& results) {
+  std::vector<std::string> columns;
+  for (const auto& key : outer)
+    if (key != o.band_axis) columns.push_back(key);
+  const std::vector<ColumnBands> bands = fit_bands(columns, o.band_axis, results);
+  write_file_atomic(o.out_dir + "/bands.csv", bands_csv(columns, o.band_axis, bands));
+  std::cout << fmt::format("{:<40} {:<12} {:<15} {:>9} {:>9} {:>9} {:>7} {:>11}  along {}\n", "column", "outcome",
+                           "status", "16 %", "50 %", "84 %", "beta", "undetermined", o.band_axis);
+  auto number = [](double x) { return std::isnan(x) ? std::string("-") : fmt::format("{:.4g}", x); };
+  for (const ColumnBands& c : bands)
+    for (const OutcomeBand& b : c.outcomes) {
+      // Without a fit, the observed bracket of the 50 % point.
+      const std::string at50 = b.status == "fitted"  ? number(b.at50)
+                               : b.status == "no_runs" ? std::string("-")
+                                                       : fmt::format("({}, {})", number(b.below), number(b.above));
+      std::cout << fmt::format("{:<40} {:<12} {:<15} {:>9} {:>9} {:>9} {:>7} {:>11}\n",
+                               c.column.values.empty() ? "-" : c.column.label(), b.outcome, b.status,
+                               number(b.at16), at50, number(b.at84), number(b.beta), b.undetermined);
+    }
 }
 
 }  // namespace
@@ -59,6 +95,7 @@ int sweep_command(const SweepOptions& o) {
       setup.overrides.push_back(std::string(kSeedKey) + "=" +
                                 std::to_string(read_whole_option("seed", o.seed, 0, (1LL << 53) - 1)));
     }
+    if (!o.band_axis.empty()) check_band_axis(o, axes);
     if (axes.empty() && !searching) throw std::invalid_argument("give at least one --vary KEY=... or a --search");
     std::map<std::string, int> seen;
     for (const auto& a : axes) ++seen[a.key];
@@ -154,11 +191,17 @@ int sweep_command(const SweepOptions& o) {
   }
   runner->finish();
   const bool ensembles = !o.replicas.empty();
+  std::string courses;
   if (ensembles) {
     std::vector<std::string> outer(keys.begin(), keys.end() - 1);
     std::vector<std::pair<SweepPoint, PointResult>> results;
     for (const auto& [id, row] : rows) results.emplace_back(row.point, row.result);
-    write_file_atomic(setup.out_dir + "/ensembles.csv", ensemble_csv(outer, ensemble_points(outer, results)));
+    const bool bands = !o.band_axis.empty();
+    const std::vector<EnsemblePoint> points = ensemble_points(outer, results);
+    write_file_atomic(setup.out_dir + "/ensembles.csv", ensemble_csv(outer, points, bands));
+    courses = courses_csv(outer, points);
+    if (!courses.empty()) write_file_atomic(setup.out_dir + "/courses.csv", courses);
+    if (bands) write_bands(o, outer, results);
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
 
@@ -181,6 +224,7 @@ int sweep_command(const SweepOptions& o) {
                              report.full_grid > 0 ? 1.0 - static_cast<double>(report.runs) / report.full_grid : 0.0));
   }
   if (ensembles) s.set("replicas", static_cast<std::int64_t>(axes.back().values.size()));
+  if (!o.band_axis.empty()) s.set("band_axis", o.band_axis);
   s.set("runner", runner->describe());
   s.set("points", static_cast<std::int64_t>(rows.size()));
   s.set("ran", ran);
@@ -210,7 +254,8 @@ int sweep_command(const SweepOptions& o) {
                              ran, reused, failed, wall);
   }
   std::cout << "results in " << setup.out_dir << "/sweep.csv" << (searching ? ", boundaries.csv" : "")
-            << (ensembles ? ", ensembles.csv" : "") << " and sweep.h5\n";
+            << (ensembles ? ", ensembles.csv" : "") << (courses.empty() ? "" : ", courses.csv") << (o.band_axis.empty() ? "" : ", bands.csv")
+            << " and sweep.h5\n";
   return failed > 0 ? exit_instability : exit_success;
 }
 

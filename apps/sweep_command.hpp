@@ -12,7 +12,9 @@
 // sweep_search.hpp). Finished points are kept in DIR/points and skipped when
 // the same command runs again. Under `mpirun -np N` (polydem built with
 // MPI) the points are spread over the ranks. With --replicas N every point
-// of the grid is an ensemble of N replicas (docs/ensembles.md).
+// of the grid is an ensemble of N replicas (docs/ensembles.md), and with
+// --band-axis KEY the probabilities of damage, stones lost and collapse
+// along KEY are fitted per column: their 16, 50 and 84 % intensities.
 #pragma once
 
 #include <string>
@@ -35,6 +37,11 @@ struct SweepOptions {
   // class counts and percentiles. As typed; empty: none. Not with --search.
   std::string replicas;
   std::string seed;  // empty: the deck's ensemble.seed
+  // With --replicas: one of the --vary keys, an intensity (values > 0). The
+  // other --vary keys make the columns; DIR/bands.csv gets each column's
+  // lognormal fit of damage, stones lost and collapse along it
+  // (studies/ensemble_bands.hpp), and ensembles.csv the observed fractions.
+  std::string band_axis;
   bool quiet = false;
   std::string executable;            // polydem binary for local workers (tests); default: this one
 };

@@ -40,7 +40,8 @@ std::string replicas_csv(const std::vector<ReplicaRow>& rows) {
   return csv;
 }
 
-std::string ensemble_csv(const std::vector<std::string>& keys, const std::vector<EnsemblePoint>& points) {
+std::string ensemble_csv(const std::vector<std::string>& keys, const std::vector<EnsemblePoint>& points,
+                         bool fractions) {
   // One column per status any point saw, so that every row has the same.
   std::set<std::string> statuses;
   for (const EnsemblePoint& p : points)
@@ -52,6 +53,10 @@ std::string ensemble_csv(const std::vector<std::string>& keys, const std::vector
   csv += ",n_mode_I,n_mode_II";
   for (const EnsembleQuantity& q : ensemble_quantities())
     csv += fmt::format(",{0}_n,{0}_p16,{0}_median,{0}_p84", q.name);
+  if (fractions) {
+    csv += ",judged";
+    for (const BandOutcome& o : band_outcomes()) csv += fmt::format(",p_{}", o.name);
+  }
   csv += "\n";
   for (const EnsemblePoint& p : points) {
     for (const auto& key : keys) csv += fmt::format("{},", cell(value_of(p.point, key)));
@@ -65,8 +70,52 @@ std::string ensemble_csv(const std::vector<std::string>& keys, const std::vector
     csv += fmt::format(",{},{}", p.outcome.mode_I, p.outcome.mode_II);
     for (const Distribution& d : p.outcome.quantities)
       csv += fmt::format(",{},{},{},{}", d.n, cell(d.p16), cell(d.median), cell(d.p84));
+    if (fractions) {
+      csv += fmt::format(",{}", p.fractions.judged);
+      for (double x : p.fractions.p) {
+        csv += ',';
+        csv += cell(x);
+      }
+    }
     csv += "\n";
   }
+  return csv;
+}
+
+std::string bands_csv(const std::vector<std::string>& column_keys, const std::string& axis_key,
+                      const std::vector<ColumnBands>& bands) {
+  std::string csv;
+  for (const auto& key : column_keys) csv += key + ",";
+  csv += fmt::format("outcome,status,{0}_16,{0}_50,{0}_84,beta,{0}_below,{0}_above,{0}_falls_back,runs,reached,"
+                     "undetermined,failed,largest_gap\n",
+                     axis_key);
+  for (const ColumnBands& c : bands)
+    for (const OutcomeBand& b : c.outcomes) {
+      for (const auto& key : column_keys) csv += cell(value_of(c.column, key)) + ",";
+      csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", b.outcome, b.status, cell(b.at16),
+                         cell(b.at50), cell(b.at84), cell(b.beta), cell(b.below), cell(b.above),
+                         cell(b.falls_back), b.runs, b.reached, b.undetermined, b.failed, cell(b.largest_gap));
+    }
+  return csv;
+}
+
+std::string courses_csv(const std::vector<std::string>& keys, const std::vector<EnsemblePoint>& points) {
+  if (std::none_of(points.begin(), points.end(), [](const EnsemblePoint& p) { return !p.outcome.courses.empty(); }))
+    return {};
+  std::string csv;
+  for (const auto& key : keys) csv += key + ",";
+  csv += "course,level_m,bed_joints,vertical_joints";
+  for (const CourseQuantity& q : course_quantities()) csv += fmt::format(",{0}_n,{0}_p16,{0}_median,{0}_p84", q.name);
+  csv += "\n";
+  for (const EnsemblePoint& p : points)
+    for (std::size_t k = 0; k < p.outcome.courses.size(); ++k) {
+      const CourseDistribution& c = p.outcome.courses[k];
+      for (const auto& key : keys) csv += cell(value_of(p.point, key)) + ",";
+      csv += fmt::format("{},{},{},{}", k, cell(c.level), c.bed_joints, c.vertical_joints);
+      for (const Distribution& d : c.quantities)
+        csv += fmt::format(",{},{},{},{}", d.n, cell(d.p16), cell(d.median), cell(d.p84));
+      csv += "\n";
+    }
   return csv;
 }
 
@@ -108,6 +157,7 @@ std::vector<EnsemblePoint> ensemble_points(const std::vector<std::string>& keys,
     std::vector<PointResult> results;
     for (const auto* m : members) results.push_back(m->second);
     p.outcome = summarise_ensemble(results);
+    p.fractions = outcome_fractions(results);
     out.push_back(std::move(p));
   }
   return out;

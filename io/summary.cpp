@@ -180,6 +180,21 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
     w.set("residual_vertical_joint", r.walking.vertical_joint);
     w.set("max_bed_opening_m", r.walking.max_bed_opening);
     w.set("max_vertical_opening_m", r.walking.max_vertical_opening);
+    Json courses = Json::array();
+    for (const CourseWalking& c : r.walking.courses) {
+      Json j = Json::object();
+      j.set("level_m", c.level);
+      j.set("bed_joints", c.bed_joints);
+      j.set("vertical_joints", c.vertical_joints);
+      j.set("residual_bed_mean_m", c.bed_mean);
+      j.set("residual_bed_largest_m", c.bed_largest);
+      j.set("residual_vertical_mean_m", c.vertical_mean);
+      j.set("residual_vertical_largest_m", c.vertical_largest);
+      j.set("max_bed_m", c.peak_bed);
+      j.set("max_vertical_m", c.peak_vertical);
+      courses.push_back(std::move(j));
+    }
+    w.set("courses", std::move(courses));
     s.set("walking", std::move(w));
   }
   s.set("checks_passed", r.all_checks_passed());
@@ -292,6 +307,22 @@ PointResult point_result_from_summary(const std::string& text, const std::string
     r.max_vertical_opening = number_or(w->find("max_vertical_opening_m"), kNone);
     r.residual_bed_opening = number_or(w->find("residual_bed_opening_m"), kNone);
     r.residual_vertical_opening = number_or(w->find("residual_vertical_opening_m"), kNone);
+    if (const Json* cs = w->find("courses"); cs && cs->type() == Json::Type::Array) {
+      for (std::size_t k = 0; k < cs->size(); ++k) {
+        const Json& j = cs->at(k);
+        CourseWalking c;
+        c.level = number_or(j.find("level_m"), kNone);
+        c.bed_joints = static_cast<int>(number_or(j.find("bed_joints"), 0));
+        c.vertical_joints = static_cast<int>(number_or(j.find("vertical_joints"), 0));
+        c.bed_mean = number_or(j.find("residual_bed_mean_m"), kNone);
+        c.bed_largest = number_or(j.find("residual_bed_largest_m"), kNone);
+        c.vertical_mean = number_or(j.find("residual_vertical_mean_m"), kNone);
+        c.vertical_largest = number_or(j.find("residual_vertical_largest_m"), kNone);
+        c.peak_bed = number_or(j.find("max_bed_m"), kNone);
+        c.peak_vertical = number_or(j.find("max_vertical_m"), kNone);
+        r.courses.push_back(c);
+      }
+    }
   }
   r.wall_seconds = number_or(s.find("wall_seconds"), 0);
   r.steps = static_cast<long>(number_or(s.find("steps"), 0));

@@ -25,12 +25,6 @@ constexpr const char* kDeckUnit = "as the deck key (docs/deck.md)";
 
 std::string csv_number(double x) { return std::isfinite(x) ? value_text(x) : std::string(); }
 
-double value_of(const SweepPoint& p, const std::string& key) {
-  for (const auto& [k, v] : p.values)
-    if (k == key) return v;
-  return std::numeric_limits<double>::quiet_NaN();
-}
-
 std::string transitions_text(const std::vector<Transition>& transitions) {
   std::string out;
   for (const Transition& t : transitions) {

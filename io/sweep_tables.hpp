@@ -36,8 +36,6 @@ void write_sweep_tables(const std::string& out_dir, const SweepTables& t);
 
 // A number in a CSV cell: its shortest round-trip text, empty for "none" (NaN).
 std::string csv_number(double x);
-// The point's value of `key` (NaN when it has none).
-double value_of(const SweepPoint& p, const std::string& key);
 
 // The text a CSV cell / the tables use for transitions: "0.61:intact>damaged;0.86:damaged>I"
 // (each the first value of the new class).

@@ -217,6 +217,24 @@ void bind_studies(py::module_& m) {
         summary["status_counts"] = counts;
         summary["collapse_modes"] = modes;
         summary["distributions"] = distributions;
+        py::list courses;  // output.walking: per course from the bottom
+        for (const CourseDistribution& c : o.courses) {
+          py::dict dc;
+          dc["level_m"] = c.level;
+          dc["bed_joints"] = c.bed_joints;
+          dc["vertical_joints"] = c.vertical_joints;
+          const auto cq = course_quantities();
+          for (std::size_t i = 0; i < cq.size(); ++i) {
+            py::dict q;
+            q["n"] = c.quantities[i].n;
+            q["p16"] = c.quantities[i].p16;
+            q["median"] = c.quantities[i].median;
+            q["p84"] = c.quantities[i].p84;
+            dc[cq[i].name] = q;
+          }
+          courses.append(dc);
+        }
+        summary["courses"] = courses;
         return py::make_tuple(rows, summary);
       },
       py::arg("scene"), py::arg("replicas"), py::arg("threads"), py::arg("progress"));

@@ -1,6 +1,7 @@
 // The joints of the initial mesh (joint_mesh.hpp).
 #include "run/joint_mesh.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -30,7 +31,31 @@ JointMesh JointMesh::from_contacts(const Simulation& sim, const Vec3& up, double
     j.count = p.count;
     m.joints.push_back(j);
   }
+  m.assign_courses(sim, up);
   return m;
+}
+
+void JointMesh::assign_courses(const Simulation& sim, const Vec3& up) {
+  course_levels.clear();
+  if (joints.empty()) return;
+  const double level_cosine = std::cos(10.0 * M_PI / 180.0);
+  const auto& st = sim.blocks().state;
+  std::vector<double> height(joints.size()), bed_heights;
+  for (std::size_t q = 0; q < joints.size(); ++q) {
+    const InitialJoint& j = joints[q];
+    height[q] = centre(sim, j).dot(up);
+    if (std::abs((st.rotation[j.ref] * j.normal_local).dot(up)) >= level_cosine) bed_heights.push_back(height[q]);
+  }
+  const auto [lo, hi] = std::minmax_element(height.begin(), height.end());
+  const double tolerance = 0.01 * (*hi - *lo);
+  std::sort(bed_heights.begin(), bed_heights.end());
+  for (double h : bed_heights)
+    if (course_levels.empty() || h > course_levels.back() + tolerance) course_levels.push_back(h);
+  if (course_levels.empty()) course_levels.push_back(*lo);  // no bed joint: one course
+  for (std::size_t q = 0; q < joints.size(); ++q) {
+    const auto above = std::upper_bound(course_levels.begin(), course_levels.end(), height[q] + tolerance);
+    joints[q].course = std::max(0, static_cast<int>(above - course_levels.begin()) - 1);
+  }
 }
 
 double JointMesh::opening(const Simulation& sim, const InitialJoint& j) const {

@@ -12,6 +12,16 @@
 // (µm under self-weight). The walking openings (run/recorder.hpp), the crack
 // (run/assessment.hpp) and the limit analysis's joints
 // (studies/limit_analysis.hpp) are read on it.
+//
+// Courses. A course is a layer of stones resting on one bed level: the
+// level bed joints (normal within 10° of up) whose centres lie at one height
+// at t = 0 (within 1 % of the height the joints span) make a level, and
+// course k is what rests on level k, up to level k + 1. A joint belongs to
+// the course its centre lies in, a bed joint on a level to the course it
+// carries (the joint under it); a tilted bed joint (a window's voussoir)
+// to the course around it. Walking is
+// reported per course (run/recorder.hpp) as an engineer reads a masonry
+// elevation: which courses the stones walked apart in.
 #pragma once
 
 #include "integrators/simulation.hpp"
@@ -29,6 +39,7 @@ struct InitialJoint {
   Vec3 normal_local;            // unit, reference frame
   double offset_local = 0;      // m
   bool bed = false;             // normal within 45° of up at t = 0
+  int course = 0;               // the course it belongs to (above)
   int first = 0, count = 0;
 };
 
@@ -36,10 +47,13 @@ struct InitialJoint {
 struct JointMesh {
   std::vector<InitialJoint> joints;
   std::vector<Vec3> corners;  // incident frame
+  std::vector<double> course_levels;  // m along up, increasing: the height of each course's bed level at t = 0
   static JointMesh from_contacts(const Simulation& sim, const Vec3& up, double tolerance);
   double opening(const Simulation& sim, const InitialJoint& j) const;  // m, > 0 open
   // The mean of its corners, world, at the force time.
   Vec3 centre(const Simulation& sim, const InitialJoint& j) const;
+  // Sets course_levels and each joint's course from the pose at t = 0.
+  void assign_courses(const Simulation& sim, const Vec3& up);
 };
 
 }  // namespace polydem

@@ -49,17 +49,18 @@ const char* unit_of(const std::string& q) {
   return "-";
 }
 
-// The largest opening of the joints of the initial mesh, split into bed
-// joints and vertical joints (by their normal at t = 0).
+// Each joint's opening into `gaps`, and the largest of bed joints and of
+// vertical joints (by their normal at t = 0).
 struct Openings {
   double bed = 0, vertical = 0;
   int bed_joint = -1, vertical_joint = -1;
 };
-Openings joint_openings(const Simulation& sim, const JointMesh& mesh) {
+Openings joint_openings(const Simulation& sim, const JointMesh& mesh, std::vector<double>& gaps) {
   Openings o;
   for (std::size_t q = 0; q < mesh.joints.size(); ++q) {
     const InitialJoint& j = mesh.joints[q];
     const double gap = mesh.opening(sim, j);
+    gaps[q] = gap;
     double& best = j.bed ? o.bed : o.vertical;
     int& which = j.bed ? o.bed_joint : o.vertical_joint;
     if (gap > best) {
@@ -102,6 +103,10 @@ Recorder::Recorder(const SceneSpec& spec, const Simulation& sim) {
   ground_channel = sim.ground_motion().active() && (!channels.empty() || walking);
   if (walking) {
     mesh = JointMesh::from_contacts(sim, up, spec.simulation.overlap_tolerance);
+    gaps.assign(mesh.joints.size(), 0.0);
+    walk.courses.assign(mesh.course_levels.size(), CourseWalking{});
+    for (std::size_t k = 0; k < mesh.course_levels.size(); ++k) walk.courses[k].level = mesh.course_levels[k];
+    for (const InitialJoint& j : mesh.joints) ++(j.bed ? walk.courses[j.course].bed_joints : walk.courses[j.course].vertical_joints);
     for (const char* c : {"walking.bed_opening", "walking.vertical_opening"}) {
       histories.columns.push_back(c);
       histories.units.push_back("m");
@@ -133,11 +138,16 @@ void Recorder::record(const Simulation& sim) {
     histories.rows.push_back(t);
     for (const Channel& c : channels) append_channel(sim, c, histories.rows);
     if (walking) {
-      const Openings o = joint_openings(sim, mesh);
+      const Openings o = joint_openings(sim, mesh, gaps);
       histories.rows.push_back(o.bed);
       histories.rows.push_back(o.vertical);
       walk.max_bed_opening = std::max(walk.max_bed_opening, o.bed);
       walk.max_vertical_opening = std::max(walk.max_vertical_opening, o.vertical);
+      for (std::size_t q = 0; q < gaps.size(); ++q) {
+        const InitialJoint& j = mesh.joints[q];
+        double& peak = j.bed ? walk.courses[j.course].peak_bed : walk.courses[j.course].peak_vertical;
+        peak = std::max(peak, gaps[q]);
+      }
     }
     if (ground_channel) histories.rows.push_back(sim.ground_motion().acceleration_at(t));
   }
@@ -157,7 +167,7 @@ void Recorder::record(const Simulation& sim) {
 
 void Recorder::finish_walking(const Simulation& sim) {
   if (!walking) return;
-  const Openings o = joint_openings(sim, mesh);
+  const Openings o = joint_openings(sim, mesh, gaps);
   auto name = [&](int q) {
     if (q < 0) return std::string();
     const InitialJoint& j = mesh.joints[q];
@@ -167,6 +177,19 @@ void Recorder::finish_walking(const Simulation& sim) {
   walk.vertical_opening = o.vertical;
   walk.bed_joint = name(o.bed_joint);
   walk.vertical_joint = name(o.vertical_joint);
+  for (CourseWalking& c : walk.courses) c.bed_mean = c.bed_largest = c.vertical_mean = c.vertical_largest = 0;
+  for (std::size_t q = 0; q < gaps.size(); ++q) {
+    const InitialJoint& j = mesh.joints[q];
+    CourseWalking& c = walk.courses[j.course];
+    const double open = std::max(0.0, gaps[q]);
+    (j.bed ? c.bed_mean : c.vertical_mean) += open;
+    double& largest = j.bed ? c.bed_largest : c.vertical_largest;
+    largest = std::max(largest, open);
+  }
+  for (CourseWalking& c : walk.courses) {
+    if (c.bed_joints > 0) c.bed_mean /= c.bed_joints;
+    if (c.vertical_joints > 0) c.vertical_mean /= c.vertical_joints;
+  }
 }
 
 }  // namespace polydem

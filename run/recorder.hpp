@@ -9,7 +9,10 @@
 //              largest drift of the balance from its first value over the
 //              largest energy in play
 //   walking    the largest opening of bed joints (normal within 45° of "up")
-//              and of vertical joints, over the run and at the end
+//              and of vertical joints, over the run and at the end; and per
+//              course (run/joint_mesh.hpp) the mean and the largest opening
+//              of its bed and vertical joints at the end, and the largest
+//              during the run
 //
 // Walking is measured from the blocks' motion, not from the contacts the
 // search happens to hold: on the joints of the initial mesh
@@ -23,6 +26,7 @@
 #include "core/scene_spec.hpp"
 #include "integrators/simulation.hpp"
 #include "run/joint_mesh.hpp"
+#include "run/walking.hpp"
 
 #include <string>
 #include <vector>
@@ -35,14 +39,6 @@ struct HistoryTable {
   std::vector<std::string> units;
   std::vector<double> rows;  // row-major
   std::size_t row_count() const { return columns.empty() ? 0 : rows.size() / columns.size(); }
-};
-
-// Walking (output.walking): largest opening of bed joints and of vertical
-// joints, at the end and the largest seen.
-struct Walking {
-  double bed_opening = 0, vertical_opening = 0;          // m, at the end
-  double max_bed_opening = 0, max_vertical_opening = 0;  // m, during the run
-  std::string bed_joint, vertical_joint;                 // "blockA|blockB" at the end
 };
 
 // One recorded quantity of one block.
@@ -75,6 +71,7 @@ struct Recorder {
   bool walking = false, energies_on = false, ground_channel = false, any_history = false;
   Vec3 up = Vec3(0, 0, 1);
   JointMesh mesh;  // walking only
+  std::vector<double> gaps;  // walking only: each joint's opening at the last record
   long expected_rows = 0;
   HistoryTable histories, energies;
   Walking walk;

@@ -42,6 +42,10 @@ void save_loop(ByteWriter& w, const RunReport& rep, const Recorder& rec, const L
   w.put(rec.energies.rows);
   w.put(rec.walk.max_bed_opening);
   w.put(rec.walk.max_vertical_opening);
+  for (const CourseWalking& c : rec.walk.courses) {
+    w.put(c.peak_bed);
+    w.put(c.peak_vertical);
+  }
   w.put(rep.subcontact_updates);
   w.put(static_cast<std::int32_t>(rep.checkpoints + 1));  // counting the one being written
   w.put(rep.checkpoint_wall_seconds);
@@ -64,6 +68,10 @@ void load_loop(ByteReader& r, RunReport& rep, Recorder& rec, LoopState& s, std::
     throw StateFormatError("history rows do not fit the deck's columns");
   r.get(rec.walk.max_bed_opening);
   r.get(rec.walk.max_vertical_opening);
+  for (CourseWalking& c : rec.walk.courses) {
+    r.get(c.peak_bed);
+    r.get(c.peak_vertical);
+  }
   r.get(rep.subcontact_updates);
   std::int32_t written = 0;
   r.get(written);

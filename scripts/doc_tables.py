@@ -29,6 +29,8 @@ The CSVs:
   convergence.csv  the spire's answers per numerical setting: machine, cpu,
                  commit, date, case, setting, quantity, value, unit
                  (benchmarks/convergence.py)
+  distributions.csv  the ensembles' bands per safety factor, the same columns
+                 (benchmarks/distributions.py)
 The tables show the commit each figure was measured at; the machine and the
 date stay in the CSV.
 
@@ -263,6 +265,51 @@ def table_convergence():
             "the blocks' poses (run/crack.hpp).\n")
 
 
+def table_distributions():
+    """benchmarks/distributions.py's ensembles: one row per figure, one
+    column per safety factor."""
+    if not os.path.exists(os.path.join(RESULTS, "distributions.csv")):
+        return "(not measured yet)\n"
+    rows = read_csv("distributions.csv")
+    got = {}
+    for r in rows:
+        got.setdefault((r["case"], r["setting"]), {})[r["quantity"]] = r["value"]
+    settings = sorted({r["setting"] for r in rows}, reverse=True)  # 0.8 first
+
+    def collapse(q):
+        if "collapse 50 %" in q:
+            return f'{float(q["collapse 50 %"]):.3f} [{float(q["collapse 16 %"]):.3f}, {float(q["collapse 84 %"]):.3f}]'
+        if "collapse bracket below" in q and "collapse bracket above" in q:
+            return f'{float(q["collapse bracket below"]):.2f}-{float(q["collapse bracket above"]):.2f} (a step)'
+        return q.get("collapse status", "-")
+
+    def mm(q, stem):
+        if f"{stem} median" not in q:
+            return "-"
+        v = [1e3 * float(q[f"{stem} {p}"]) for p in ("median", "p16", "p84")]
+        return f"{v[0]:.1f} [{v[1]:.1f}, {v[2]:.1f}]"
+
+    lines = []
+    for T in ("0.6", "1.0", "2.0"):
+        lines.append((f"tip, T_p = {T} s: collapse a_p, 50 % [16-84 %] (g)", f"tip{T}", collapse))
+    for label, stem in (("largest residual vertical opening", "residual_vertical_opening"),
+                        ("largest residual bed opening", "residual_bed_opening"),
+                        ("largest vertical opening during the run", "max_vertical_opening"),
+                        ("top course: largest residual vertical opening", "top course residual vertical largest")):
+        lines.append((f"spire, record ×4: {label}, median [16-84 %] (mm)", "walking4",
+                      (lambda st: lambda q: mm(q, st))(stem)))
+    table = []
+    for label, case, show in lines:
+        table.append([label] + [show(got[(case, s)]) if (case, s) in got else "not run" for s in settings])
+    replicas = {s: got.get(("walking4", s), {}).get("replicas", "-") for s in settings}
+    commits = sorted({r["commit"] for r in rows})
+    return (markdown(["figure"] + settings, table) +
+            f"\nFrom `benchmarks/distributions.py build/polydem` at {', '.join(commits)}: the tip 20 replicas a "
+            f"point, the spire {'/'.join(replicas[s] for s in settings)} replicas; \"a step\": every replica "
+            "survives at the first amplitude and collapses at the second (0.01 g apart). Run times in "
+            "benchmarks/results/distributions.csv.\n")
+
+
 SOURCE_EXT = (".cpp", ".hpp", ".inc", ".h")
 NOT_SOURCE = {"tests", "benchmarks", "fuzz", "examples", "docs", "scripts"}
 
@@ -348,6 +395,7 @@ TABLES = {
     "layout": table_layout,
     "wall_scaling": table_wall_scaling,
     "convergence": table_convergence,
+    "distributions": table_distributions,
     "deck_example": table_deck_example,
     "python_example": table_python_example,
     "python_example_output": table_python_example_output,

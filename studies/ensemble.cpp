@@ -97,11 +97,47 @@ constexpr EnsembleQuantity kQuantities[] = {
     {"residual_vertical_opening_m", [](const PointResult& r) { return r.residual_vertical_opening; }},
 };
 
+constexpr CourseQuantity kCourseQuantities[] = {
+    {"residual_bed_mean_m", [](const CourseWalking& c) { return c.bed_mean; }},
+    {"residual_bed_largest_m", [](const CourseWalking& c) { return c.bed_largest; }},
+    {"residual_vertical_mean_m", [](const CourseWalking& c) { return c.vertical_mean; }},
+    {"residual_vertical_largest_m", [](const CourseWalking& c) { return c.vertical_largest; }},
+    {"max_bed_m", [](const CourseWalking& c) { return c.peak_bed; }},
+    {"max_vertical_m", [](const CourseWalking& c) { return c.peak_vertical; }},
+};
+
 bool measured(const PointResult& r) { return r.status != "error" && r.status != "unstable"; }
+
+std::vector<CourseDistribution> course_distributions(const std::vector<PointResult>& replicas) {
+  std::vector<CourseDistribution> out;
+  const PointResult* first = nullptr;
+  for (const PointResult& r : replicas)
+    if (measured(r) && !r.courses.empty()) {
+      first = &r;
+      break;
+    }
+  if (!first) return out;
+  const std::size_t n = first->courses.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    CourseDistribution d;
+    d.level = first->courses[k].level;
+    d.bed_joints = first->courses[k].bed_joints;
+    d.vertical_joints = first->courses[k].vertical_joints;
+    for (const CourseQuantity& q : kCourseQuantities) {
+      std::vector<double> values;
+      for (const PointResult& r : replicas)
+        if (measured(r) && r.courses.size() == n) values.push_back(q.of(r.courses[k]));
+      d.quantities.push_back(distribution(std::move(values)));
+    }
+    out.push_back(std::move(d));
+  }
+  return out;
+}
 
 }  // namespace
 
 std::span<const EnsembleQuantity> ensemble_quantities() { return kQuantities; }
+std::span<const CourseQuantity> course_quantities() { return kCourseQuantities; }
 
 EnsembleOutcome summarise_ensemble(const std::vector<PointResult>& replicas) {
   EnsembleOutcome out;
@@ -119,6 +155,7 @@ EnsembleOutcome summarise_ensemble(const std::vector<PointResult>& replicas) {
       if (measured(r)) values.push_back(q.of(r));
     out.quantities.push_back(distribution(std::move(values)));
   }
+  out.courses = course_distributions(replicas);
   return out;
 }
 

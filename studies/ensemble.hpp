@@ -76,11 +76,27 @@ struct EnsembleQuantity {
 };
 std::span<const EnsembleQuantity> ensemble_quantities();
 
+// A course's walking over the replicas (output.walking; run/walking.hpp):
+// the distribution of each of its figures, as course_quantities() names them.
+struct CourseDistribution {
+  double level = 0;  // m, the course's bed level at t = 0
+  int bed_joints = 0, vertical_joints = 0;
+  std::vector<Distribution> quantities;
+};
+struct CourseQuantity {
+  const char* name;  // column stem, e.g. "residual_vertical_mean_m"
+  double (*of)(const CourseWalking&);
+};
+std::span<const CourseQuantity> course_quantities();
+
 struct EnsembleOutcome {
   long replicas = 0;
   std::vector<std::pair<std::string, long>> status_counts;  // by status, alphabetical
   long mode_I = 0, mode_II = 0;                              // collapses by mode
   std::vector<Distribution> quantities;                      // as ensemble_quantities()
+  // Per course from the bottom, over the replicas that measured it with the
+  // first such replica's courses (every replica has the same initial mesh).
+  std::vector<CourseDistribution> courses;
 };
 EnsembleOutcome summarise_ensemble(const std::vector<PointResult>& replicas);
 

@@ -4,8 +4,11 @@
 // apart with it.
 #pragma once
 
+#include "run/walking.hpp"
+
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace polydem {
 
@@ -28,6 +31,7 @@ struct PointResult {
   double max_vertical_opening = std::numeric_limits<double>::quiet_NaN();
   double residual_bed_opening = std::numeric_limits<double>::quiet_NaN();
   double residual_vertical_opening = std::numeric_limits<double>::quiet_NaN();
+  std::vector<CourseWalking> courses;  // with output.walking: per course from the bottom (run/recorder.hpp)
   double wall_seconds = 0;           // of the run itself
   long steps = 0;
   int exit_code = 0;     // of `polydem run` (0 ok, 1 check failed, 2 bad input, 3 unstable)

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <stdexcept>
 
 namespace polydem {
@@ -33,6 +34,12 @@ std::vector<std::string> split(const std::string& s, char sep) {
 }
 
 }  // namespace
+
+double value_of(const SweepPoint& p, const std::string& key) {
+  for (const auto& [k, v] : p.values)
+    if (k == key) return v;
+  return std::numeric_limits<double>::quiet_NaN();
+}
 
 std::string value_text(double x) { return std::isfinite(x) ? shortest_text(x) : "null"; }
 

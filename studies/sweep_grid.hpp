@@ -39,6 +39,9 @@ struct SweepPoint {
   SweepPoint with(const std::string& key, double value) const;
 };
 
+// The point's value of `key` (NaN when it has none).
+double value_of(const SweepPoint& p, const std::string& key);
+
 // The Cartesian product of the axes (one point with no values when empty).
 std::vector<SweepPoint> grid_points(const std::vector<SweepAxis>& axes);
 

@@ -135,8 +135,11 @@ class EnsembleResult:
     peak_tip_displacement_m, residual_displacement_m and the walking
     openings (NaN: not measured), dislodged_blocks, steps, wall_seconds,
     exit_code, message); summary: a dict with replicas, seed, status_counts
-    {status: n}, collapse_modes {"I": n, "II": n} and distributions {outcome:
-    {"n", "p16", "median", "p84"}}, as ensemble.json's "outcome"
+    {status: n}, collapse_modes {"I": n, "II": n}, distributions {outcome:
+    {"n", "p16", "median", "p84"}}, as ensemble.json's "outcome", and
+    courses (with output.walking; empty otherwise): per course from the
+    bottom, a dict with level_m, bed_joints, vertical_joints and each
+    figure of courses.csv as {"n", "p16", "median", "p84"}
     (docs/ensembles.md)."""
 
     def __init__(self, replicas, summary):

@@ -154,6 +154,134 @@ TEST_F(EnsembleCommand, ASweepWithReplicasSummarisesEachPoint) {
             column(read_text(lone / "ensemble.csv"), "peak_tip_displacement_m_p84")[0]);
 }
 
+// With output.walking: courses.csv, one row per course with the
+// distribution of its joints' openings, the same on one and two workers,
+// and the same rows in a sweep's courses.csv after the point's values. The
+// column of four drums on a fixed plinth (examples/verification/
+// column_rocking.toml): four bed levels, no vertical joints.
+TEST_F(EnsembleCommand, CoursesOfAWalkingDeck) {
+  const std::string deck = std::string(POLYDEM_SOURCE_DIR) + "/examples/verification/column_rocking.toml";
+  auto args = [&](const fs::path& out, const std::string& jobs) {
+    return std::vector<std::string>{"ensemble", deck, "--replicas", "4", "--seed", "3", "--jobs", jobs, "--threads",
+                                    "1", "--quiet", "--set", "output.walking=true", "--out", out.string()};
+  };
+  ASSERT_EQ(run_binary(args(dir_ / "one", "1"), dir_ / "one.txt"), 0) << read_text(dir_ / "one.txt");
+  ASSERT_EQ(run_binary(args(dir_ / "two", "2"), dir_ / "two.txt"), 0) << read_text(dir_ / "two.txt");
+  const std::string courses = read_text(dir_ / "one" / "courses.csv");
+  EXPECT_EQ(read_text(dir_ / "two" / "courses.csv"), courses);
+  EXPECT_EQ(column(courses, "course"), (std::vector<std::string>{"0", "1", "2", "3"})) << courses;
+  for (const auto& n : column(courses, "vertical_joints")) EXPECT_EQ(n, "0");
+  for (const auto& n : column(courses, "bed_joints")) EXPECT_EQ(n, "1");
+  for (const auto& n : column(courses, "residual_bed_largest_m_n")) EXPECT_EQ(n, "4");
+  // A drum's bed joint opens while the column rocks: the largest during the
+  // run is at least the residual, replica by replica and so in the median.
+  const auto peak = column(courses, "max_bed_m_median"), residual = column(courses, "residual_bed_largest_m_median");
+  for (std::size_t k = 0; k < peak.size(); ++k) {
+    EXPECT_GE(std::stod(peak[k]), std::stod(residual[k]));
+    EXPECT_GT(std::stod(peak[k]), 1e-3) << "course " << k;
+  }
+  // In each replica the structure's largest residual bed opening
+  // (ensemble.csv) bounds every course's, so no course's median exceeds its
+  // median, nor its p84.
+  const double largest_p84 = std::stod(column(read_text(dir_ / "one" / "ensemble.csv"), "residual_bed_opening_m_p84")[0]);
+  for (const auto& r : residual) EXPECT_LE(std::stod(r), largest_p84 + 1e-12);
+
+  const fs::path sweep = dir_ / "sweep";
+  ASSERT_EQ(run_binary({"sweep", deck, "--out", sweep.string(), "--jobs", "2", "--threads", "1", "--quiet", "--vary",
+                        "ground_motion.acceleration_g=0.4", "--replicas", "4", "--seed", "3", "--set",
+                        "output.walking=true"},
+                       dir_ / "sweep.txt"),
+            0)
+      << read_text(dir_ / "sweep.txt");
+  const std::string by_point = read_text(sweep / "courses.csv");
+  EXPECT_EQ(column(by_point, "ground_motion.acceleration_g"), (std::vector<std::string>{"0.4", "0.4", "0.4", "0.4"}));
+  EXPECT_EQ(column(by_point, "max_bed_m_p84"), column(courses, "max_bed_m_p84"));
+}
+
+TEST_F(EnsembleCommand, BandsAlongAnIntensityAxisFromEachColumnsReplicas) {
+  // Two periods, three amplitudes about the tip's uplift (tan α = 0.506 g),
+  // four replicas each, run until the tip is at rest. Without a band axis
+  // ensembles.csv has no fractions; the same sweep again with one reuses the
+  // runs and adds them.
+  const fs::path out = dir_ / "plain";
+  const std::vector<std::string> common{
+      "sweep",  kTipDeck,   "--jobs", "2",        "--threads", "1",       "--quiet",
+      "--vary", "ground_motion.period=0.5,1.0",  "--vary",    "ground_motion.acceleration_g=0.4,0.6,0.8",
+      "--replicas", "4",    "--seed", "3",        "--set",     "simulation.end_time=6", "--set",
+      "simulation.settle_velocity=0.01",          "--set",     "simulation.settle_time=0.5"};
+  std::vector<std::string> a = common;
+  a.insert(a.end(), {"--out", (dir_ / "plain").string()});
+  ASSERT_EQ(run_binary(a, dir_ / "plain.txt"), 0) << read_text(dir_ / "plain.txt");
+  EXPECT_EQ(read_text(dir_ / "plain" / "ensembles.csv").find("p_collapse"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir_ / "plain" / "bands.csv"));
+  const std::string plain = read_text(dir_ / "plain" / "ensembles.csv");
+
+  a = common;
+  a.insert(a.end(), {"--out", out.string(), "--band-axis", "ground_motion.acceleration_g"});
+  ASSERT_EQ(run_binary(a, dir_ / "log.txt"), 0) << read_text(dir_ / "log.txt");
+  const std::string log = read_text(dir_ / "log.txt");
+  EXPECT_NE(log.find("period=0.5"), std::string::npos) << log;  // the table on stdout
+
+  // ensembles.csv: the same rows with the observed fractions added, each
+  // the class counts over the replicas with a verdict.
+  const std::string ensembles = read_text(out / "ensembles.csv");
+  std::istringstream with(ensembles), without(plain);
+  for (std::string l1, l2; std::getline(without, l2);) {
+    ASSERT_TRUE(std::getline(with, l1));
+    EXPECT_EQ(l1.substr(0, l2.size()), l2);
+  }
+  const auto judged = column(ensembles, "judged"), p_damage = column(ensembles, "p_damage"),
+             p_collapse = column(ensembles, "p_collapse"), intact = column(ensembles, "n_intact");
+  ASSERT_EQ(judged.size(), 6u) << ensembles;
+  for (std::size_t i = 0; i < judged.size(); ++i) {
+    ASSERT_NE(judged[i], "0") << ensembles;
+    EXPECT_NEAR(std::stod(p_damage[i]), 1.0 - std::stod(intact[i]) / std::stod(judged[i]), 1e-15) << ensembles;
+  }
+  // 0.4 g is below uplift; at 1 s, 0.8 g overturns the tip (docs/analytical.md).
+  EXPECT_EQ(p_damage[0], "0");
+  EXPECT_EQ(p_collapse[5], "1");
+
+  // bands.csv: one row per period and outcome, every replica counted once.
+  const std::string bands = read_text(out / "bands.csv");
+  EXPECT_EQ(bands.substr(0, bands.find('\n')),
+            "ground_motion.period,outcome,status,ground_motion.acceleration_g_16,ground_motion.acceleration_g_50,"
+            "ground_motion.acceleration_g_84,beta,ground_motion.acceleration_g_below,"
+            "ground_motion.acceleration_g_above,ground_motion.acceleration_g_falls_back,runs,reached,undetermined,"
+            "failed,largest_gap");
+  EXPECT_EQ(column(bands, "ground_motion.period"), (std::vector<std::string>{"0.5", "0.5", "0.5", "1", "1", "1"}));
+  EXPECT_EQ(column(bands, "outcome"), (std::vector<std::string>{"damage", "stones_lost", "collapse", "damage",
+                                                                 "stones_lost", "collapse"}));
+  const auto runs = column(bands, "runs"), undetermined = column(bands, "undetermined"),
+             status = column(bands, "status"), below = column(bands, "ground_motion.acceleration_g_below"),
+             above = column(bands, "ground_motion.acceleration_g_above");
+  for (std::size_t i = 0; i < runs.size(); ++i) EXPECT_EQ(std::stoi(runs[i]) + std::stoi(undetermined[i]), 12) << bands;
+  // At 1 s the tip's collapse is certain at 0.8 g and absent at 0.4 g: the
+  // 50 % point is bracketed, with or without a fit.
+  const double half = std::stod(p_collapse[4]);  // at 0.6 g
+  EXPECT_EQ(above[5], half >= 0.5 ? "0.6" : "0.8") << bands;
+  EXPECT_EQ(below[5], half >= 0.5 ? "0.4" : "0.6") << bands;
+  EXPECT_NE(status[5], "no_runs");
+  // Bad input writes nothing.
+  for (const auto& [extra, message] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"--band-axis", "ground_motion.acceleration_g"}, "--band-axis goes with --replicas"},
+           {{"--replicas", "2", "--band-axis", "ground_motion.damping"}, "not one of the --vary keys"},
+           {{"--replicas", "2", "--band-axis", "ensemble.replica"}, "not one of the --vary keys"}}) {
+    std::vector<std::string> bad{"sweep", kTipDeck, "--out", (dir_ / "bad").string(), "--vary",
+                                 "ground_motion.acceleration_g=0.4,0.6"};
+    bad.insert(bad.end(), extra.begin(), extra.end());
+    EXPECT_EQ(run_binary(bad, dir_ / "bad.txt"), 2) << message;
+    EXPECT_NE(read_text(dir_ / "bad.txt").find(message), std::string::npos) << read_text(dir_ / "bad.txt");
+    EXPECT_FALSE(fs::exists(dir_ / "bad"));
+  }
+  EXPECT_EQ(run_binary({"sweep", kTipDeck, "--out", (dir_ / "bad").string(), "--vary",
+                        "ground_motion.acceleration_g=0,0.6", "--replicas", "2", "--band-axis",
+                        "ground_motion.acceleration_g"},
+                       dir_ / "bad.txt"),
+            2);
+  EXPECT_NE(read_text(dir_ / "bad.txt").find("must be > 0"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir_ / "bad"));
+}
+
 #ifdef POLYDEM_MPIEXEC
 TEST_F(EnsembleCommand, UnderMpirunTheRanksShareTheReplicas) {
   const fs::path local = dir_ / "local", mpi = dir_ / "mpi";

@@ -332,18 +332,18 @@ TEST_F(Restart, RefusesDamagedCheckpoints) {
   o.overrides = kOverrides;
   struct Damage {
     std::string bytes;
-    const char* message;
+    std::string message;
   };
   std::string flipped = good;
   flipped[good.size() / 2] = static_cast<char>(flipped[good.size() / 2] ^ 0x10);
   std::string bad_version = good;
-  bad_version[8] = 7;
+  bad_version[8] = static_cast<char>(kCheckpointVersion + 1);
   const std::vector<Damage> cases = {
       {good.substr(0, good.size() / 2), "truncated checkpoint"},
       {good.substr(0, 20), "truncated checkpoint"},
       {good + "xx", "oversized checkpoint"},
       {flipped, "checksum does not match"},
-      {bad_version, "format version 7"},
+      {bad_version, "format version " + std::to_string(kCheckpointVersion + 1)},
       {"{\"status\": \"intact\"}\n", "not a polydem checkpoint"},
       {"", "not a polydem checkpoint"},
   };

@@ -77,6 +77,26 @@ def test_ensemble_matches_the_command_line(tmp_path):
     assert np.isnan(r.replicas["max_bed_opening_m"]).all()  # no walking recorded: not measured
 
 
+def test_ensemble_courses_match_the_command_line(tmp_path):
+    """With output.walking the Python summary's courses are courses.csv's."""
+    import csv
+    from conftest import polydem_cli
+    column = deck("examples/verification/column_rocking.toml")
+    r = polydem.ensemble(column, 3, seed=2, threads=1, progress=False, set={"output.walking": True})
+    out = tmp_path / "cli"
+    done = polydem_cli("ensemble", column, "--replicas", 3, "--seed", 2, "--jobs", 2, "--threads", 1,
+                       "--set", "output.walking=true", "--out", out)
+    assert done.returncode == 0, done.stderr
+    with open(out / "courses.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == len(r.summary["courses"]) == 4
+    for row, c in zip(rows, r.summary["courses"]):
+        assert float(row["level_m"]) == c["level_m"] and int(row["bed_joints"]) == c["bed_joints"]
+        for name in ("residual_bed_largest_m", "max_bed_m"):
+            assert c[name]["n"] == 3
+            assert float(row[f"{name}_median"]) == c[name]["median"], name
+
+
 def test_ensemble_bad_input_raises_before_running():
     with pytest.raises(ValueError):
         polydem.ensemble(TIP, 0, progress=False)

@@ -77,5 +77,50 @@ TEST(Walking, AGapAtTheStartIsNoJoint) {
   EXPECT_EQ(r.walking.max_bed_opening, 0.0);
 }
 
+// Two courses on a fixed base, no gravity: course 0 is three stones in a
+// row (C0, A0, B0), course 1 one narrower stone on A0. B0 moves away along
+// x at v (it opens the vertical joint A0|B0 and slides on the base), A1
+// lifts off A0 at w (it opens the bed joint under course 1). At the end of
+// the run, course 0: bed joints closed, vertical joints 0 and v·t (mean
+// v·t/2, largest v·t); course 1: its bed joint w·t, no vertical joint. The
+// largest during the run equals the end value (every opening grows).
+TEST(Walking, PerCourseOpeningsFromTheBedLevels) {
+  const double v = 0.01, w = 0.02, end = 0.5;
+  std::ostringstream d;
+  d << "[simulation]\nend_time = " << end << "\ngravity = [0.0, 0.0, 0.0]\ncontact_margin = 0.003\n\n"
+    << "[joint]\nnormal_stiffness = 1e9\ndamping = 0.0\n\n"
+    << "[[block]]\nname = \"base\"\nshape = \"box\"\nsize = [3.0, 1.0, 0.5]\ncenter = [0.0, 0.0, -0.25]\n"
+    << "motion = \"fixed\"\n\n";
+  auto stone = [&](const char* name, double x, double z, double sx, const char* velocity) {
+    d << "[[block]]\nname = \"" << name << "\"\nshape = \"box\"\nsize = [" << sx << ", 1.0, 0.5]\n"
+      << "center = [" << x << ", 0.0, " << z << "]\nvelocity = " << velocity << "\n\n";
+  };
+  stone("C0", -1.0, 0.25, 1.0, "[0.0, 0.0, 0.0]");
+  stone("A0", 0.0, 0.25, 1.0, "[0.0, 0.0, 0.0]");
+  stone("B0", 1.0, 0.25, 1.0, "[0.01, 0.0, 0.0]");
+  stone("A1", 0.0, 0.75, 0.8, "[0.0, 0.0, 0.02]");
+  d << "[output]\nhistory_interval = 0.01\nwalking = true\nenergies = false\n";
+  const RunReport r = run_scene(parse_deck(d.str(), "courses.toml"));
+  const double t = r.end_time - r.time_step;  // the force time of the last state
+  ASSERT_EQ(r.walking.courses.size(), 2u);
+  const CourseWalking& c0 = r.walking.courses[0];
+  const CourseWalking& c1 = r.walking.courses[1];
+  EXPECT_NEAR(c0.level, 0.0, 1e-12);
+  EXPECT_NEAR(c1.level, 0.5, 1e-12);
+  EXPECT_EQ(c0.bed_joints, 3);
+  EXPECT_EQ(c0.vertical_joints, 2);
+  EXPECT_EQ(c1.bed_joints, 1);
+  EXPECT_EQ(c1.vertical_joints, 0);
+  EXPECT_LT(c0.bed_largest, 1e-9);
+  EXPECT_NEAR(c0.vertical_largest, v * t, 1e-9);
+  EXPECT_NEAR(c0.vertical_mean, v * t / 2, 1e-9);
+  EXPECT_NEAR(c1.bed_largest, w * t, 1e-9);
+  EXPECT_NEAR(c1.bed_mean, w * t, 1e-9);
+  EXPECT_EQ(c1.vertical_largest, 0.0);
+  EXPECT_NEAR(c0.peak_vertical, c0.vertical_largest, 0.01 * v + 1e-9);  // the last record is within one interval
+  EXPECT_NEAR(c1.peak_bed, c1.bed_largest, 0.01 * w + 1e-9);
+  EXPECT_GT(c1.peak_bed, 0.9 * w * t);
+}
+
 }  // namespace
 }  // namespace polydem

@@ -11,7 +11,9 @@ uses: several runs with their difference, --x ground.acceleration, --vline,
 --length-unit, several collapse.json with --hline, --zoom), and
 checks that each PNG exists, is larger than 10 kB and is not a blank image (the
 standard deviation of its pixels). A small polydem sweep boundary search on the
-spire's tip feeds plot_pulse_figures.py and plot_collapse_diagram.py. The spire rendering must take under 20 s.
+spire's tip feeds plot_pulse_figures.py and plot_collapse_diagram.py, and a
+sweep of its ensembles with bands the latter's --bands panels; a sweep of the
+column of drums' ensembles with walking feeds plot_walking.py. The spire rendering must take under 20 s.
 No pytest: a failure prints what failed and exits 1.
 """
 
@@ -135,6 +137,30 @@ def main():
         run([PYTHON, os.path.join(scripts, "plot_collapse_diagram.py"), sweep, "--polydem", polydem,
              "--body", "cone", "--r_b", "0.4301", "--H", "3.4", "--a_max", "2.5", "--out", png("sweep_diagram.png")])
         check_png(png("sweep_diagram.png"))
+        # The same tip as ensembles with bands along a_p (2 replicas a point),
+        # drawn with the analytical curves of both overturning conventions.
+        bands = os.path.join(tmp, "bands")
+        run([polydem, "sweep", os.path.join(source, "examples", "spire", "tip_pulse.toml"), "--out", bands,
+             "--quiet", "--jobs", "2", "--vary", "ground_motion.period=0.75,1.5",
+             "--vary", "ground_motion.acceleration_g=0.4,0.8,1.2", "--replicas", "2",
+             "--band-axis", "ground_motion.acceleration_g"])
+        run([PYTHON, os.path.join(scripts, "plot_collapse_diagram.py"), "--polydem", polydem, "--body", "cone",
+             "--r_b", "0.4301", "--H", "3.4", "--a_max", "2.5", "--no-return", "--bands", bands, "deck",
+             "--bands", bands, "again", "--dpi", "50", "--out", png("bands_diagram.png")])
+        check_png(png("bands_diagram.png"))
+        # Walking per course from ensembles: the column of drums with walking
+        # on at two amplitudes, 3 replicas each, one table compared with itself.
+        walk = os.path.join(tmp, "walk")
+        run([polydem, "sweep", os.path.join(source, "examples", "verification", "column_rocking.toml"), "--out", walk,
+             "--quiet", "--jobs", "2", "--set", "output.walking=true",
+             "--vary", "ground_motion.acceleration_g=0.35,0.4", "--replicas", "3"])
+        courses = os.path.join(walk, "courses.csv")
+        run([PYTHON, os.path.join(scripts, "plot_walking.py"), courses, "--key", "ground_motion.acceleration_g",
+             "--label", "{} g", "--compare", courses, "again {} g", "--dpi", "50", "--out", png("walking.png")])
+        check_png(png("walking.png"))
+        run([PYTHON, os.path.join(scripts, "plot_walking.py"), courses, "--key", "ground_motion.acceleration_g",
+             "--figure", "peak", "--dpi", "50", "--out", png("walking_peak.png")])
+        check_png(png("walking_peak.png"))
 
         # The spire's λ sensitivity (docs/data, measured by polydem collapse) as a tornado chart.
         run([PYTHON, os.path.join(scripts, "plot_sensitivity.py"),

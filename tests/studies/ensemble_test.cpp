@@ -215,5 +215,42 @@ TEST(Ensemble, PercentilesAndCountsAgainstAHandComputedCase) {
   }
 }
 
+// Per course: each figure's distribution over the replicas that measured
+// it; an unstable replica, or one with a different mesh, is left out.
+TEST(Ensemble, CourseDistributionsOverTheReplicas) {
+  std::vector<PointResult> runs(7);
+  for (int i = 0; i < 7; ++i) {
+    runs[i].status = i == 5 ? "unstable" : "damaged";
+    runs[i].courses.resize(i == 6 ? 3 : 2);
+    for (std::size_t k = 0; k < runs[i].courses.size(); ++k) {
+      CourseWalking& c = runs[i].courses[k];
+      c.level = 0.3 * static_cast<double>(k);
+      c.bed_joints = 4;
+      c.vertical_joints = 2 + static_cast<int>(k);
+      c.vertical_largest = (k + 1) * 1e-3 * (i + 1);  // course 1: 2, 4, ..., 10 mm over replicas 0-4
+      c.peak_vertical = 1.0;                         // the same in every replica
+    }
+  }
+  runs[5].courses[1].vertical_largest = 1e3;  // unstable: must not count
+  const EnsembleOutcome o = summarise_ensemble(runs);
+  ASSERT_EQ(o.courses.size(), 2u);
+  EXPECT_NEAR(o.courses[1].level, 0.3, 1e-15);
+  EXPECT_EQ(o.courses[1].vertical_joints, 3);
+  const auto q = course_quantities();
+  ASSERT_EQ(o.courses[1].quantities.size(), q.size());
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    const Distribution& d = o.courses[1].quantities[i];
+    EXPECT_EQ(d.n, 5) << q[i].name;  // replicas 0-4: not the unstable one, not the other mesh
+    if (std::string(q[i].name) == "residual_vertical_largest_m") {
+      EXPECT_NEAR(d.median, 6e-3, 1e-15);               // {2, 4, 6, 8, 10} mm
+      EXPECT_NEAR(d.p16, 2e-3 + 0.64 * 2e-3, 1e-15);    // at 0.64
+      EXPECT_NEAR(d.p84, 8e-3 + 0.36 * 2e-3, 1e-15);    // at 3.36
+    }
+    if (std::string(q[i].name) == "max_vertical_m") {
+      EXPECT_EQ(d.median, 1.0);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace polydem

@@ -1,0 +1,156 @@
+#!/usr/bin/env python3
+"""Whether the distributions polydem reports move with the time step, into
+benchmarks/results/distributions.csv (table `distributions`, docs/ensembles.md):
+
+    /usr/bin/python3 benchmarks/distributions.py build/polydem [--case C]...
+        [--setting S]... [--jobs 2] [--force] [--out DIR]
+
+The same ensembles at the deck's safety factor (0.8) and at half of it
+(`simulation.safety_factor = 0.4`, half the time step):
+
+  tipT      the spire's 3.4 m tip under one-sine pulses of period T = 0.6,
+            1.0 and 2.0 s (cases tip0.6, tip1.0, tip2.0;
+            examples/spire/tip_pulse.toml, run until the tip is at rest):
+            20 replicas at a_p by 0.1 g about the boundary (0.5-2.0 g at
+            0.6 s, 0.5-1.2 g at 1.0 and 2.0 s), then, where the
+            probability of collapse steps from none to all within one
+            0.1 g interval, at every 0.01 g inside it
+            (scripts/bands_refine.py); the 50 % collapse boundary and its
+            16-84 % band, or the bracket of a step sharper than the grid
+            (docs/ensembles.md, "Bands along an intensity axis")
+  walking4  the whole spire under the earthquake deck's record x4
+            (examples/spire/earthquake.toml), 5 replicas: the median and
+            16-84 % of the largest residual and largest transient opening
+            of vertical and of bed joints, and the median of the top
+            course's largest residual vertical opening (the course that
+            walks most)
+
+Every run is `nice -n 10 polydem ... --threads 1`, --jobs at a time. Each
+case and setting is a `polydem sweep` in DIR/<case>_<setting> (default
+DIR out/distributions), resumable: an interrupted benchmark runs only what
+is missing. The walking sweep at the safety factor 0.8 varies the scale over
+2, 4 and 6 (the scale 4 is compared; docs/spire.md draws all three). The
+CSV keeps one row per (case, setting, quantity) with the machine, CPU,
+commit and date; a (case, setting) already in it is skipped unless --force.
+"""
+import argparse
+import csv
+import datetime
+import os
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(__file__))
+import timings_csv  # noqa: E402
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
+CSV = os.path.join(ROOT, "benchmarks", "results", "distributions.csv")
+FIELDS = ["machine", "cpu", "commit", "date", "case", "setting", "quantity", "value", "unit"]
+SETTINGS = {"safety factor 0.8": [], "safety factor 0.4": ["--set", "simulation.safety_factor=0.4"]}
+TIP = os.path.join(ROOT, "examples", "spire", "tip_pulse.toml")
+EARTHQUAKE = os.path.join(ROOT, "examples", "spire", "earthquake.toml")
+TIP_RUN = ["--replicas", "20", "--quiet", "--band-axis", "ground_motion.acceleration_g",
+           "--set", "simulation.end_time=20", "--set", "simulation.settle_velocity=0.01",
+           "--set", "simulation.settle_time=0.5"]
+# a_p by 0.1 g about each period's first rise of the collapse probability
+# (docs/analytical.md: 1.46 g at 0.6 s, 0.67 at 1.0 s, 0.59 at 2.0 s)
+GRID = {"0.6": (0.5, 2.0), "1.0": (0.5, 1.2), "2.0": (0.5, 1.2)}
+
+
+def grid(period):
+    lo, hi = GRID[period]
+    return ",".join(f"{lo + 0.1 * i:.1f}" for i in range(int(round((hi - lo) / 0.1)) + 1))
+
+
+def sweep(polydem, deck, args, out, jobs):
+    cmd = ["nice", "-n", "10", polydem, "sweep", deck, "--jobs", str(jobs), "--threads", "1", "--out", out] + args
+    print("$", " ".join(cmd), flush=True)
+    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    if proc.returncode not in (0, 3):
+        sys.exit(f"FAILED ({proc.returncode}):\n{proc.stdout}")
+    return proc.stdout
+
+
+def read(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def tip_case(polydem, period, setting, out, jobs):
+    base = TIP_RUN + SETTINGS[setting] + ["--vary", f"ground_motion.period={period}"]
+    sweep(polydem, TIP, base + ["--vary", f"ground_motion.acceleration_g={grid(period)}"], out, jobs)
+    refine = subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "bands_refine.py"), "grid", out,
+                             "--outcomes", "collapse"], stdout=subprocess.PIPE, text=True, check=True).stdout.split()
+    if len(refine) == 2:  # the column's value and its refined list
+        sweep(polydem, TIP, base + ["--vary", f"ground_motion.acceleration_g={refine[1]}"], out, jobs)
+    row = next(r for r in read(os.path.join(out, "bands.csv")) if r["outcome"] == "collapse")
+    a = "ground_motion.acceleration_g"
+    got = {"collapse status": (row["status"], "-")}
+    for q, key in (("collapse 16 %", "_16"), ("collapse 50 %", "_50"), ("collapse 84 %", "_84"),
+                   ("collapse bracket below", "_below"), ("collapse bracket above", "_above")):
+        if row[a + key] != "":
+            got[q] = (row[a + key], "g")
+    got["runs"] = (row["runs"], "-")
+    return got
+
+
+def walking_case(polydem, setting, out, jobs):
+    scales = "2,4,6" if setting == "safety factor 0.8" else "4"
+    sweep(polydem, EARTHQUAKE, SETTINGS[setting] + ["--set", "output.snapshot_interval=0", "--quiet",
+                                                    "--vary", f"ground_motion.scale={scales}", "--replicas", "5"],
+          out, jobs)
+    point = next(r for r in read(os.path.join(out, "ensembles.csv")) if float(r["ground_motion.scale"]) == 4)
+    got = {"replicas": (point["replicas"], "-")}
+    for stem in ("residual_vertical_opening_m", "residual_bed_opening_m", "max_vertical_opening_m",
+                 "max_bed_opening_m"):
+        for p in ("p16", "median", "p84"):
+            got[f"{stem[:-2]} {p}"] = (point[f"{stem}_{p}"], "m")
+    courses = [r for r in read(os.path.join(out, "courses.csv")) if float(r["ground_motion.scale"]) == 4]
+    top = max((r for r in courses if int(r["vertical_joints"]) > 0), key=lambda r: float(r["level_m"]))
+    got["top course level"] = (top["level_m"], "m")
+    for p in ("p16", "median", "p84"):
+        got[f"top course residual vertical largest {p}"] = (top[f"residual_vertical_largest_m_{p}"], "m")
+    return got
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("polydem")
+    ap.add_argument("--case", action="append", choices=["tip0.6", "tip1.0", "tip2.0", "walking4"])
+    ap.add_argument("--setting", action="append", choices=list(SETTINGS))
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--force", action="store_true")
+    ap.add_argument("--out", default=os.path.join(ROOT, "out", "distributions"))
+    args = ap.parse_args()
+    polydem = os.path.abspath(args.polydem)
+    cases = args.case or ["tip0.6", "tip1.0", "tip2.0", "walking4"]
+    settings = args.setting or list(SETTINGS)
+    rows = read(CSV) if os.path.exists(CSV) else []
+    done = {(r["case"], r["setting"]) for r in rows}
+    machine = {"machine": timings_csv.machine(), "cpu": timings_csv.cpu()}
+    commit = timings_csv.commit()
+    for case in cases:
+        for setting in settings:
+            if (case, setting) in done and not args.force:
+                print(f"{case}, {setting}: in the CSV (--force to run again)")
+                continue
+            out = os.path.join(args.out, f"{case}_{setting.replace(' ', '_')}")
+            t0 = time.monotonic()
+            got = (walking_case(polydem, setting, out, args.jobs) if case == "walking4"
+                   else tip_case(polydem, case[3:], setting, out, args.jobs))
+            got["wall time"] = (f"{time.monotonic() - t0:.0f}", "s")
+            rows = [r for r in rows if (r["case"], r["setting"]) != (case, setting)]
+            for q, (v, unit) in got.items():
+                rows.append({**machine, "commit": commit, "date": datetime.date.today().isoformat(), "case": case,
+                             "setting": setting, "quantity": q, "value": v, "unit": unit})
+            with open(CSV + ".tmp", "w", newline="") as f:
+                w = csv.DictWriter(f, FIELDS)
+                w.writeheader()
+                w.writerows(rows)
+            os.replace(CSV + ".tmp", CSV)
+            print(f"{case}, {setting}: " + ", ".join(f"{q} {v}" for q, (v, _) in got.items()), flush=True)
+
+
+if __name__ == "__main__":
+    main()
