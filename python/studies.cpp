@@ -202,15 +202,16 @@ void bind_studies(py::module_& m) {
         for (const auto& [status, n] : o.status_counts) counts[py::str(status)] = n;
         modes["I"] = o.mode_I;
         modes["II"] = o.mode_II;
-        const auto quantities = ensemble_quantities();
-        for (std::size_t i = 0; i < quantities.size(); ++i) {
+        auto as_dict = [](const Distribution& d) {
           py::dict q;
-          q["n"] = o.quantities[i].n;
-          q["p16"] = o.quantities[i].p16;
-          q["median"] = o.quantities[i].median;
-          q["p84"] = o.quantities[i].p84;
-          distributions[quantities[i].name] = q;
-        }
+          q["n"] = d.n;
+          q["p16"] = d.p16;
+          q["median"] = d.median;
+          q["p84"] = d.p84;
+          return q;
+        };
+        const auto quantities = ensemble_quantities();
+        for (std::size_t i = 0; i < quantities.size(); ++i) distributions[quantities[i].name] = as_dict(o.quantities[i]);
         py::dict summary;
         summary["replicas"] = o.replicas;
         summary["seed"] = seed;
@@ -218,20 +219,13 @@ void bind_studies(py::module_& m) {
         summary["collapse_modes"] = modes;
         summary["distributions"] = distributions;
         py::list courses;  // output.walking: per course from the bottom
+        const auto cq = course_quantities();
         for (const CourseDistribution& c : o.courses) {
           py::dict dc;
           dc["level_m"] = c.level;
           dc["bed_joints"] = c.bed_joints;
           dc["vertical_joints"] = c.vertical_joints;
-          const auto cq = course_quantities();
-          for (std::size_t i = 0; i < cq.size(); ++i) {
-            py::dict q;
-            q["n"] = c.quantities[i].n;
-            q["p16"] = c.quantities[i].p16;
-            q["median"] = c.quantities[i].median;
-            q["p84"] = c.quantities[i].p84;
-            dc[cq[i].name] = q;
-          }
+          for (std::size_t i = 0; i < cq.size(); ++i) dc[cq[i].name] = as_dict(c.quantities[i]);
           courses.append(dc);
         }
         summary["courses"] = courses;
