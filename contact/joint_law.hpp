@@ -14,10 +14,13 @@
 //            times the spring's (ξ ≈ 0.8 on the spire), so the two
 //            choices differ in how far stones slide at each impact. With
 //            "total" the shear dashpot is within the bound too: the joint
-//            slips when the spring's trial and the shear dashpot together
-//            exceed the cap (the dashpot is then off and the spring keeps
-//            its trial up to the cap), so the whole tangential force never
-//            exceeds tan φ times the whole normal force;
+//            slips when the spring's trial alone, or the spring's trial
+//            and the shear dashpot together, exceed the cap (the dashpot
+//            is then off, and the spring keeps its trial up to the cap; a
+//            bond is lost as on any slip), so the whole tangential force
+//            never exceeds tan φ times the whole normal force. Explicit
+//            damping only: the split scheme applies part of the dashpots
+//            after the law, beyond any cap;
 //   damping: stiffness-proportional, β·kn·A·u̇_n and β·ks·A·v_s, only while
 //            the joint is closed (and, in shear, not slipping) — Rayleigh
 //            damping of the joint springs as in 3DEC, Table 1's β.

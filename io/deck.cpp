@@ -159,6 +159,19 @@ JointSpec read_joint_keys(const TableReader& r, const JointSpec& base, double sh
   return j;
 }
 
+// Friction on the total normal force bounds the dashpots' force, which the
+// split scheme applies in part after the joint law (integrators/
+// split_damping.hpp) where no cap can see it: refused with "split".
+void refuse_total_friction_for_split(const Deck& deck, const SceneSpec& scene) {
+  auto total = [](const JointSpec& j) { return j.friction_normal == FrictionNormal::total; };
+  const std::string why = "friction_normal_force = \"total\" works with simulation.damping_scheme = \"explicit\" only";
+  const toml::node* node = deck.root().get("joint");
+  if (total(scene.joint)) deck.fail("joint", node, why);
+  for (const JointPairSpec& p : scene.joint_pairs)
+    if (total(p.joint))
+      deck.fail("joint", node, "the law between '" + p.group_a + "' and '" + p.group_b + "': " + why);
+}
+
 // The overlap joint model's layer carries compression only
 // (contact/overlap_joint.hpp): a law with cohesion or tensile strength is
 // refused where it is given.
@@ -982,6 +995,7 @@ SceneSpec parse_deck(const std::string& text, const std::string& path_for_messag
   scene.joint = joints.joint;
   scene.joint_pairs = std::move(joints.pairs);
   if (scene.simulation.joint_model == JointModel::overlap) refuse_bonds_for_overlap(deck, scene);
+  if (scene.simulation.damping_scheme == DampingScheme::split) refuse_total_friction_for_split(deck, scene);
   scene.groups = read_groups(deck, scene.blocks);
   scene.loads = read_loads(deck, scene.blocks);
   scene.prescribed = read_prescribed(deck, scene.blocks);

@@ -9,7 +9,7 @@ namespace polydem {
 
 JointCells joint_cells(const ContactSet& c) {
   JointCells out;
-  const bool per_pair = c.joints.size() == c.pairs.size() && !c.pairs.empty();  // the overlap model
+  const bool per_pair = c.pair_joints_in_use();  // the overlap model
   for (std::size_t q = 0; q < c.pairs.size(); ++q) {
     const ContactPair& p = c.pairs[q];
     if (p.count == 0) continue;

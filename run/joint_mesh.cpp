@@ -47,13 +47,27 @@ void JointMesh::assign_courses(const Simulation& sim, const Vec3& up) {
     if (std::abs((st.rotation[j.ref] * j.normal_local).dot(up)) >= level_cosine) bed_heights.push_back(height[q]);
   }
   const auto [lo, hi] = std::minmax_element(height.begin(), height.end());
-  const double tolerance = 0.01 * (*hi - *lo);
+  const double tolerance = 1e-3 * (*hi - *lo);
+  // A level: level bed joints whose heights follow each other within the
+  // tolerance; its height, the lowest of them.
   std::sort(bed_heights.begin(), bed_heights.end());
-  for (double h : bed_heights)
-    if (course_levels.empty() || h > course_levels.back() + tolerance) course_levels.push_back(h);
-  if (course_levels.empty()) course_levels.push_back(*lo);  // no bed joint: one course
+  std::vector<double> level_top;  // the highest height in each level
+  for (double h : bed_heights) {
+    if (level_top.empty() || h > level_top.back() + tolerance) {
+      course_levels.push_back(h);
+      level_top.push_back(h);
+    } else {
+      level_top.back() = h;
+    }
+  }
+  if (course_levels.empty()) {  // no bed joint: one course
+    course_levels.push_back(*lo);
+    level_top.push_back(*lo);
+  }
   for (std::size_t q = 0; q < joints.size(); ++q) {
-    const auto above = std::upper_bound(course_levels.begin(), course_levels.end(), height[q] + tolerance);
+    // The last level starting at or below the joint (its own level for a
+    // level bed joint, whose height is at most its level's top).
+    const auto above = std::upper_bound(course_levels.begin(), course_levels.end(), height[q]);
     joints[q].course = std::max(0, static_cast<int>(above - course_levels.begin()) - 1);
   }
 }

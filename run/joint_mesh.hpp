@@ -15,7 +15,8 @@
 //
 // Courses. A course is a layer of stones resting on one bed level: the
 // level bed joints (normal within 10° of up) whose centres lie at one height
-// at t = 0 (within 1 % of the height the joints span) make a level, and
+// at t = 0 (each within 0.1 % of the height the joints span of the next)
+// make a level, at the lowest of their heights, and
 // course k is what rests on level k, up to level k + 1. A joint belongs to
 // the course its centre lies in, a bed joint on a level to the course it
 // carries (the joint under it); a tilted bed joint (a window's voussoir)

@@ -189,6 +189,8 @@ void Recorder::finish_walking(const Simulation& sim) {
   for (CourseWalking& c : walk.courses) {
     if (c.bed_joints > 0) c.bed_mean /= c.bed_joints;
     if (c.vertical_joints > 0) c.vertical_mean /= c.vertical_joints;
+    c.peak_bed = std::max(c.peak_bed, c.bed_largest);  // the records sample the run; the end is one more sample
+    c.peak_vertical = std::max(c.peak_vertical, c.vertical_largest);
   }
 }
 

@@ -42,6 +42,7 @@ void save_loop(ByteWriter& w, const RunReport& rep, const Recorder& rec, const L
   w.put(rec.energies.rows);
   w.put(rec.walk.max_bed_opening);
   w.put(rec.walk.max_vertical_opening);
+  w.put(static_cast<std::uint64_t>(rec.walk.courses.size()));
   for (const CourseWalking& c : rec.walk.courses) {
     w.put(c.peak_bed);
     w.put(c.peak_vertical);
@@ -68,6 +69,11 @@ void load_loop(ByteReader& r, RunReport& rep, Recorder& rec, LoopState& s, std::
     throw StateFormatError("history rows do not fit the deck's columns");
   r.get(rec.walk.max_bed_opening);
   r.get(rec.walk.max_vertical_opening);
+  std::uint64_t courses = 0;
+  r.get(courses);
+  if (courses != rec.walk.courses.size())
+    throw StateFormatError("the checkpoint has walking on " + std::to_string(courses) + " courses, the deck " +
+                           std::to_string(rec.walk.courses.size()));
   for (CourseWalking& c : rec.walk.courses) {
     r.get(c.peak_bed);
     r.get(c.peak_vertical);
