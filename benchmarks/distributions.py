@@ -9,8 +9,10 @@ The same ensembles at the deck's safety factor (0.8) and at half of it
 (`simulation.safety_factor = 0.4`, half the time step); the walking also
 at the contact margin halved and doubled (`simulation.contact_margin`, the
 automatic margin the deck's own runs report in summary.json, scaled; run
-after the safety factor 0.8) and under split damping
-(`simulation.damping_scheme = "split"`):
+after the safety factor 0.8), under split damping
+(`simulation.damping_scheme = "split"`) and with friction bounded by the
+joints' whole normal force, spring and dashpot (`joint.friction_normal_force
+= "total"`, docs/deck.md):
 
   tipT      the spire's 3.4 m tip under one-sine pulses of period T = 0.6,
             1.0 and 2.0 s (cases tip0.6, tip1.0, tip2.0;
@@ -53,9 +55,10 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 CSV = os.path.join(ROOT, "benchmarks", "results", "distributions.csv")
 FIELDS = ["machine", "cpu", "commit", "date", "case", "setting", "quantity", "value", "unit"]
 SETTINGS = {"safety factor 0.8": [], "safety factor 0.4": ["--set", "simulation.safety_factor=0.4"],
+            "friction on total": ["--set", "joint.friction_normal_force=total"],
             "margin x0.5": None, "margin x2": None,  # the automatic margin scaled (margin_args)
             "split damping": ["--set", "simulation.damping_scheme=split"]}
-WALKING_ONLY = ("margin x0.5", "margin x2", "split damping")
+WALKING_ONLY = ("friction on total", "margin x0.5", "margin x2", "split damping")
 TIP = os.path.join(ROOT, "examples", "spire", "tip_pulse.toml")
 EARTHQUAKE = os.path.join(ROOT, "examples", "spire", "earthquake.toml")
 TIP_RUN = ["--replicas", "20", "--quiet", "--band-axis", "ground_motion.acceleration_g",

@@ -274,7 +274,7 @@ def table_distributions():
     got = {}
     for r in rows:
         got.setdefault((r["case"], r["setting"]), {})[r["quantity"]] = r["value"]
-    order = ["safety factor 0.8", "safety factor 0.4", "margin x0.5", "margin x2", "split damping"]
+    order = ["safety factor 0.8", "safety factor 0.4", "friction on total", "margin x0.5", "margin x2", "split damping"]
     settings = sorted({r["setting"] for r in rows}, key=lambda s: (order.index(s) if s in order else len(order), s))
 
     def collapse(q):
