@@ -16,6 +16,7 @@ JointLaw make_joint_law(const JointSpec& spec) {
   law.cohesion = spec.cohesion;
   law.tensile_strength = spec.tensile_strength;
   law.beta = spec.damping;
+  law.friction_on_total = spec.friction_normal == FrictionNormal::total;
   return law;
 }
 

@@ -7,7 +7,17 @@
 //            the joint (Q, below) and is projected onto the current plane,
 //            then increments; capped at c·A + F_n·tan φ (slip: the cap is
 //            the force, the excess displacement is dissipated, the bond is
-//            lost);
+//            lost), F_n the spring's force as in 3DEC or, with [joint]
+//            friction_normal_force = "total", the spring's and the normal
+//            dashpot's (below) where the joint closes, F_n + β·kn·A·u̇_n:
+//            at the onset of an impact the dashpot's force is several
+//            times the spring's (ξ ≈ 0.8 on the spire), so the two
+//            choices differ in how far stones slide at each impact. With
+//            "total" the shear dashpot is within the bound too: the joint
+//            slips when the spring's trial and the shear dashpot together
+//            exceed the cap (the dashpot is then off and the spring keeps
+//            its trial up to the cap), so the whole tangential force never
+//            exceeds tan φ times the whole normal force;
 //   damping: stiffness-proportional, β·kn·A·u̇_n and β·ks·A·v_s, only while
 //            the joint is closed (and, in shear, not slipping) — Rayleigh
 //            damping of the joint springs as in 3DEC, Table 1's β.

@@ -26,6 +26,9 @@ struct JointLaw {
   double cohesion = 0;          // Pa
   double tensile_strength = 0;  // Pa
   double beta = 0;              // s
+  // The Coulomb cap on the normal force with its dashpot's (closing) part,
+  // not the spring's alone ([joint] friction_normal_force = "total").
+  bool friction_on_total = false;
   // New joints of this law start bonded (cohesion or tension).
   bool bonds() const { return cohesion > 0 || tensile_strength > 0; }
 };

@@ -232,18 +232,26 @@ void overlap_joint_forces(const JointLaws& laws, const std::vector<Polyhedron>& 
     tw -= ks_polar * dt * spin;
 
     // Friction: the ellipse (|F|/F_max)² + (T/T_max)² ≤ 1.
-    const double f_max = std::max(law.cohesion * area + law.tan_phi * n_elastic, 0.0);
+    const double n_friction = law.friction_on_total ? n_elastic + n_viscous : n_elastic;
+    const double f_max = std::max(law.cohesion * area + law.tan_phi * n_friction, 0.0);
     const double t_max = kTwistArm * std::sqrt(polar / area) * f_max;
-    const double e = (f_max > 0 ? fs.squaredNorm() / (f_max * f_max) : (fs.squaredNorm() > 0 ? 1e300 : 0.0)) +
-                     (t_max > 0 ? tw * tw / (t_max * t_max) : (tw != 0 ? 1e300 : 0.0));
-    bool slipping = false;
+    auto ellipse = [&](const Vec3& f, double t) {
+      return (f_max > 0 ? f.squaredNorm() / (f_max * f_max) : (f.squaredNorm() > 0 ? 1e300 : 0.0)) +
+             (t_max > 0 ? t * t / (t_max * t_max) : (t != 0 ? 1e300 : 0.0));
+    };
+    const double e = ellipse(fs, tw);
+    // With friction_on_total the whole shear and twist, springs and
+    // dashpots, is what friction bounds: beyond it the joint slips and the
+    // dashpots are off; the springs keep their trial up to the limit
+    // (joint_law.hpp).
+    const bool slipping =
+        e > 1 || (law.friction_on_total && ellipse(fs - (law.beta * ks_area) * vs, tw - law.beta * ks_polar * spin) > 1);
     if (e > 1) {
       const double s = 1.0 / std::sqrt(e);
       const double trial = fs.squaredNorm() / ks_area + (ks_polar > 0 ? tw * tw / ks_polar : 0.0);
       j.slip_energy[q] += s * (1.0 - s) * trial;
       fs *= s;
       tw *= s;
-      slipping = true;
     }
     j.shear[q] = fs;
     j.twist[q] = tw;

@@ -42,7 +42,8 @@
 //            Beyond it both are scaled back radially; the friction's work is
 //            the force times the slip, s(1 − s)·(|F_t|²/(ks·A) + T_t²/(ks·J))
 //            for the trial (F_t, T_t) scaled by s. N is the elastic normal
-//            force, as in the subcontact law.
+//            force or, with friction_normal_force = "total", the elastic
+//            and viscous one, as in the subcontact law.
 //   damping: the stiffness-proportional dashpots of Table 1's β over Ω:
 //            the normal pressure −β·kn·v_n(ξ), linear in ξ, gives a force at
 //            Ω's centroid and a rocking couple −β·kn·J_c·∇v_n; the shear and

@@ -87,6 +87,10 @@ struct EquilibriumSpec {
 };
 
 // [joint] : the Coulomb joint law of every contact (compression positive).
+// Which normal force bounds a joint's friction (`[joint] friction_normal_force`):
+// the spring's (3DEC's) or the spring's and the dashpot's together.
+enum class FrictionNormal { elastic, total };
+
 struct JointSpec {
   double normal_stiffness = 98e9;    // kn, Pa/m (Table 1)
   double shear_stiffness = 39.2e9;   // ks, Pa/m (0.4 kn unless given)
@@ -94,6 +98,7 @@ struct JointSpec {
   double cohesion = 0.0;             // Pa
   double tensile_strength = 0.0;     // Pa
   double damping = 2.1e-5;           // stiffness-proportional beta, s (Table 1)
+  FrictionNormal friction_normal = FrictionNormal::elastic;
 };
 
 // [[joint]] with `between`: the law of the joints between blocks of two

@@ -48,7 +48,8 @@ constexpr std::string_view kSimulationKeys[] = {
     "overlap_tolerance", "settle_velocity", "settle_time",   "gravity_rise_time", "time_step_bound",
     "damping_scheme",    "joint_model"};
 constexpr std::string_view kJointKeys[] = {"normal_stiffness", "shear_stiffness",  "friction_angle",
-                                           "cohesion",         "tensile_strength", "damping", "between"};
+                                           "cohesion",         "tensile_strength", "damping", "between",
+                                           "friction_normal_force"};
 constexpr std::string_view kGroupKeys[] = {"name", "density"};
 constexpr std::string_view kLoadKeys[] = {"blocks", "groups", "force", "moment", "point", "table"};
 constexpr std::string_view kPrescribeKeys[] = {"blocks", "groups", "velocity", "angular_velocity", "table",
@@ -152,6 +153,9 @@ JointSpec read_joint_keys(const TableReader& r, const JointSpec& base, double sh
   j.cohesion = r.number("cohesion", base.cohesion, Range::non_negative);
   j.tensile_strength = r.number("tensile_strength", base.tensile_strength, Range::non_negative);
   j.damping = r.number("damping", base.damping, Range::non_negative);
+  j.friction_normal = r.choice<FrictionNormal>(
+      "friction_normal_force", {{"elastic", FrictionNormal::elastic}, {"total", FrictionNormal::total}},
+      base.friction_normal);
   return j;
 }
 

@@ -7,6 +7,35 @@
 
 namespace polydem {
 
+JointCells joint_cells(const ContactSet& c) {
+  JointCells out;
+  const bool per_pair = c.joints.size() == c.pairs.size() && !c.pairs.empty();  // the overlap model
+  for (std::size_t q = 0; q < c.pairs.size(); ++q) {
+    const ContactPair& p = c.pairs[q];
+    if (p.count == 0) continue;
+    std::vector<Vec3> poly;
+    double n = 0, t = 0, open = -std::numeric_limits<double>::infinity(), e = 0;
+    for (int s = p.first; s < p.first + p.count; ++s) {
+      poly.push_back(c.sub.point[s]);
+      n += c.sub.normal_force[s];
+      t += c.sub.shear_force[s].norm();
+      open = std::max(open, -c.sub.geometric_overlap(s));
+      e += c.sub.slip_energy[s];
+    }
+    if (per_pair) {
+      n = c.joints.normal_force[q];
+      t = c.joints.shear[q].norm();
+      e = c.joints.slip_energy[q];
+    }
+    out.polygons.push_back(std::move(poly));
+    out.normal_force.push_back(n);
+    out.shear_force.push_back(t);
+    out.opening.push_back(open);
+    out.slip_energy.push_back(e);
+  }
+  return out;
+}
+
 // The folder is made at the first snapshot, not here: a run rejected at
 // setup (overlapping blocks, a step above the critical one) leaves nothing.
 SnapshotWriter::SnapshotWriter(std::string dir, bool joints) : dir_(std::move(dir)), joints_(joints) {}
@@ -33,31 +62,14 @@ void SnapshotWriter::write(const Simulation& sim, double time) {
   write_vtu(dir_ + "/" + name, shapes, data);
   blocks_.push_back({time, name});
   if (joints_) {
-    const ContactSet& c = sim.contacts();
-    std::vector<std::vector<Vec3>> polys;
-    std::vector<double> fn, fs, opening, slip;
-    for (const ContactPair& p : c.pairs) {
-      if (p.count == 0) continue;
-      std::vector<Vec3> poly;
-      double n = 0, t = 0, open = -std::numeric_limits<double>::infinity(), e = 0;
-      for (int s = p.first; s < p.first + p.count; ++s) {
-        poly.push_back(c.sub.point[s]);
-        n += c.sub.normal_force[s];
-        t += c.sub.shear_force[s].norm();
-        open = std::max(open, -c.sub.geometric_overlap(s));
-        e += c.sub.slip_energy[s];
-      }
-      polys.push_back(std::move(poly));
-      fn.push_back(n);
-      fs.push_back(t);
-      opening.push_back(open);
-      slip.push_back(e);
-    }
+    const JointCells j = joint_cells(sim.contacts());
     VtkCellData jd;
-    jd.add_scalars("normal_force", fn).add_scalars("shear_force", fs).add_scalars("opening", opening).add_scalars(
-        "slip_energy", slip);
+    jd.add_scalars("normal_force", j.normal_force)
+        .add_scalars("shear_force", j.shear_force)
+        .add_scalars("opening", j.opening)
+        .add_scalars("slip_energy", j.slip_energy);
     const std::string jname = fmt::format("joints_{:05d}.vtu", count_);
-    write_vtu_polygons(dir_ + "/" + jname, polys, jd);
+    write_vtu_polygons(dir_ + "/" + jname, j.polygons, jd);
     joints_series_.push_back({time, jname});
   }
   ++count_;

@@ -13,6 +13,19 @@
 
 namespace polydem {
 
+// The joints as ParaView cells: for each pair with sampled points, the
+// polygon of its points and, per cell, its normal force (elastic and
+// viscous), shear force, largest opening (minus the overlap where closed)
+// and cumulative slip energy. Under the subcontact model the forces are the
+// sums over its subcontacts (the shear as the sum of their magnitudes);
+// under the overlap model they are the pair's own (contact/pair_joints.hpp:
+// the magnitude of its elastic shear force), its subcontacts carrying none.
+struct JointCells {
+  std::vector<std::vector<Vec3>> polygons;
+  std::vector<double> normal_force, shear_force, opening, slip_energy;  // N, N, m, J
+};
+JointCells joint_cells(const ContactSet& contacts);
+
 class SnapshotWriter {
  public:
   SnapshotWriter(std::string dir, bool joints);

@@ -133,12 +133,14 @@ TEST(JointLawLanes, SameBitsAsThePortableLoopOnEveryBranch) {
   if (!lanes_available()) GTEST_SKIP() << "no AVX2 on this machine or build: only the portable path runs";
   std::mt19937_64 rng(12);
   // Laws: Table 1's dry joint, a bonded one with tension and cohesion, one
-  // with no shear stiffness, one without damping.
-  std::vector<JointLaw> laws(4);
+  // with no shear stiffness, one without damping, the bonded one with
+  // friction on the spring's and the dashpot's force.
+  std::vector<JointLaw> laws(5);
   laws[0].kn = 1e10, laws[0].ks = 4e9, laws[0].tan_phi = std::tan(0.6), laws[0].beta = 2.1e-5;
   laws[1] = laws[0], laws[1].cohesion = 1e5, laws[1].tensile_strength = 5e4;
   laws[2] = laws[0], laws[2].ks = 0;
   laws[3] = laws[1], laws[3].beta = 0;
+  laws[4] = laws[1], laws[4].friction_on_total = true;  // friction on the spring's and dashpot's force
   Branches seen;
   int trial = 0;
   for (const JointLaw& law : laws) {

@@ -222,6 +222,40 @@ TEST(JointLaw, CoulombCapAndSlipEnergy) {
   EXPECT_NEAR(d.sub.force[0].y(), -cap, 1e-12 * cap);
 }
 
+// friction_normal_force = "total": the cap is (F_n + dashpot)·tan φ while the
+// joint closes; "elastic" (the default) F_n·tan φ. An opening joint's
+// dashpot pulls the cap down, never below zero.
+TEST(JointLaw, FrictionOnTheTotalNormalForce) {
+  JointLaw law = law_for_test();
+  law.beta = 1e-4;
+  const double v = 100.0, closing = 0.5;  // m/s: the trial force far over either cap
+  const double fn_el = law.kn * kA * kDelta;
+  const double fn_damp = law.beta * law.kn * kA * closing;  // 125000 N
+  for (const bool total : {false, true}) {
+    JointLaw l = law;
+    l.friction_on_total = total;
+    OneSubcontact c(kDelta);
+    c.st.velocity[1] = Vec3(0, v, -closing);
+    c.run(l);
+    const double cap = (total ? fn_el + fn_damp : fn_el) * law.tan_phi;
+    EXPECT_NEAR(c.sub.shear_force[0].norm(), cap, 1e-12 * cap) << (total ? "total" : "elastic");
+    EXPECT_NEAR(c.sub.normal_force[0], fn_el + fn_damp, 1e-12 * fn_el);  // the normal force is the same
+    const double slip = (law.ks * kA * kDt * v - cap) / (law.ks * kA);
+    EXPECT_NEAR(c.sub.slip_energy[0], cap * slip, 1e-12 * cap * slip);
+  }
+  // Opening fast: the dashpot would pull harder than the spring pushes.
+  JointLaw l = law;
+  l.friction_on_total = true;
+  OneSubcontact c(kDelta);
+  c.st.velocity[1] = Vec3(0, v, 10.0);
+  c.run(l);
+  EXPECT_EQ(c.sub.shear_force[0].norm(), 0.0);
+  OneSubcontact opening_slowly(kDelta);
+  opening_slowly.st.velocity[1] = Vec3(0, v, 0.2 * closing);
+  opening_slowly.run(l);
+  EXPECT_NEAR(opening_slowly.sub.shear_force[0].norm(), (fn_el - 0.2 * fn_damp) * law.tan_phi, 1e-12 * fn_el);
+}
+
 TEST(JointLaw, StiffnessProportionalDamping) {
   JointLaw law = law_for_test();
   law.beta = 1e-4;

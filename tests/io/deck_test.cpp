@@ -461,6 +461,8 @@ TEST(DeckErrors, BadEnumsListTheAllowedValues) {
                "must be one of \"block\", \"joint\" (got \"exact\")");
   expect_error("[simulation]\ndamping_scheme = \"implicit\"\n[[block]]\n" + kBox, 2, "simulation.damping_scheme",
                "must be one of \"explicit\", \"split\" (got \"implicit\")");
+  expect_error("[joint]\nfriction_normal_force = \"viscous\"\n[[block]]\n" + kBox, 2, "joint.friction_normal_force",
+               "must be one of \"elastic\", \"total\" (got \"viscous\")");
   expect_error("[[block]]\n" + kBox + "motion = \"flee\"\n", 4, "block[1].motion",
                "must be one of \"free\", \"fixed\", \"kinematic\" (got \"flee\")");
   expect_error("[[block]]\nshape = \"sphere\"\n", 2, "block[1].shape", "\"box\", \"prism\", \"hull\"");
