@@ -274,7 +274,8 @@ def table_distributions():
     got = {}
     for r in rows:
         got.setdefault((r["case"], r["setting"]), {})[r["quantity"]] = r["value"]
-    settings = sorted({r["setting"] for r in rows}, reverse=True)  # 0.8 first
+    order = ["safety factor 0.8", "safety factor 0.4", "friction on total", "margin x0.5", "margin x2", "split damping"]
+    settings = sorted({r["setting"] for r in rows}, key=lambda s: (order.index(s) if s in order else len(order), s))
 
     def collapse(q):
         if "collapse 50 %" in q:
@@ -303,9 +304,9 @@ def table_distributions():
         table.append([label] + [show(got[(case, s)]) if (case, s) in got else "not run" for s in settings])
     replicas = {s: got.get(("walking4", s), {}).get("replicas", "-") for s in settings}
     commits = sorted({r["commit"] for r in rows})
-    return (markdown(["figure"] + settings, table) +
+    return (markdown(["figure"] + [s.replace(" x", " ×") for s in settings], table) +
             f"\nFrom `benchmarks/distributions.py build/polydem` at {', '.join(commits)}: the tip 20 replicas a "
-            f"point, the spire {'/'.join(replicas[s] for s in settings)} replicas; \"a step\": every replica "
+            f"point, the spire {replicas[settings[0]]} replicas a setting; \"a step\": every replica "
             "survives at the first amplitude and collapses at the second (0.01 g apart). Run times in "
             "benchmarks/results/distributions.csv.\n")
 
