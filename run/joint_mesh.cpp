@@ -51,19 +51,9 @@ void JointMesh::assign_courses(const Simulation& sim, const Vec3& up) {
   // A level: level bed joints whose heights follow each other within the
   // tolerance; its height, the lowest of them.
   std::sort(bed_heights.begin(), bed_heights.end());
-  std::vector<double> level_top;  // the highest height in each level
-  for (double h : bed_heights) {
-    if (level_top.empty() || h > level_top.back() + tolerance) {
-      course_levels.push_back(h);
-      level_top.push_back(h);
-    } else {
-      level_top.back() = h;
-    }
-  }
-  if (course_levels.empty()) {  // no bed joint: one course
-    course_levels.push_back(*lo);
-    level_top.push_back(*lo);
-  }
+  for (std::size_t k = 0; k < bed_heights.size(); ++k)
+    if (k == 0 || bed_heights[k] > bed_heights[k - 1] + tolerance) course_levels.push_back(bed_heights[k]);
+  if (course_levels.empty()) course_levels.push_back(*lo);  // no bed joint: one course
   for (std::size_t q = 0; q < joints.size(); ++q) {
     // The last level starting at or below the joint (its own level for a
     // level bed joint, whose height is at most its level's top).
