@@ -179,6 +179,12 @@ void overlap_joint_forces(const JointLaws& laws, const std::vector<Polyhedron>& 
     j.normal_force[q] = 0;
     j.sliding[q] = 0;
     if (!(m.volume > 0 && m.area > 0)) {  // apart: nothing carried, nothing stored
+      // The cap fell to zero with the overlap: the stored shear and twist
+      // slip off, friction's work their elastic energy (joint_law.hpp).
+      if (law.ks > 0 && area_before > 0) {
+        j.slip_energy[q] += 0.5 * j.shear[q].squaredNorm() / (law.ks * area_before);
+        if (j.polar[q] > 0) j.slip_energy[q] += 0.5 * j.twist[q] * j.twist[q] / (law.ks * j.polar[q]);
+      }
       j.shear[q] = Vec3::Zero();
       j.twist[q] = 0;
       j.polar[q] = 0;
@@ -228,6 +234,8 @@ void overlap_joint_forces(const JointLaws& laws, const std::vector<Polyhedron>& 
     const Vec3 v = relative_velocity(p);
     const Vec3 vs = v - n.dot(v) * n;
     const double ks_area = law.ks * area, ks_polar = law.ks * polar;
+    // Twice the elastic energy the joint holds before the step's increments.
+    const double held = (ks_area > 0 ? fs.squaredNorm() / ks_area : 0.0) + (ks_polar > 0 ? tw * tw / ks_polar : 0.0);
     fs -= (ks_area * dt) * vs;
     tw -= ks_polar * dt * spin;
 
@@ -247,9 +255,14 @@ void overlap_joint_forces(const JointLaws& laws, const std::vector<Polyhedron>& 
     const bool slipping =
         e > 1 || (law.friction_on_total && ellipse(fs - (law.beta * ks_area) * vs, tw - law.beta * ks_polar * spin) > 1);
     if (e > 1) {
+      // Friction's work as the subcontacts' (joint_law.hpp): the slip from
+      // the trial (scale 1) back to the limit (scale s) under a friction
+      // force that falls from the scale the slip starts at, min(1,
+      // max(held's, s)), to s.
       const double s = 1.0 / std::sqrt(e);
       const double trial = fs.squaredNorm() / ks_area + (ks_polar > 0 ? tw * tw / ks_polar : 0.0);
-      j.slip_energy[q] += s * (1.0 - s) * trial;
+      const double start = trial > 0 ? std::min(1.0, std::max(std::sqrt(held / trial), s)) : s;
+      j.slip_energy[q] += 0.5 * (1.0 - s) * (start + s) * trial;
       fs *= s;
       tw *= s;
     }
