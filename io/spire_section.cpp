@@ -47,6 +47,7 @@ pieces and head blocks alike).
 | `tip_height` | float | m | `3.4` | Height of the solid tip (one rigid block); in (0, height). |
 | `stones_per_face` | integer | – | `2` | Stones per face per course, in [1, 64] (staggered courses have one more: half stones at the corners). Courses x 8 x stones_per_face must stay at most 5000 (a deck cannot ask for millions of stones by accident). |
 | `joint_pattern` | string | – | `"aligned_above_windows"` | `"staggered"`: odd courses shifted by half a stone; `"aligned"`: straight vertical joints; `"aligned_above_windows"`: staggered, but on window faces the joints continue the jambs vertically from the sill's course up (while the stones beside them keep a quarter of a nominal stone width), as in the paper's model. |
+| `corner_stones` | string | – | `"halves"` | What the shifted (odd) courses of a staggered pattern put at each corner of the octagon. `"halves"`: a half stone on each side of the corner's mitre plane (the lightest stones of the model near the top, about 9 kg, which set the critical time step). `"merged"`: each half stone merged with its neighbour in the face (with two stones per face, one stone from mitre to mitre), so that no stone is narrower than a nominal one; the courses still bridge the joints below. Needs `stones_per_face` ≥ 2. |
 | `window_faces` | [integer, ...] | – | `[0, 2, 4, 6]` | Faces (0..7, each at most once) with one window each; `[]` for none. |
 | `window_sill` | float | m | `0.3` | Height of the sill; must be ≥ 0. |
 | `window_width` | float | m | `0.3` | Width between the jambs (the window is centred on its face); must fit in the face at the inner surface at the head. |
@@ -82,7 +83,7 @@ using namespace deck_reader;
 
 constexpr std::string_view kSpireKeys[] = {
     "height",           "base_inradius",         "wall_thickness",      "wall_thickness_top",
-    "course_height",    "tip_height",            "stones_per_face",     "joint_pattern",
+    "course_height",    "tip_height",            "stones_per_face",     "joint_pattern",  "corner_stones",
     "window_faces",     "window_sill",           "window_width",        "window_head",
     "window_head_shape", "window_arch_segments", "base_thickness",      "base_apothem",        "base_motion",
     "density",          "stone_youngs_modulus",  "mortar_youngs_modulus", "mortar_thickness",
@@ -115,6 +116,8 @@ struct SpireSection {
                                                    {"aligned", SpireJointPattern::aligned},
                                                    {"aligned_above_windows", SpireJointPattern::aligned_above_windows}},
                                                   s.joint_pattern);
+    s.corner_stones = r.choice<SpireCornerStones>(
+        "corner_stones", {{"halves", SpireCornerStones::halves}, {"merged", SpireCornerStones::merged}}, s.corner_stones);
     if (const toml::node* n = r.table().get("window_faces")) {
       const auto* arr = n->as_array();
       if (!arr) r.fail("window_faces", "must be an array of face indices 0..7 (got " + describe(*n) + ")");

@@ -296,6 +296,9 @@ void validate_spire(const SpireSpec& s) {
   require(top / s.course_height <= 10000, "course_height", "gives more than 10000 courses");
   require(s.stones_per_face >= 1 && s.stones_per_face <= 64, "stones_per_face",
           "must be in [1, 64] (got " + std::to_string(s.stones_per_face) + ")");
+  require(s.corner_stones == SpireCornerStones::halves || s.stones_per_face >= 2, "corner_stones",
+          "\"merged\" needs stones_per_face >= 2 (with one stone per face merging the corner halves would line "
+          "the vertical joints up) (got stones_per_face = " + std::to_string(s.stones_per_face) + ")");
   // Each setting is sane on its own, but their product can ask for millions
   // of CGAL-built stones from a three-line deck (found by fuzzing). The
   // paper's spire has about 330 blocks.
@@ -444,7 +447,9 @@ SpireModel build_spire(const SpireSpec& s) {
         joints = {-window.half_width, window.half_width};
       } else {
         const bool shift = odd && s.joint_pattern != SpireJointPattern::aligned;
+        const bool merge = shift && s.corner_stones == SpireCornerStones::merged;
         for (int j = 1; j < (shift ? n + 1 : n); ++j) {
+          if (merge && (j == 1 || j == n)) continue;  // the corner halves join their neighbours
           const double f = shift ? (j - 0.5) / n : static_cast<double>(j) / n;
           joints.push_back((f - 0.5) * face_width);
         }

@@ -63,6 +63,20 @@ enum class SpireJointPattern {
 
 enum class WindowHead { flat, pointed };
 
+// What the shifted courses of a staggered pattern put at each corner.
+enum class SpireCornerStones {
+  // A half stone on each side of the corner's mitre plane: two small
+  // pieces, the model's lightest stones near the top (9 kg at z ≈ 5.7 m for
+  // the defaults), which set the critical time step.
+  halves,
+  // Each half stone merged with its neighbour in the face (a stone and a
+  // half; with two stones per face, one stone from mitre to mitre): no
+  // stone narrower than a nominal one, the courses still bridging the
+  // joints below. Needs stones_per_face ≥ 2 (with one, merging would align
+  // the joints).
+  merged,
+};
+
 // All lengths in m. Defaults: the paper's spire (see examples/spire/README.md).
 struct SpireSpec {
   double height = 9.4;             // modelled section, base to apex (paper 3.1)
@@ -76,6 +90,7 @@ struct SpireSpec {
   double tip_height = 3.4;           // the solid tip, one block (paper 3.1)
   int stones_per_face = 2;           // per course (even courses for the staggered patterns)
   SpireJointPattern joint_pattern = SpireJointPattern::aligned_above_windows;
+  SpireCornerStones corner_stones = SpireCornerStones::halves;
   std::vector<int> window_faces = {0, 2, 4, 6};  // one window on each of these faces (0..7)
   double window_sill = 0.3;          // z of the sill
   double window_width = 0.3;         // between the jambs, centred on the face

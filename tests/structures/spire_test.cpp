@@ -272,6 +272,47 @@ TEST(Spire, StaggeredCountAndNames) {
   EXPECT_FALSE(in_some_block(m, wall_point(s, 0, 0.0, 0.15)));
 }
 
+// corner_stones = "merged": the shifted courses' corner halves join their
+// neighbours, one stone per face from mitre to mitre with two stones per
+// face. The volume is kept, the stagger too (course 0's middle joint falls
+// inside a stone of course 1), and the lightest block of the default spire
+// (windows, jambs continued) is a 14.5 kg window piece, no longer a 9.2 kg
+// corner half of the top course.
+TEST(Spire, MergedCornerStonesKeepTheStaggerWithoutSmallPieces) {
+  SpireSpec s;
+  s.window_faces.clear();
+  s.joint_pattern = SpireJointPattern::staggered;
+  s.corner_stones = SpireCornerStones::merged;
+  const SpireModel m = build_spire(s);
+  EXPECT_EQ(m.blocks.size(), 1u + 8 * (10 * 2 + 10 * 1) + 1);
+  EXPECT_NEAR(sum_volume(m, {BlockKind::stone}), shell_volume(s), 1e-9 * shell_volume(s));
+  EXPECT_TRUE(in_some_block(m, wall_point(s, 0, 0.0, 0.45)));
+  EXPECT_FALSE(in_some_block(m, wall_point(s, 0, 0.0, 0.15)));
+  expect_no_overlaps(m);
+
+  auto lightest = [](const SpireModel& model) {
+    double v = 1e300;
+    for (const auto& b : model.blocks)
+      if (b.kind == BlockKind::stone || b.kind == BlockKind::window_piece) v = std::min(v, volume(b.shape));
+    return 2600.0 * v;  // kg
+  };
+  SpireSpec d;  // the paper's spire
+  const double halves = lightest(build_spire(d));
+  d.corner_stones = SpireCornerStones::merged;
+  const SpireModel merged = build_spire(d);
+  const double least = lightest(merged);
+  EXPECT_NEAR(halves, 9.2, 0.1);
+  EXPECT_GT(least, 1.5 * halves);
+  const double expected = shell_volume(d) - 4 * window_volume(d);
+  EXPECT_NEAR(sum_volume(merged, {BlockKind::stone, BlockKind::window_piece}), expected, 1e-9 * expected);
+  expect_no_overlaps(merged);
+
+  SpireSpec one;
+  one.stones_per_face = 1;
+  one.corner_stones = SpireCornerStones::merged;
+  EXPECT_THROW(validate_spire(one), SpireSpecError);
+}
+
 TEST(Spire, WindowsWhereAsked) {
   const SpireSpec s;  // windows on faces 0, 2, 4, 6
   const SpireModel m = build_spire(s);
