@@ -13,7 +13,9 @@ deck's own (safety factor 0.8, automatic contact margin, explicit damping):
             margin a short run of the same deck reports in summary.json,
             scaled); split damping (`simulation.damping_scheme = "split"`);
             the overlap joint model (`simulation.joint_model = "overlap"`)
-            at the margin x1, x0.5 and x2
+            at the margin x1, x0.5 and x2; and, a geometry rather than a
+            numerical setting, the spire's corner halves merged
+            (`spire.corner_stones = "merged"`, issue 31's stagger artefacts)
   cases     main      `polydem run --default`, the 0.1 g/s ramp: the ground
                       acceleration when the mechanism formed, the crack (angle
                       of the opened joints' principal axis, their heights,
@@ -64,6 +66,7 @@ SETTINGS = {
     "overlap model": (['simulation.joint_model="overlap"'], None),
     "overlap model, margin x0.5": (['simulation.joint_model="overlap"'], 0.5),
     "overlap model, margin x2": (['simulation.joint_model="overlap"'], 2.0),
+    "merged corner stones": (['spire.corner_stones="merged"'], None),
 }
 
 PULSE = "examples/spire/pulse.toml"

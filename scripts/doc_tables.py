@@ -211,7 +211,7 @@ def table_convergence():
     for r in rows:
         got.setdefault((r["case"], r["setting"]), {})[r["quantity"]] = r["value"]
     order = ["default", "safety factor 0.4", "safety factor 0.2", "margin x0.5", "margin x2", "split damping",
-             "overlap model", "overlap model, margin x0.5", "overlap model, margin x2"]
+             "overlap model", "overlap model, margin x0.5", "overlap model, margin x2", "merged corner stones"]
     settings = sorted({r["setting"] for r in rows}, key=lambda s: (order.index(s) if s in order else len(order), s))
 
     def crack(q):
@@ -274,7 +274,8 @@ def table_distributions():
     got = {}
     for r in rows:
         got.setdefault((r["case"], r["setting"]), {})[r["quantity"]] = r["value"]
-    order = ["safety factor 0.8", "safety factor 0.4", "friction on total", "margin x0.5", "margin x2", "split damping"]
+    order = ["safety factor 0.8", "safety factor 0.4", "friction on total", "margin x0.5", "margin x2", "split damping",
+             "merged corner stones"]
     settings = sorted({r["setting"] for r in rows}, key=lambda s: (order.index(s) if s in order else len(order), s))
 
     def collapse(q):
@@ -299,7 +300,7 @@ def table_distributions():
                         ("top course: largest residual vertical opening", "top course residual vertical largest")):
         lines.append((f"spire, record ×4: {label}, median [16-84 %] (mm)", "walking4",
                       (lambda st: lambda q: mm(q, st))(stem)))
-    walking_only = ("friction on total", "margin x0.5", "margin x2", "split damping")
+    walking_only = ("friction on total", "margin x0.5", "margin x2", "split damping", "merged corner stones")
     table = []
     for label, case, show in lines:
         table.append([label] + [show(got[(case, s)]) if (case, s) in got else
