@@ -254,6 +254,7 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   e.set("load_work_J", r.energy.load_work);
   e.set("numerical_J", r.numerical_energy());
   e.set("numerical_of_dissipation", r.numerical_fraction_of_dissipation());
+  e.set("numerical_at_detections_J", r.numerical_at_detections);
   e.set("balance_J", r.energy.balance);
   e.set("put_in_J", r.energy_reference);
   s.set("energy", std::move(e));

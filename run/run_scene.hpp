@@ -103,6 +103,11 @@ struct RunReport {
   // dissipated since the start (slip plus damping; 0 when none was).
   double numerical_energy() const { return polydem::numerical_energy(energy, energy_start); }
   double numerical_fraction_of_dissipation() const;
+  // The part of the numerical line the detections account for (J): the
+  // shear strain they could not hand on and the normal strain their
+  // re-sampling of the joints removed or added, signed as the line (the
+  // rest is the time integration's). Zero under the overlap model.
+  double numerical_at_detections = 0;
   Walking walking;
   HistoryTable histories;
   HistoryTable energies;
