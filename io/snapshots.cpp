@@ -17,9 +17,10 @@ JointCells joint_cells(const ContactSet& c) {
     double n = 0, t = 0, open = -std::numeric_limits<double>::infinity(), e = 0;
     for (int s = p.first; s < p.first + p.count; ++s) {
       poly.push_back(c.sub.point[s]);
+      open = std::max(open, -c.sub.geometric_overlap(s));
+      if (per_pair) continue;  // the subcontacts carry no force: the pair's below
       n += c.sub.normal_force[s];
       t += c.sub.shear_force[s].norm();
-      open = std::max(open, -c.sub.geometric_overlap(s));
       e += c.sub.slip_energy[s];
     }
     if (per_pair) {
