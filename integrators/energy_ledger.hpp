@@ -5,9 +5,10 @@
 // the work the loads (ground motion, point loads, prescribed blocks) have
 // done: only physical lines. Their balance is constant in exact mechanics;
 // what it drifts by is one line of its own, `numerical`, the energy the
-// numerics made (> 0) or lost (< 0): the time integration, the contact
-// detection handing a joint's history on, a friction cap that falls within
-// a step (docs/robustness.md). It is reported against the energy
+// numerics made (> 0) or lost (< 0): the time integration (most of it a
+// joint closing or opening within a step, first order in the step) and the
+// contact detection re-sampling a joint (the part summary.json's
+// numerical_at_detections_J names; docs/results.md). It is reported against the energy
 // dissipated (slip plus damping) and the relative balance against the
 // energy put in, neither of which a longer run inflates by double counting.
 //

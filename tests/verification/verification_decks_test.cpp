@@ -39,9 +39,10 @@ TEST_P(VerificationDeck, ChecksPass) {
     std::cout << "  " << GetParam() << " " << c.name << ": measured " << c.measured << " expected " << c.expected
               << " " << c.unit << "\n";
   }
-  // The numerical line's largest excursion over the energy put in (7.2 %
-  // at most over these decks with the contact model of docs/contact.md).
-  EXPECT_LT(r.energy_balance_error, 0.1) << "energy ledger does not close";
+  // The numerical line's largest excursion over the energy put in: 1 %
+  // (issue 31's ledger target); 0.60 % at most over these decks, the
+  // rocking pillar's impacts (docs/results.md).
+  EXPECT_LT(r.energy_balance_error, 0.01) << "energy ledger does not close";
 }
 
 INSTANTIATE_TEST_SUITE_P(Decks, VerificationDeck,
@@ -61,7 +62,7 @@ TEST_P(VerificationDeckSplitDamping, ChecksPass) {
     std::cout << "  " << GetParam() << " (split) " << c.name << ": measured " << c.measured << " expected "
               << c.expected << " " << c.unit << "\n";
   }
-  EXPECT_LT(r.energy_balance_error, 0.1) << "energy ledger does not close";
+  EXPECT_LT(r.energy_balance_error, 0.01) << "energy ledger does not close";  // 0.71 % at most
   std::cout << "  " << GetParam() << " (split): " << r.steps << " steps of " << r.time_step << " s, theta "
             << r.damping_split_fraction << "\n";
 }
@@ -115,7 +116,9 @@ TEST_P(VerificationDeckOverlapModel, ChecksPass) {
     std::cout << "  " << GetParam() << " (overlap) " << c.name << ": measured " << c.measured << " expected "
               << c.expected << " " << c.unit << "\n";
   }
-  EXPECT_LT(r.energy_balance_error, 0.1) << "energy ledger does not close";
+  // No detection re-samples a joint's force and the rocking pillar is not
+  // among these decks: 8.4e-5 at most.
+  EXPECT_LT(r.energy_balance_error, 1e-3) << "energy ledger does not close";
 }
 
 INSTANTIATE_TEST_SUITE_P(Decks, VerificationDeckOverlapModel, ::testing::ValuesIn(kOverlapDecks), deck_test_name);
