@@ -15,7 +15,8 @@ deck's own (safety factor 0.8, automatic contact margin, explicit damping):
             the overlap joint model (`simulation.joint_model = "overlap"`)
             at the margin x1, x0.5 and x2; and, a geometry rather than a
             numerical setting, the spire's corner halves merged
-            (`spire.corner_stones = "merged"`, issue 31's stagger artefacts)
+            (`spire.corner_stones = "merged"`, issue 31's stagger artefacts),
+            at its own automatic margin and at the halves' (3.05 mm)
   cases     main      `polydem run --default`, the 0.1 g/s ramp: the ground
                       acceleration when the mechanism formed, the crack (angle
                       of the opened joints' principal axis, their heights,
@@ -67,6 +68,10 @@ SETTINGS = {
     "overlap model, margin x0.5": (['simulation.joint_model="overlap"'], 0.5),
     "overlap model, margin x2": (['simulation.joint_model="overlap"'], 2.0),
     "merged corner stones": (['spire.corner_stones="merged"'], None),
+    # the merged spire's automatic margin is 3.55 mm (its stones are larger):
+    # this row keeps the halves' 3.05 mm, to part the geometry from the margin
+    "merged corner stones, margin 3.05 mm": (['spire.corner_stones="merged"', "simulation.contact_margin=0.003046"],
+                                             None),
 }
 
 PULSE = "examples/spire/pulse.toml"

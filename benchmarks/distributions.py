@@ -58,8 +58,11 @@ SETTINGS = {"safety factor 0.8": [], "safety factor 0.4": ["--set", "simulation.
             "friction on total": ["--set", "joint.friction_normal_force=total"],
             "margin x0.5": None, "margin x2": None,  # the automatic margin scaled (margin_args)
             "split damping": ["--set", "simulation.damping_scheme=split"],
-            "merged corner stones": ["--set", "spire.corner_stones=merged"]}
-WALKING_ONLY = ("friction on total", "margin x0.5", "margin x2", "split damping", "merged corner stones")
+            "merged corner stones": ["--set", "spire.corner_stones=merged"],
+            "merged corner stones, margin 3.05 mm": ["--set", "spire.corner_stones=merged",
+                                                      "--set", "simulation.contact_margin=0.003046"]}
+WALKING_ONLY = ("friction on total", "margin x0.5", "margin x2", "split damping", "merged corner stones",
+                "merged corner stones, margin 3.05 mm")
 TIP = os.path.join(ROOT, "examples", "spire", "tip_pulse.toml")
 EARTHQUAKE = os.path.join(ROOT, "examples", "spire", "earthquake.toml")
 TIP_RUN = ["--replicas", "20", "--quiet", "--band-axis", "ground_motion.acceleration_g",

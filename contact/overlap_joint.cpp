@@ -223,13 +223,22 @@ void overlap_joint_forces(const JointLaws& laws, const std::vector<Polyhedron>& 
     // Shear and twist: turned with the joint, onto the plane, scaled down
     // with the area where the region shrank (the sheared layer that left
     // the contact takes its stress: the elastic displacement stays), and
-    // incremented.
+    // incremented. The layer leaves where its overlap, and so its pressure
+    // and its friction, has fallen to zero: its stress slips off, and the
+    // strain energy it held is friction's work. (Where the region grows the
+    // new layer comes in unstressed and the force is kept: one uniform
+    // shear over a larger area holds less energy, which the ledger's
+    // numerical line shows.)
     const Vec3 theta = dt * (st.angular_velocity[r] + (0.5 * spin) * n);
     Vec3 fs = turn(theta) * j.shear[q];
     fs -= n.dot(fs) * n;
     const double polar_before = j.polar[q];
-    if (area < area_before) fs *= area / area_before;
     double tw = j.twist[q];
+    if (law.ks > 0) {
+      if (area < area_before) j.slip_energy[q] += 0.5 * fs.squaredNorm() * (area_before - area) / (law.ks * area_before * area_before);
+      if (polar < polar_before) j.slip_energy[q] += 0.5 * tw * tw * (polar_before - polar) / (law.ks * polar_before * polar_before);
+    }
+    if (area < area_before) fs *= area / area_before;
     if (polar < polar_before) tw *= polar / polar_before;
     const Vec3 v = relative_velocity(p);
     const Vec3 vs = v - n.dot(v) * n;

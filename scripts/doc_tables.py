@@ -31,6 +31,8 @@ The CSVs:
                  (benchmarks/convergence.py)
   distributions.csv  the ensembles' bands per safety factor, the same columns
                  (benchmarks/distributions.py)
+  ledger.csv     the energy ledger's numerical line per run, the same
+                 columns (benchmarks/ledger.py)
 The tables show the commit each figure was measured at; the machine and the
 date stay in the CSV.
 
@@ -211,7 +213,8 @@ def table_convergence():
     for r in rows:
         got.setdefault((r["case"], r["setting"]), {})[r["quantity"]] = r["value"]
     order = ["default", "safety factor 0.4", "safety factor 0.2", "margin x0.5", "margin x2", "split damping",
-             "overlap model", "overlap model, margin x0.5", "overlap model, margin x2", "merged corner stones"]
+             "overlap model", "overlap model, margin x0.5", "overlap model, margin x2", "merged corner stones",
+             "merged corner stones, margin 3.05 mm"]
     settings = sorted({r["setting"] for r in rows}, key=lambda s: (order.index(s) if s in order else len(order), s))
 
     def crack(q):
@@ -232,7 +235,11 @@ def table_convergence():
     def setting_name(s):
         name = s.replace(" x", " ×")
         margin = got.get(("main", s), {}).get("contact margin")
-        return f"{name} ({1000 * float(margin):.2f} mm)" if "margin" in s and margin else name
+        if margin and "margin x" in s:
+            return f"{name} ({1000 * float(margin):.2f} mm)"
+        if margin and "margin" not in s and "corner" in s:  # a geometry with its own automatic margin
+            return f"{name}, margin {1000 * float(margin):.2f} mm"
+        return name
 
     def numerical(q):
         v = q.get("numerical energy of slip and damping")
@@ -275,7 +282,7 @@ def table_distributions():
     for r in rows:
         got.setdefault((r["case"], r["setting"]), {})[r["quantity"]] = r["value"]
     order = ["safety factor 0.8", "safety factor 0.4", "friction on total", "margin x0.5", "margin x2", "split damping",
-             "merged corner stones"]
+             "merged corner stones", "merged corner stones, margin 3.05 mm"]
     settings = sorted({r["setting"] for r in rows}, key=lambda s: (order.index(s) if s in order else len(order), s))
 
     def collapse(q):
@@ -300,7 +307,8 @@ def table_distributions():
                         ("top course: largest residual vertical opening", "top course residual vertical largest")):
         lines.append((f"spire, record ×4: {label}, median [16-84 %] (mm)", "walking4",
                       (lambda st: lambda q: mm(q, st))(stem)))
-    walking_only = ("friction on total", "margin x0.5", "margin x2", "split damping", "merged corner stones")
+    walking_only = ("friction on total", "margin x0.5", "margin x2", "split damping", "merged corner stones",
+                    "merged corner stones, margin 3.05 mm")
     table = []
     for label, case, show in lines:
         table.append([label] + [show(got[(case, s)]) if (case, s) in got else
@@ -388,6 +396,47 @@ def table_generator_sections():
     return "\n\n".join(doc for _, doc in sorted(sections)) + "\n"
 
 
+def table_ledger():
+    """benchmarks/ledger.py's runs: the energy ledger's numerical line per
+    run, one row per (run, setting)."""
+    if not os.path.exists(os.path.join(RESULTS, "ledger.csv")):
+        return "(not measured yet)\n"
+    rows = read_csv("ledger.csv")
+    got, order = {}, []
+    for r in rows:
+        key = (r["case"], r["setting"])
+        if key not in got:
+            order.append(key)
+        got.setdefault(key, {})[r["quantity"]] = r["value"]
+    names = {"main": "main job (`polydem run --default`)",
+             "pulse35": "spire pulse 0.35 g, T_p = 1 s, through the collapse",
+             "pulse50": "spire pulse 0.5 g, T_p = 1 s, through the collapse",
+             "pulse100": "spire pulse 1.0 g, T_p = 1 s, through the collapse",
+             "earthquake": "earthquake deck (record ×4)"}
+
+    def pct(v):
+        return "-" if v in ("-", "") else f"{float(v):+.3g} %"
+
+    table = []
+    for case, setting in order:
+        q = got[(case, setting)]
+        name = names.get(case, f"`{case}.toml`")
+        if setting != "default":
+            name += f" ({setting})"
+        table.append([name, q["status"], q["simulated time"], q["energy put in"], q["slip"], q["damping"],
+                      q["numerical"], pct(q["numerical of the energy put in"]),
+                      pct(q["numerical of slip and damping"]),
+                      f'{float(q["largest numerical excursion of the energy put in"]):.2g} %',
+                      q.get("numerical at detections", "not measured")])
+    header = ["run", "status", "simulated (s)", "put in (J)", "slip (J)", "damping (J)", "numerical (J)",
+              "numerical, of the energy put in", "numerical, of slip + damping", "largest |numerical| during the run",
+              "of the numerical, at detections (J)"]
+    commits = sorted({r["commit"] for r in rows})
+    return (markdown(header, table) +
+            f"\nFrom `benchmarks/ledger.py build/polydem` at {', '.join(commits)}, one run each on 1 thread "
+            "(the wall times are in benchmarks/results/ledger.csv).\n")
+
+
 TABLES = {
     "two_commands": table_two_commands,
     "checks": table_checks,
@@ -400,6 +449,7 @@ TABLES = {
     "wall_scaling": table_wall_scaling,
     "convergence": table_convergence,
     "distributions": table_distributions,
+    "ledger": table_ledger,
     "deck_example": table_deck_example,
     "python_example": table_python_example,
     "python_example_output": table_python_example_output,

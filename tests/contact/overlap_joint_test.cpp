@@ -121,6 +121,28 @@ TEST(OverlapJoint, ShearSticksThenSlipsAtTheCoulombCap) {
   EXPECT_NEAR(s.contacts.joints.slip_energy[0], cap * (trial - cap) / law.ks, 1e-9 * cap * cap / law.ks);
 }
 
+// A sheared joint whose region shrinks: the cube moved (at rest, no
+// increment) half off the base's edge. The layer that left takes its
+// stress with it: F halves with the area, and the strain energy it held,
+// F²/(2·ks·A) − (F/2)²/(2·ks·A/2) = F²/(4·ks), is booked as slip, so the
+// joint's strain plus its slip is what it held.
+TEST(OverlapJoint, TheLayerThatLeavesTheJointSlipsOff) {
+  CubeOnBase s;
+  s.blocks.state.position[1].z() -= kDelta;
+  const JointLaw law = law_for_test();
+  s.wrench();  // the region: the whole face, A = 1
+  const Vec3 f(3e4, -4e4, 0);  // 50 kN, below the cap
+  s.contacts.joints.shear[0] = f;
+  const double held = f.squaredNorm() / (2 * law.ks * 1.0);
+  s.blocks.state.position[1].x() += 1.5;  // the cube over x in [1, 2], the base to 1.5
+  s.wrench();
+  EXPECT_NEAR(s.contacts.joints.area[0], 0.5, 1e-12);
+  EXPECT_NEAR((s.contacts.joints.shear[0] - 0.5 * f).norm(), 0.0, 1e-9 * f.norm());
+  const double kept = s.contacts.joints.shear[0].squaredNorm() / (2 * law.ks * 0.5);
+  EXPECT_NEAR(s.contacts.joints.slip_energy[0], held - kept, 1e-12 * held);
+  EXPECT_NEAR(s.contacts.joints.slip_energy[0], f.squaredNorm() / (4 * law.ks), 1e-12 * held);
+}
+
 // Spun at ω about z: T = −ks·J·ω·dt per step with J = 1/6 for the unit
 // square about its centre; held at T_max = 0.94·√(J/A)·μN when spun far.
 TEST(OverlapJoint, TwistHasThePolarMomentsStiffnessAndTheEllipsesCap) {
