@@ -78,10 +78,12 @@ def run_one(polydem, case, args, overrides, out):
     cmd = ["nice", "-n", "10", polydem, "run", *args, "--threads", "1", "--quiet", "--out", d]
     for o in overrides:
         cmd += ["--set", o]
+    path = os.path.join(d, "summary.json")
+    if os.path.exists(path):
+        os.remove(path)  # a run that fails must not leave an earlier one's summary to be read
     start = time.monotonic()
     p = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True)
     wall = time.monotonic() - start
-    path = os.path.join(d, "summary.json")
     if not os.path.exists(path):
         raise RuntimeError(f"{' '.join(cmd)}: exit {p.returncode}\n{p.stderr[-2000:]}")
     with open(path, encoding="utf-8") as f:

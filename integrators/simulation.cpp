@@ -46,6 +46,9 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, JointLaws laws,
   // the second to be scheduled, longer than a small scene's whole setup).
   detector_.set_threads(threads_.governor.now);
   detect_contacts();
+  // The first detection samples the joints; it re-samples nothing (its
+  // counters would hold the strain of blocks built overlapping).
+  contacts_.dropped_shear_energy = contacts_.resampled_normal_energy = 0;
   clock_.dt_prev = clock_.dt;
   if (sim_.damping_scheme == DampingScheme::split)
     rest_.set_step(clock_.dt, step_law_.beta, sim_.safety_factor, blocks_.count);

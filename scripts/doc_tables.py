@@ -429,7 +429,7 @@ def table_ledger():
                       f'{float(q["largest numerical excursion of the energy put in"]):.2g} %',
                       q.get("numerical at detections", "not measured")])
     header = ["run", "status", "simulated (s)", "put in (J)", "slip (J)", "damping (J)", "numerical (J)",
-              "numerical, of the energy put in", "numerical, of slip + damping", "largest |numerical| during the run",
+              "numerical, of the energy put in", "numerical, of slip + damping", "largest numerical (magnitude) during the run",
               "of the numerical, at detections (J)"]
     commits = sorted({r["commit"] for r in rows})
     return (markdown(header, table) +

@@ -296,7 +296,9 @@ void validate_spire(const SpireSpec& s) {
   require(top / s.course_height <= 10000, "course_height", "gives more than 10000 courses");
   require(s.stones_per_face >= 1 && s.stones_per_face <= 64, "stones_per_face",
           "must be in [1, 64] (got " + std::to_string(s.stones_per_face) + ")");
-  require(s.corner_stones == SpireCornerStones::halves || s.stones_per_face >= 2, "corner_stones",
+  require(s.corner_stones == SpireCornerStones::halves || s.joint_pattern == SpireJointPattern::aligned ||
+              s.stones_per_face >= 2,
+          "corner_stones",
           "\"merged\" needs stones_per_face >= 2 (with one stone per face merging the corner halves would line "
           "the vertical joints up) (got stones_per_face = " + std::to_string(s.stones_per_face) + ")");
   // Each setting is sane on its own, but their product can ask for millions

@@ -73,7 +73,8 @@ enum class SpireCornerStones {
   // half; with two stones per face, one stone from mitre to mitre): no
   // stone narrower than a nominal one, the courses still bridging the
   // joints below. Needs stones_per_face ≥ 2 (with one, merging would align
-  // the joints).
+  // the joints); changes nothing under the aligned pattern (no shifted
+  // courses).
   merged,
 };
 

@@ -143,6 +143,26 @@ TEST(OverlapJoint, TheLayerThatLeavesTheJointSlipsOff) {
   EXPECT_NEAR(s.contacts.joints.slip_energy[0], f.squaredNorm() / (4 * law.ks), 1e-12 * held);
 }
 
+// A sheared and twisted joint that parts (the cube lifted clear, at rest):
+// the cap falls to zero with the overlap and the shear and twist slip off,
+// their strain energy booked as slip.
+TEST(OverlapJoint, AJointThatPartsLetsItsShearAndTwistSlipOff) {
+  CubeOnBase s;
+  s.blocks.state.position[1].z() -= kDelta;
+  const JointLaw law = law_for_test();
+  s.wrench();  // A = 1, J = 1/6
+  const Vec3 f(3e4, -4e4, 0);
+  const double t = 2e3;
+  s.contacts.joints.shear[0] = f;
+  s.contacts.joints.twist[0] = t;
+  const double held = f.squaredNorm() / (2 * law.ks * 1.0) + t * t / (2 * law.ks * (1.0 / 6.0));
+  s.blocks.state.position[1].z() += 2 * kDelta;  // clear of the base by δ
+  s.wrench();
+  EXPECT_EQ(s.contacts.joints.shear[0], Vec3::Zero());
+  EXPECT_EQ(s.contacts.joints.twist[0], 0.0);
+  EXPECT_NEAR(s.contacts.joints.slip_energy[0], held, 1e-12 * held);
+}
+
 // Spun at ω about z: T = −ks·J·ω·dt per step with J = 1/6 for the unit
 // square about its centre; held at T_max = 0.94·√(J/A)·μN when spun far.
 TEST(OverlapJoint, TwistHasThePolarMomentsStiffnessAndTheEllipsesCap) {

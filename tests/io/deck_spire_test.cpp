@@ -210,6 +210,9 @@ TEST(DeckSpire, BadKeysNameFileLineAndKey) {
   expect_error("[spire]\nwall_thickness_top = 0.6\n", 2, "spire.wall_thickness_top", "hollow");
   expect_error("[spire]\nstones_per_face = 2.5\n", 2, "spire.stones_per_face", "must be an integer");
   expect_error("[spire]\njoint_pattern = \"random\"\n", 2, "spire.joint_pattern", "\"staggered\"");
+  expect_error("[spire]\ncorner_stones = \"whole\"\n", 2, "spire.corner_stones", "\"merged\"");
+  expect_error("[spire]\nstones_per_face = 1\ncorner_stones = \"merged\"\n", 3, "spire.corner_stones",
+               "stones_per_face >= 2");
   expect_error("[spire]\nwindow_faces = [0, 9]\n", 2, "spire.window_faces[2]", "0..7");
   expect_error("[spire]\nwindow_faces = [1, 1]\n", 2, "spire.window_faces[2]", "twice");
   expect_error("[spire]\nwindow_faces = 3\n", 2, "spire.window_faces", "must be an array");
