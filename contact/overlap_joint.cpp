@@ -131,6 +131,14 @@ void add_couple(lanes::PairRest& w, const Vec3& m) {
   set(w.moment_ref, to_vec(w.moment_ref) - m);
 }
 
+// The elastic energy of a joint's shear layer holding the shear force f and
+// the twisting moment t over a region of area A and polar moment J:
+// |f|²/(2·ks·A) + t²/(2·ks·J), a term dropped where its stiffness is zero.
+double shear_layer_energy(const Vec3& f, double t, double ks, double area, double polar) {
+  const double ka = ks * area, kj = ks * polar;
+  return (ka > 0 ? f.squaredNorm() / (2.0 * ka) : 0.0) + (kj > 0 ? t * t / (2.0 * kj) : 0.0);
+}
+
 }  // namespace
 
 void overlap_joint_forces(const JointLaws& laws, const std::vector<Polyhedron>& shapes, const BlockState& st,
@@ -181,10 +189,7 @@ void overlap_joint_forces(const JointLaws& laws, const std::vector<Polyhedron>& 
     if (!(m.volume > 0 && m.area > 0)) {  // apart: nothing carried, nothing stored
       // The cap fell to zero with the overlap: the stored shear and twist
       // slip off, friction's work their elastic energy (joint_law.hpp).
-      if (law.ks > 0 && area_before > 0) {
-        j.slip_energy[q] += 0.5 * j.shear[q].squaredNorm() / (law.ks * area_before);
-        if (j.polar[q] > 0) j.slip_energy[q] += 0.5 * j.twist[q] * j.twist[q] / (law.ks * j.polar[q]);
-      }
+      j.slip_energy[q] += shear_layer_energy(j.shear[q], j.twist[q], law.ks, area_before, j.polar[q]);
       j.shear[q] = Vec3::Zero();
       j.twist[q] = 0;
       j.polar[q] = 0;
@@ -234,17 +239,19 @@ void overlap_joint_forces(const JointLaws& laws, const std::vector<Polyhedron>& 
     fs -= n.dot(fs) * n;
     const double polar_before = j.polar[q];
     double tw = j.twist[q];
-    if (law.ks > 0) {
-      if (area < area_before) j.slip_energy[q] += 0.5 * fs.squaredNorm() * (area_before - area) / (law.ks * area_before * area_before);
-      if (polar < polar_before) j.slip_energy[q] += 0.5 * tw * tw * (polar_before - polar) / (law.ks * polar_before * polar_before);
-    }
+    // What the shrinking parts held (a part that grew keeps its term, so
+    // only the shrinking ones' release is booked).
+    const bool shrank = area < area_before || polar < polar_before;
+    const double before =
+        shrank ? shear_layer_energy(fs, tw, law.ks, std::max(area, area_before), std::max(polar, polar_before)) : 0.0;
     if (area < area_before) fs *= area / area_before;
     if (polar < polar_before) tw *= polar / polar_before;
+    // The elastic energy the joint holds before the step's increments.
+    const double held = shear_layer_energy(fs, tw, law.ks, area, polar);
+    if (shrank) j.slip_energy[q] += before - held;
     const Vec3 v = relative_velocity(p);
     const Vec3 vs = v - n.dot(v) * n;
     const double ks_area = law.ks * area, ks_polar = law.ks * polar;
-    // Twice the elastic energy the joint holds before the step's increments.
-    const double held = (ks_area > 0 ? fs.squaredNorm() / ks_area : 0.0) + (ks_polar > 0 ? tw * tw / ks_polar : 0.0);
     fs -= (ks_area * dt) * vs;
     tw -= ks_polar * dt * spin;
 
@@ -269,9 +276,9 @@ void overlap_joint_forces(const JointLaws& laws, const std::vector<Polyhedron>& 
       // force that falls from the scale the slip starts at, min(1,
       // max(held's, s)), to s.
       const double s = 1.0 / std::sqrt(e);
-      const double trial = fs.squaredNorm() / ks_area + (ks_polar > 0 ? tw * tw / ks_polar : 0.0);
+      const double trial = shear_layer_energy(fs, tw, law.ks, area, polar);
       const double start = trial > 0 ? std::min(1.0, std::max(std::sqrt(held / trial), s)) : s;
-      j.slip_energy[q] += 0.5 * (1.0 - s) * (start + s) * trial;
+      j.slip_energy[q] += (1.0 - s) * (start + s) * trial;
       fs *= s;
       tw *= s;
     }
@@ -296,8 +303,7 @@ void overlap_joint_forces(const JointLaws& laws, const std::vector<Polyhedron>& 
     add_force(w, fs, p, xc, xr);
     add_couple(w, tw * n);
     j.normal_force[q] = n_elastic + n_viscous;
-    j.strain_energy[q] = 0.5 * law.kn * m.overlap_squared + fs.squaredNorm() / (2.0 * ks_area) +
-                         (ks_polar > 0 ? tw * tw / (2.0 * ks_polar) : 0.0);
+    j.strain_energy[q] = 0.5 * law.kn * m.overlap_squared + shear_layer_energy(fs, tw, law.ks, area, polar);
     // The first half of this dashpot work, at the velocities it came from.
     j.damping_energy[q] -= 0.5 * dt * wrench_power(d, st, r, c);
   }

@@ -107,13 +107,16 @@ struct ContactSet {
   double retired_slip_energy = 0, retired_damping_energy = 0;
   // Elastic shear energy F²/(2·ks·A) that detections could not hand on to a
   // new subcontact (a patch that shrank, a subcontact or a pair that is
-  // gone), J, cumulative: its own line of the ledger.
+  // gone), J, cumulative since the dynamic stage began.
   double dropped_shear_energy = 0;
   // Normal strain energy Σ ½·kn·A·u_n² that detections removed (> 0) or
   // added (< 0) by re-sampling the joints at the same pose: the patches'
   // points and tributary areas change while the blocks have not moved, J,
-  // cumulative: a ledger line of its own.
+  // cumulative since the dynamic stage began.
   double resampled_normal_energy = 0;
+  // Both as the part of the ledger's numerical line the detections account
+  // for (signed as that line: energy removed is < 0).
+  double numerical_at_detections() const { return -(dropped_shear_energy + resampled_normal_energy); }
   int detections = 0;
   // True under the overlap joint model once it has pairs: the joints'
   // forces and energies are the pairs' (`joints`), not the subcontacts'.

@@ -374,8 +374,7 @@ void bind_run(py::module_& m) {
              d["damping"] = e.damping;
              d["load_work"] = e.load_work;
              d["balance"] = e.balance;
-             const ContactSet& c = r.sim().contacts();
-             d["numerical_at_detections"] = -(c.dropped_shear_energy + c.resampled_normal_energy);
+             d["numerical_at_detections"] = r.sim().contacts().numerical_at_detections();
              return d;
            })
       .def("ground_acceleration",

@@ -192,7 +192,7 @@ void finish_report(RunReport& rep, const Simulation& sim, Recorder& recorder, As
   rep.energy_start = recorder.first_energy ? rep.energy : recorder.start;
   rep.energy_reference = recorder.reference;
   rep.energy_balance_error = recorder.balance_error();
-  rep.numerical_at_detections = -(sim.contacts().dropped_shear_energy + sim.contacts().resampled_normal_energy);
+  rep.numerical_at_detections = sim.contacts().numerical_at_detections();
   for (auto& m : monitors) rep.checks.push_back(m->finish(sim));
   const BlockState& final_state = rep.unstable ? sim.last_good_state() : sim.blocks().state;
   rep.final_position = final_state.position;
