@@ -1,5 +1,7 @@
 #include "integrators/guard.hpp"
 
+#include "geometry/cut.hpp"
+
 #include <algorithm>
 #include <sstream>
 #include <string>
@@ -73,17 +75,27 @@ void check_health(Guard& g, const Blocks& blocks, const ContactSet& contacts, do
   // other. A hard impact sinks a joint by about v·sqrt(m/(kn·A)), a few mm for
   // a stone falling metres onto a corner: more than the margin, which is
   // therefore not the limit (only its floor).
-  // Under the overlap joint model the overlap judged is the blocks' true
-  // one (the largest over the joint); otherwise the subcontacts'.
+  // What is judged is the blocks' true overlap, the penetration depth: the
+  // least distance one block must move to leave the other (the separating
+  // axes of both blocks' faces and edges, geometry/cut.hpp). The joint's
+  // own measure screens the pairs first, since it is at least as deep where
+  // the blocks truly overlap: the largest overlap over the region along the
+  // joint's plane (overlap model) or a subcontact's depth below it. Neither
+  // is the overlap once the plane no longer faces the contact: two stones
+  // side by side on a plane kept from a bed joint they have tipped off show
+  // the height of the face they share as a sliver of "overlap" along the
+  // old plane, and are only touching.
   const auto& sub = contacts.sub;
   const auto& size = blocks.props.size;
   auto judge = [&](int ref, int inc, double overlap) {
     const double smaller = std::min(size[ref], size[inc]);
     const double limit = std::max(margin, g.penetration_limit * smaller);
     if (overlap <= limit) return;
+    const double depth = penetration_depth(world_shape(blocks, ref), world_shape(blocks, inc));
+    if (depth <= limit) return;
     std::ostringstream what;
     what << "blocks '" << blocks.props.name[ref] << "' and '" << blocks.props.name[inc] << "' overlap by "
-         << overlap << " m, beyond the penetration limit " << limit << " m (" << 100 * g.penetration_limit
+         << depth << " m, beyond the penetration limit " << limit << " m (" << 100 * g.penetration_limit
          << " % of the smaller block's size, at least the contact margin)";
     stop(what.str());
   };

@@ -1,11 +1,12 @@
 // The guard: a run that cannot go on stops with a clear error and keeps its
 // last good state, instead of carrying NaN or exploding energy to the end.
 //
-// Every 256 steps the state is checked: a non-finite value, a joint
-// overlapping more than the penetration limit (a fraction, 10 % by default,
-// of the smaller block's size, and at least the contact margin: blocks
-// passing through each other, not a hard impact, which sinks a joint by
-// millimetres), or a mechanical energy that has grown by more than
+// Every 256 steps the state is checked: a non-finite value, two blocks in
+// contact overlapping more than the penetration limit (their penetration
+// depth, the least distance that parts them, beyond a fraction, 10 % by
+// default, of the smaller block's size, and at least the contact margin:
+// blocks passing through each other, not a hard impact, which sinks a joint
+// by millimetres), or a mechanical energy that has grown by more than
 // energy_growth_limit of the energy in play beyond the work of the loads
 // (energy appearing from nowhere: the step is too large) throws
 // InstabilityError naming the cause, the step and the time. The state of the

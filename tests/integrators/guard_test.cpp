@@ -72,5 +72,44 @@ TEST(Guard, StableRunIsNotStopped) {
   EXPECT_EQ(s.last_good_step(), s.steps() - s.steps() % 256);
 }
 
+// The penetration test judges the blocks' true overlap, not the joint's
+// measure along a plane that no longer faces the contact. Two stones side by
+// side, touching on a vertical face, with their joint kept on the plane of
+// a bed (the overlap model's plane, carried while the pair stays loaded):
+// along that plane the face they share reads as 0.3 m of "overlap", and the
+// run must go on. Pushed 0.2 m into each other it must stop, with 0.2 m.
+TEST(Guard, JudgesTheBlocksTrueOverlapNotTheJointsMeasure) {
+  BlockSpec left, right;
+  left.name = "left";
+  left.shape = make_box(Vec3(1, 1, 1), Vec3(0, 0, 0.5));
+  right.name = "right";
+  right.shape = make_box(Vec3(1, 1, 1), Vec3(1, 0, 0.5));
+  Blocks blocks = build_blocks({left, right});
+  ContactSet contacts;
+  ContactPair cp;
+  cp.a = 0;
+  cp.b = 1;
+  cp.ref_block = 0;
+  contacts.pairs.push_back(cp);
+  contacts.joints.resize(1);
+  contacts.joints.ref_block[0] = 0;
+  contacts.joints.overlap[0] = 0.3;  // along a horizontal plane: the shared face's height, clipped
+  Guard g;
+  g.restart(blocks.state);
+  const EnergyLedger e;
+  EXPECT_NO_THROW(check_health(g, blocks, contacts, 0.003, e, Vec3(0, 0, -9.81), 256, 0.01, 1e-5));
+
+  blocks.state.position[1].x() -= 0.2;  // now 0.2 m into the left stone
+  contacts.joints.overlap[0] = 0.3;
+  std::string message;
+  try {
+    check_health(g, blocks, contacts, 0.003, e, Vec3(0, 0, -9.81), 512, 0.02, 1e-5);
+  } catch (const InstabilityError& err) {
+    message = err.what();
+  }
+  ASSERT_FALSE(message.empty()) << "blocks 0.2 m into each other passed the guard";
+  EXPECT_NE(message.find("overlap by 0.2 m"), std::string::npos) << message;
+}
+
 }  // namespace
 }  // namespace polydem
