@@ -9,7 +9,7 @@ Each case is run once per setting, one setting changed at a time from the
 deck's own (safety factor 0.8, automatic contact margin, explicit damping):
 
   settings  default; safety factor 0.4 and 0.2 (`simulation.safety_factor`);
-            margin x0.5 and x2 (`simulation.contact_margin`, the automatic
+            margin x0.125, x0.25, x0.5 and x2 (`simulation.contact_margin`, the automatic
             margin a short run of the same deck reports in summary.json,
             scaled); split damping (`simulation.damping_scheme = "split"`);
             the overlap joint model (`simulation.joint_model = "overlap"`)
@@ -61,6 +61,8 @@ SETTINGS = {
     "default": ([], None),
     "safety factor 0.4": (["simulation.safety_factor=0.4"], None),
     "safety factor 0.2": (["simulation.safety_factor=0.2"], None),
+    "margin x0.125": ([], 0.125),
+    "margin x0.25": ([], 0.25),
     "margin x0.5": ([], 0.5),
     "margin x2": ([], 2.0),
     "split damping": (['simulation.damping_scheme="split"'], None),
@@ -79,6 +81,10 @@ COLLAPSE = "examples/spire/constant_acceleration.toml"
 # 3 halvings of [0.155, 0.205] g and the two ends: 5 trials, a bracket 0.00625 g wide
 LAMBDA_ARGS = ["--direction", "90", "--method", "bisection", "--low", "0.155", "--high", "0.205",
                "--tolerance", "0.0063"]
+# settings whose lambda lies below the bracket's low end start lower: 4
+# halvings of [0.105, 0.205] g, 6 trials, the same 0.00625 g at the end
+LAMBDA_LOW = {s: "0.105" for s in ("margin x0.125", "margin x0.25", "overlap model", "overlap model, margin x0.5",
+                                    "overlap model, margin x2")}
 
 
 def pulse(a_g):
@@ -146,9 +152,12 @@ def collapse_quantities(c):
 
 # --- running -------------------------------------------------------------------
 
-def polydem_cmd(polydem, case, overrides, out):
+def polydem_cmd(polydem, case, overrides, out, setting=None):
     c = CASES[case]
-    cmd = ["nice", "-n", "10", polydem, c["command"], *c["deck"], "--threads", "1", "--quiet", "--out", out]
+    deck = list(c["deck"])
+    if case == "lambda" and setting in LAMBDA_LOW:
+        deck[deck.index("--low") + 1] = LAMBDA_LOW[setting]
+    cmd = ["nice", "-n", "10", polydem, c["command"], *deck, "--threads", "1", "--quiet", "--out", out]
     for o in overrides:
         cmd += ["--set", o]
     return cmd
@@ -173,7 +182,7 @@ def run_one(polydem, case, setting, margin, out):
     if factor is not None:
         overrides.append(f"simulation.contact_margin={factor * margin:.6g}")
     d = os.path.join(out, case, setting.replace(" ", "_"))
-    cmd = polydem_cmd(polydem, case, overrides, d)
+    cmd = polydem_cmd(polydem, case, overrides, d, setting)
     start = time.monotonic()
     p = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True)
     wall = time.monotonic() - start
