@@ -106,7 +106,15 @@ void check_health(Guard& g, const Blocks& blocks, const ContactSet& contacts, do
       judge(r, r == cp.a ? cp.b : cp.a, contacts.joints.overlap[q]);
     }
   } else {
-    for (std::size_t s = 0; s < sub.size(); ++s) judge(sub.ref_block[s], sub.inc_block[s], sub.geometric_overlap(s));
+    // Each pair once, by its deepest subcontact: the depth is the pair's.
+    for (const ContactPair& cp : contacts.pairs) {
+      if (cp.count == 0) continue;
+      const auto first = static_cast<std::size_t>(cp.first), end = first + static_cast<std::size_t>(cp.count);
+      std::size_t deepest = first;
+      for (std::size_t s = first + 1; s < end; ++s)
+        if (sub.geometric_overlap(s) > sub.geometric_overlap(deepest)) deepest = s;
+      judge(sub.ref_block[deepest], sub.inc_block[deepest], sub.geometric_overlap(deepest));
+    }
   }
   const double mechanical = e.kinetic + e.gravitational + e.strain - e.load_work;
   if (!g.energy_started) {

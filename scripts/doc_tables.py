@@ -212,9 +212,8 @@ def table_convergence():
     got = {}
     for r in rows:
         got.setdefault((r["case"], r["setting"]), {})[r["quantity"]] = r["value"]
-    order = ["default", "safety factor 0.4", "safety factor 0.2", "margin x0.125", "margin x0.25", "margin x0.5", "margin x2",
-             "split damping",
-             "overlap model", "overlap model, margin x0.5", "overlap model, margin x2", "merged corner stones",
+    order = ["default", "safety factor 0.4", "safety factor 0.2", "margin x0.125", "margin x0.25", "margin x0.5",
+             "margin x2", "split damping", "overlap model", "overlap model, margin x0.5", "overlap model, margin x2", "merged corner stones",
              "merged corner stones, margin 3.05 mm"]
     settings = sorted({r["setting"] for r in rows}, key=lambda s: (order.index(s) if s in order else len(order), s))
 
