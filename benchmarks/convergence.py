@@ -6,17 +6,24 @@ benchmarks/results/convergence.csv (table `convergence`, docs/contact.md):
         [--setting S]... [--jobs 2] [--force] [--out DIR]
 
 Each case is run once per setting, one setting changed at a time from the
-deck's own (safety factor 0.8, automatic contact margin, explicit damping):
+deck's own (safety factor 0.8, automatic contact margin and detection
+travel, explicit damping):
 
   settings  default; safety factor 0.4 and 0.2 (`simulation.safety_factor`);
-            margin x0.125, x0.25, x0.5 and x2 (`simulation.contact_margin`, the automatic
+            margin x0.5 and x2 (`simulation.contact_margin`, the automatic
             margin a short run of the same deck reports in summary.json,
-            scaled); split damping (`simulation.damping_scheme = "split"`);
-            the overlap joint model (`simulation.joint_model = "overlap"`)
-            at the margin x1, x0.5 and x2; and, a geometry rather than a
-            numerical setting, the spire's corner halves merged
-            (`spire.corner_stones = "merged"`, issue 31's stagger artefacts),
-            at its own automatic margin and at the halves' (3.05 mm)
+            scaled); detection travel x0.5 and x2
+            (`simulation.detection_travel`, likewise); split damping
+            (`simulation.damping_scheme = "split"`); the same settings and
+            the margin x0.125 and x0.25 with the detection travel at half the
+            margin (`simulation.detection_travel = 1`, taken as half the
+            margin: how often the subcontacts are re-sampled then follows the
+            margin); the overlap joint model (`simulation.joint_model =
+            "overlap"`, whose automatic travel is half the margin) at the
+            margin x1, x0.5 and x2; and, a geometry rather than a numerical
+            setting, the spire's corner halves merged (`spire.corner_stones =
+            "merged"`, issue 31's stagger artefacts), at its own automatic
+            margin and at the halves' (3.05 mm)
   cases     main      `polydem run --default`, the 0.1 g/s ramp: the ground
                       acceleration when the mechanism formed, the crack (angle
                       of the opened joints' principal axis, their heights,
@@ -56,24 +63,38 @@ ROOT = timings_csv.ROOT
 PATH = os.path.join(ROOT, "benchmarks", "results", "convergence.csv")
 COLUMNS = ["machine", "cpu", "commit", "date", "case", "setting", "quantity", "value", "unit"]
 
-# setting name -> (overrides, margin factor or None); the order is the table's
+# setting name -> (overrides, (what is scaled, factor) or None); the order is
+# the table's. "travel half the margin": the detection travel at its largest,
+# the margin's half (the deck's 1 m is taken as that).
+HALF = ["simulation.detection_travel=1"]
 SETTINGS = {
     "default": ([], None),
     "safety factor 0.4": (["simulation.safety_factor=0.4"], None),
     "safety factor 0.2": (["simulation.safety_factor=0.2"], None),
-    "margin x0.125": ([], 0.125),
-    "margin x0.25": ([], 0.25),
-    "margin x0.5": ([], 0.5),
-    "margin x2": ([], 2.0),
+    "margin x0.5": ([], ("margin", 0.5)),
+    "margin x2": ([], ("margin", 2.0)),
+    "travel x0.5": ([], ("travel", 0.5)),
+    "travel x2": ([], ("travel", 2.0)),
     "split damping": (['simulation.damping_scheme="split"'], None),
+    "travel half the margin": (HALF, None),
+    "safety factor 0.4, travel half the margin": (["simulation.safety_factor=0.4"] + HALF, None),
+    "safety factor 0.2, travel half the margin": (["simulation.safety_factor=0.2"] + HALF, None),
+    "margin x0.125, travel half the margin": (HALF, ("margin", 0.125)),
+    "margin x0.25, travel half the margin": (HALF, ("margin", 0.25)),
+    "margin x0.5, travel half the margin": (HALF, ("margin", 0.5)),
+    "margin x2, travel half the margin": (HALF, ("margin", 2.0)),
+    "split damping, travel half the margin": (['simulation.damping_scheme="split"'] + HALF, None),
     "overlap model": (['simulation.joint_model="overlap"'], None),
-    "overlap model, margin x0.5": (['simulation.joint_model="overlap"'], 0.5),
-    "overlap model, margin x2": (['simulation.joint_model="overlap"'], 2.0),
+    "overlap model, margin x0.5": (['simulation.joint_model="overlap"'], ("margin", 0.5)),
+    "overlap model, margin x2": (['simulation.joint_model="overlap"'], ("margin", 2.0)),
     "merged corner stones": (['spire.corner_stones="merged"'], None),
     # the merged spire's automatic margin is 3.55 mm (its stones are larger):
     # this row keeps the halves' 3.05 mm, to part the geometry from the margin
     "merged corner stones, margin 3.05 mm": (['spire.corner_stones="merged"', "simulation.contact_margin=0.003046"],
                                              None),
+    "merged corner stones, travel half the margin": (['spire.corner_stones="merged"'] + HALF, None),
+    "merged corner stones, margin 3.05 mm, travel half the margin": (
+        ['spire.corner_stones="merged"', "simulation.contact_margin=0.003046"] + HALF, None),
 }
 
 PULSE = "examples/spire/pulse.toml"
@@ -83,8 +104,9 @@ LAMBDA_ARGS = ["--direction", "90", "--method", "bisection", "--low", "0.155", "
                "--tolerance", "0.0063"]
 # settings whose lambda lies below the bracket's low end start lower: 4
 # halvings of [0.105, 0.205] g, 6 trials, the same 0.00625 g at the end
-LAMBDA_LOW = {s: "0.105" for s in ("margin x0.125", "margin x0.25", "overlap model", "overlap model, margin x0.5",
-                                    "overlap model, margin x2")}
+LAMBDA_LOW = {s: "0.105" for s in SETTINGS if "half the margin" not in s and "merged" not in s}
+LAMBDA_LOW.update({s: "0.105" for s in ("margin x0.125, travel half the margin",
+                                        "margin x0.25, travel half the margin")})
 
 
 def pulse(a_g):
@@ -127,6 +149,7 @@ def run_quantities(s):
             ("steps", str(s["steps"]), ""),
             ("time step", f'{s["time_step_s"]:.4g}', "s"),
             ("contact margin", f'{s["contact_margin_m"]:.4g}', "m"),
+            ("detection travel", f'{s["detection_travel_m"]:.4g}', "m"),
             ("numerical energy of slip and damping", f'{100 * s["energy"]["numerical_of_dissipation"]:.3g}', "%")]
     return out
 
@@ -163,9 +186,9 @@ def polydem_cmd(polydem, case, overrides, out, setting=None):
     return cmd
 
 
-def automatic_margin(polydem, case, out):
-    """The contact margin the case's deck uses by default: a run of one step
-    reports it (contact_margin_m)."""
+def automatic_distances(polydem, case, out):
+    """The contact margin and detection travel the case's deck uses by
+    default: a run of one step reports them."""
     c = CASES[case]
     deck = c["deck"] if c["command"] == "run" else [c["deck"][0]]
     d = os.path.join(out, "margin", case)
@@ -173,14 +196,19 @@ def automatic_margin(polydem, case, out):
            "--set", "simulation.end_time=1e-5"]
     subprocess.run(cmd, cwd=ROOT, check=True, stdout=subprocess.DEVNULL)
     with open(os.path.join(d, "summary.json"), encoding="utf-8") as f:
-        return json.load(f)["contact_margin_m"]
+        s = json.load(f)
+    return {"margin": s["contact_margin_m"], "travel": s["detection_travel_m"]}
 
 
-def run_one(polydem, case, setting, margin, out):
-    overrides, factor = SETTINGS[setting]
+KEYS = {"margin": "simulation.contact_margin", "travel": "simulation.detection_travel"}
+
+
+def run_one(polydem, case, setting, automatic, out):
+    overrides, scaled = SETTINGS[setting]
     overrides = list(overrides)
-    if factor is not None:
-        overrides.append(f"simulation.contact_margin={factor * margin:.6g}")
+    if scaled is not None:
+        what, factor = scaled
+        overrides.append(f"{KEYS[what]}={factor * automatic[what]:.6g}")
     d = os.path.join(out, case, setting.replace(" ", "_"))
     cmd = polydem_cmd(polydem, case, overrides, d, setting)
     start = time.monotonic()
@@ -198,8 +226,9 @@ def run_one(polydem, case, setting, margin, out):
             raise RuntimeError(f"{' '.join(cmd)}: exit {p.returncode}\n{p.stderr[-2000:]}")
         with open(path, encoding="utf-8") as f:
             rows = collapse_quantities(json.load(f))
-        if factor is not None:
-            rows.append(("contact margin", f"{factor * margin:.4g}", "m"))
+        if scaled is not None:
+            rows.append((f"contact {what}" if what == "margin" else "detection travel",
+                         f"{factor * automatic[what]:.4g}", "m"))
     rows.append(("wall time, 1 thread", f"{wall:.1f}", "s"))
     return rows
 
@@ -250,22 +279,23 @@ def main():
     # The main job first, then the other cases; their safety factor 0.2
     # runs (four times the steps) last, so that an interrupted benchmark has
     # every case's other settings.
-    todo.sort(key=lambda cs: (cs[0] != "main" and cs[1] == "safety factor 0.2", cases.index(cs[0])))
+    todo.sort(key=lambda cs: (cs[0] != "main" and cs[1].startswith("safety factor 0.2"), cases.index(cs[0])))
     if not todo:
         print("convergence: every (case, setting) is in the CSV (--force runs them again)")
         return 0
     stamp = {"machine": timings_csv.machine(), "cpu": timings_csv.cpu(), "commit": solver_commit(),
              "date": datetime.date.today().isoformat()}
-    margins = {}
+    automatic = {}
     for c in sorted({c for c, s in todo if SETTINGS[s][1] is not None}, key=cases.index):
-        margins[c] = automatic_margin(polydem, c, args.out)
-        print(f"convergence: {c}: automatic contact margin {margins[c]:.4g} m", flush=True)
+        automatic[c] = automatic_distances(polydem, c, args.out)
+        print(f"convergence: {c}: automatic contact margin {automatic[c]['margin']:.4g} m, "
+              f"detection travel {automatic[c]['travel']:.4g} m", flush=True)
     lock = threading.Lock()
     failed = []
 
     def work(c, s):
         print(f"convergence: start {c} / {s}", flush=True)
-        rows = run_one(polydem, c, s, margins.get(c), args.out)
+        rows = run_one(polydem, c, s, automatic.get(c), args.out)
         with lock:
             kept = [r for r in read_rows() if (r["case"], r["setting"]) != (c, s)]
             write_rows(kept + [{**stamp, "case": c, "setting": s, "quantity": q, "value": v, "unit": u}

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 
 namespace polydem {
@@ -71,8 +72,21 @@ PosedBlock posed(const Blocks& b, int i) {
 
 }  // namespace
 
-ContactDetector::ContactDetector(const Blocks& blocks, double margin)
-    : impl_(std::make_unique<Impl>(blocks.count)), margin_(margin) {
+double smallest_block_size(const Blocks& b) {
+  double smallest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < b.count; ++i)
+    if (b.props.motion[i] != BlockMotion::fixed) smallest = std::min(smallest, b.props.size[i]);
+  if (!std::isfinite(smallest))
+    for (int i = 0; i < b.count; ++i) smallest = std::min(smallest, b.props.size[i]);
+  return std::isfinite(smallest) ? smallest : 0.0;
+}
+
+double automatic_detection_travel(const Blocks& b) { return 0.0025 * smallest_block_size(b); }
+
+ContactDetector::ContactDetector(const Blocks& blocks, double margin, double travel)
+    : impl_(std::make_unique<Impl>(blocks.count)),
+      margin_(margin),
+      travel_(travel > 0 ? std::min(travel, 0.5 * margin) : 0.5 * margin) {
   auto& im = *impl_;
   im.scratch.resize(std::max(1, omp_get_max_threads()));
   im.detected_position = blocks.state.position;
@@ -107,7 +121,7 @@ bool ContactDetector::needs_detection(const Blocks& b, double dt, bool bound_fir
   }
   if (n == 0) return false;
   const Vec3 c = 0.5 * (lo + hi);
-  const double threshold = 0.5 * margin_;
+  const double threshold = travel_;
   if (bound_first && travels_clearly_below(b, c, any_fixed, dt, threshold)) return false;
   double r1 = any_fixed ? c.norm() : 0.0, r2 = 0;  // a fixed block's travel from c
   for (int i = 0; i < n; ++i) {
@@ -209,7 +223,7 @@ bool ContactDetector::clearly_no_detection(const TravelBound& t, const Vec3& ref
   drift = c;
   double u1 = t.u1, u2 = t.u2;
   if (t.any_fixed) keep_two_largest(l1(ref), u1, u2);
-  return u1 + u2 + 2.0 * delta < 0.5 * margin_ * (1.0 - 1e-6);
+  return u1 + u2 + 2.0 * delta < travel_ * (1.0 - 1e-6);
 }
 
 DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bool bond_new, const JointLaws& laws) {

@@ -8,15 +8,24 @@
 //        by position on the joint
 //     5. per-block gather lists                                gather.hpp
 //
-// Detection runs only when some pair of blocks may have closed by more than
-// half the margin since the last one (relative approach: the two largest
-// travels, translation measured from the blocks' common drift plus rotation
-// times the bounding radius plus the coming step at the current speed, add
-// up to half the margin). A pair farther apart than the margin at a
-// detection (the broad phase grows every box by half the margin, the narrow
-// phase looks a margin out) is thus still at least half the margin apart at
-// the next one: contacts between fast blocks are found before they touch,
-// and existing subcontacts follow their blocks exactly in between. Steps 2
+// Detection runs only when some pair of blocks may have moved relative to
+// each other by more than the detection travel since the last one (the two
+// largest travels, translation measured from the blocks' common drift plus
+// rotation times the bounding radius plus the coming step at the current
+// speed, add up to it). The detection travel is at most half the margin. A
+// pair farther apart than the margin at a detection (the broad phase grows
+// every box by half the margin, the narrow phase looks a margin out) is
+// thus still at least half the margin apart at the next one: contacts
+// between fast blocks are found before they touch. In between, the
+// subcontacts follow their blocks exactly but their sampling of the joint
+// does not: the points stay where the detection put them in the incident
+// block and push against the reference face's plane, also once the faces
+// have slid so that a point has left the reference face (a stone whose
+// support has moved away still stands on it). The detection travel bounds
+// that lag; under the subcontact model it is by default 0.25 % of the
+// smallest free block, far below half the margin (docs/contact.md, "The
+// detection travel"), under the overlap model (nothing sampled) half the
+// margin. Steps 2
 // and 3 run in parallel, one slot per candidate; step 4's history carry and
 // held normal strain run pair by pair in parallel (a pair writes only its
 // own subcontacts), and its energy sums take their terms in subcontact
@@ -35,6 +44,15 @@
 
 namespace polydem {
 
+// The detection travel a subcontact-model run takes when the deck sets none
+// (simulation.detection_travel = 0): 0.25 % of the smallest free block's size
+// (of any block when none is free), the travel below which the spire's
+// answers no longer move (docs/contact.md, "The detection travel").
+double automatic_detection_travel(const Blocks& blocks);
+// The smallest free block's size (of any block when none is free; 0 without
+// blocks): what the automatic margin and detection travel scale with.
+double smallest_block_size(const Blocks& blocks);
+
 // Wall seconds spent in each stage of one detect() call.
 struct DetectionTimes {
   double broad_phase = 0;
@@ -44,7 +62,7 @@ struct DetectionTimes {
   double gather = 0;
 };
 
-// The half-margin test's bound, gathered block by block where the step
+// The detection test's bound, gathered block by block where the step
 // already holds each block (Simulation::step: each thread over the blocks
 // it has just moved), instead of two serial passes over all the blocks at
 // the next step's start. Travels are measured from a reference `ref` chosen
@@ -64,12 +82,15 @@ void merge_travels(TravelBound& into, const TravelBound& from);
 
 class ContactDetector {
  public:
-  ContactDetector(const Blocks& blocks, double margin);
+  // travel: the detection travel, at most half the margin (a larger one is
+  // taken as half the margin); 0 = half the margin.
+  ContactDetector(const Blocks& blocks, double margin, double travel = 0);
   ~ContactDetector();
   ContactDetector(const ContactDetector&) = delete;
   ContactDetector& operator=(const ContactDetector&) = delete;
 
   double margin() const { return margin_; }
+  double travel() const { return travel_; }  // the detection travel, ≤ half the margin
   // Threads for detect()'s parallel loops (0: OpenMP's default); the step
   // passes its governor's choice (integrators/thread_governor.hpp).
   void set_threads(int threads) { threads_ = threads; }
@@ -78,7 +99,7 @@ class ContactDetector {
   // hands each joint's state on by its pair, and the subcontacts only
   // sample the joint's opening.
   void set_pair_joints(bool on) { pair_joints_ = on; }
-  // True when some pair may have closed by more than half the margin since
+  // True when some pair may have moved by more than the detection travel since
   // detect(), counting the coming step of length dt at the current speeds.
   // `bound_first`: a cheap bound settles the clear cases (the same answer;
   // false only for tests comparing the two).
@@ -117,6 +138,7 @@ class ContactDetector {
   struct Impl;
   std::unique_ptr<Impl> impl_;
   double margin_;
+  double travel_;
   int threads_ = 0;
   bool pair_joints_ = false;
 };

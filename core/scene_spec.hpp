@@ -56,6 +56,10 @@ struct SimulationSpec {
   JointModel joint_model = JointModel::subcontacts;
   Vec3 gravity{0.0, 0.0, -kGravity};  // m/s²
   double contact_margin = 0.0;    // m; 0 = automatic (2 % of the smallest block's size)
+  // m; how far blocks may move relative to each other between two contact
+  // detections, at most half the margin; 0 = automatic (subcontacts: 0.25 %
+  // of the smallest block's size; overlap model: half the margin)
+  double detection_travel = 0.0;
   int threads = 0;                // 0 = OpenMP default
   // Let the run drop to one thread while more are slower (a competing
   // process on a core; integrators/thread_governor.hpp). Same bits either way.

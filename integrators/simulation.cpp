@@ -21,6 +21,13 @@ double seconds(Clock::time_point from, Clock::time_point to) {
   return std::chrono::duration<double>(to - from).count();
 }
 
+// The deck's detection travel, or the automatic one where subcontacts
+// sample the joints (the overlap model samples nothing: half the margin).
+double deck_detection_travel(const SimulationSpec& sim, const Blocks& blocks) {
+  if (sim.detection_travel > 0) return sim.detection_travel;
+  return sim.joint_model == JointModel::overlap ? 0.0 : automatic_detection_travel(blocks);
+}
+
 }  // namespace
 
 Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, JointLaws laws, GroundMotion motion, double margin,
@@ -30,7 +37,7 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, JointLaws laws,
       laws_(std::move(laws)),
       step_law_(stiffest_law(laws_)),
       motion_(std::move(motion)),
-      detector_(blocks_, margin),
+      detector_(blocks_, margin, deck_detection_travel(sim, blocks_)),
       clock_{0.0, dt, dt, 0},
       control_{adaptive_time_step, 0, {}},
       bond_initial_(laws_.any_bonds()),

@@ -1,7 +1,7 @@
 // The time loop: one explicit central-difference step, stage by stage
 // (Simulation::step reads as the list below).
 //
-//   1. detection, only if some pair may have closed half the margin
+//   1. detection, only if some pair may have moved by the detection travel
 //      (contact/detection.hpp; settled at the last step's end where the
 //      threads' bound is clear, step_threads.hpp)
 //   2. joint law: one force slot per subcontact       (contact/joint_law.hpp)
@@ -72,6 +72,7 @@ class Simulation {
 
   const Blocks& blocks() const { return blocks_; }
   const ContactSet& contacts() const { return contacts_; }
+  double detection_travel() const { return detector_.travel(); }
   const GroundMotion& ground_motion() const { return motion_; }
   const JointLaws& joint_laws() const { return laws_; }
   // The stiffest law that can act: its β sets the time step's damping.

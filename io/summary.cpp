@@ -213,6 +213,7 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   s.set("joint_model", spec.simulation.joint_model == JointModel::overlap ? "overlap" : "subcontacts");
   s.set("damping_split_fraction", r.damping_split_fraction);
   s.set("contact_margin_m", r.margin);
+  s.set("detection_travel_m", r.detection_travel);
   s.set("blocks", r.blocks);
   s.set("free_blocks", r.free_blocks);
   const std::vector<GroupTotals> groups = group_totals(spec.blocks, r.assessment.dislodged_blocks);

@@ -242,6 +242,7 @@ SceneRun::SceneRun(const SceneSpec& spec, const RunControl& control)
   rep.blocks = sim.blocks().count;
   rep.free_blocks = static_cast<int>(sim.blocks().free_blocks.size());
   rep.margin = setup.margin;
+  rep.detection_travel = sim.detection_travel();
   rep.critical = setup.critical;
   rep.time_step_set_by = spec_.simulation.time_step > 0 ? "deck" : "all-faces bound";
   rep.time_step = setup.time_step;

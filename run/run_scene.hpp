@@ -84,6 +84,7 @@ struct RunReport {
   std::string time_step_set_by;  // "deck" | "all-faces bound" | "joints at a detection"
   std::string time_step_block;   // the governing block's name ("" if none)
   double margin = 0;
+  double detection_travel = 0;  // m, the contacts' re-sampling travel (contact/detection.hpp)
   double wall_seconds = 0;
   long subcontact_updates = 0;  // Σ over steps of the number of subcontacts
   // Checkpoints written (output.checkpoint_interval), over the whole run

@@ -1,5 +1,6 @@
 #include "run/setup.hpp"
 
+#include "contact/detection.hpp"
 #include "run/scene_error.hpp"
 
 #include <algorithm>
@@ -9,14 +10,7 @@
 
 namespace polydem {
 
-double automatic_margin(const Blocks& b) {
-  double smallest = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < b.count; ++i)
-    if (b.props.motion[i] != BlockMotion::fixed) smallest = std::min(smallest, b.props.size[i]);
-  if (!std::isfinite(smallest))
-    for (int i = 0; i < b.count; ++i) smallest = std::min(smallest, b.props.size[i]);
-  return 0.02 * smallest;
-}
+double automatic_margin(const Blocks& b) { return 0.02 * smallest_block_size(b); }
 
 RunSetup choose_margin_and_step(const SceneSpec& spec, const Blocks& blocks, const JointLaws& laws) {
   RunSetup s;
