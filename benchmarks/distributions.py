@@ -35,7 +35,9 @@ Every run is `nice -n 10 polydem ... --threads 1`, --jobs at a time. Each
 case and setting is a `polydem sweep` in DIR/<case>_<setting> (default
 DIR out/distributions), resumable: an interrupted benchmark runs only what
 is missing. The walking sweep at the safety factor 0.8 varies the scale over
-2, 4 and 6 (the scale 4 is compared; docs/spire.md draws all three). The
+2, 4 and 6 (--walking-scales; the scale 4 is compared, docs/spire.md draws
+all three). Every setting also runs with the detection travel at half the
+margin (", travel half the margin": `simulation.detection_travel = 1`). The
 CSV keeps one row per (case, setting, quantity) with the machine, CPU,
 commit and date; a (case, setting) already in it is skipped unless --force.
 """
@@ -61,8 +63,15 @@ SETTINGS = {"safety factor 0.8": [], "safety factor 0.4": ["--set", "simulation.
             "merged corner stones": ["--set", "spire.corner_stones=merged"],
             "merged corner stones, margin 3.05 mm": ["--set", "spire.corner_stones=merged",
                                                       "--set", "simulation.contact_margin=0.003046"]}
-WALKING_ONLY = ("friction on total", "margin x0.5", "margin x2", "split damping", "merged corner stones",
-                "merged corner stones, margin 3.05 mm")
+# The same with the detection travel at half the margin (the deck's 1 m is
+# taken as that), where the margin also sets how often the joints are
+# re-sampled (docs/contact.md, "The detection travel").
+HALF = ", travel half the margin"
+SETTINGS.update({s + HALF: (None if v is None else v + ["--set", "simulation.detection_travel=1"])
+                 for s, v in list(SETTINGS.items())})
+WALKING_ONLY = tuple(s + h for s in ("friction on total", "margin x0.5", "margin x2", "split damping",
+                                     "merged corner stones", "merged corner stones, margin 3.05 mm")
+                     for h in ("", HALF))
 TIP = os.path.join(ROOT, "examples", "spire", "tip_pulse.toml")
 EARTHQUAKE = os.path.join(ROOT, "examples", "spire", "earthquake.toml")
 TIP_RUN = ["--replicas", "20", "--quiet", "--band-axis", "ground_motion.acceleration_g",
@@ -134,17 +143,18 @@ def margin_args(setting, default_out):
     setting's runs report it in summary.json), scaled."""
     if SETTINGS[setting] is not None:
         return SETTINGS[setting]
+    half = ["--set", "simulation.detection_travel=1"] if setting.endswith(HALF) else []
     points = os.path.join(default_out, "points")
     summary = next(os.path.join(points, d, "summary.json") for d in sorted(os.listdir(points))
                    if os.path.exists(os.path.join(points, d, "summary.json")))
     with open(summary) as f:
         margin = json.load(f)["contact_margin_m"]
-    factor = 0.5 if setting == "margin x0.5" else 2.0
-    return ["--set", f"simulation.contact_margin={margin * factor!r}"]
+    factor = 0.5 if setting.startswith("margin x0.5") else 2.0
+    return ["--set", f"simulation.contact_margin={margin * factor!r}"] + half
 
 
-def walking_case(polydem, setting, out, jobs, default_out):
-    scales = "2,4,6" if setting == "safety factor 0.8" else "4"
+def walking_case(polydem, setting, out, jobs, default_out, scales_at_default):
+    scales = scales_at_default if setting.startswith("safety factor 0.8") else "4"
     sweep(polydem, EARTHQUAKE, ["--set", "output.snapshot_interval=0"] + margin_args(setting, default_out) + ["--quiet",
                                                     "--vary", f"ground_motion.scale={scales}", "--replicas", "5"],
           out, jobs)
@@ -168,6 +178,8 @@ def main():
     ap.add_argument("--case", action="append", choices=["tip0.6", "tip1.0", "tip2.0", "walking4"])
     ap.add_argument("--setting", action="append", choices=list(SETTINGS))
     ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--walking-scales", default="2,4,6",
+                    help="the record's scales at the safety factor 0.8 (the scale 4 is compared)")
     ap.add_argument("--force", action="store_true")
     ap.add_argument("--out", default=os.path.join(ROOT, "out", "distributions"))
     args = ap.parse_args()
@@ -187,7 +199,8 @@ def main():
                 continue
             out = os.path.join(args.out, f"{case}_{setting.replace(' ', '_')}")
             t0 = time.monotonic()
-            got = (walking_case(polydem, setting, out, args.jobs, os.path.join(args.out, "walking4_safety_factor_0.8"))
+            default = "walking4_" + ("safety factor 0.8" + (HALF if setting.endswith(HALF) else "")).replace(" ", "_")
+            got = (walking_case(polydem, setting, out, args.jobs, os.path.join(args.out, default), args.walking_scales)
                    if case == "walking4"
                    else tip_case(polydem, case[3:], setting, out, args.jobs))
             got["benchmark wall time"] = (f"{time.monotonic() - t0:.0f}", "s")

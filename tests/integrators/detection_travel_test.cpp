@@ -5,6 +5,7 @@
 // must not be set by the contact margin, or the margin (which should only
 // decide how early contacts are found) decides when a stone tips.
 #include "integrators/simulation.hpp"
+#include "tests/support/blocks.hpp"
 #include "tests/support/simulation.hpp"
 
 #include <gtest/gtest.h>
@@ -16,15 +17,6 @@ namespace polydem {
 namespace {
 
 constexpr double kG = 9.81;
-
-BlockSpec box(const std::string& name, Vec3 size, Vec3 centre, BlockMotion motion) {
-  BlockSpec s;
-  s.name = name;
-  s.shape = make_box(size, centre);
-  s.density = 2600.0;
-  s.motion = motion;
-  return s;
-}
 
 // The tilt of block i from its initial orientation, rad.
 double tilt(const Simulation& s, int i) {
@@ -53,9 +45,10 @@ Tipping withdraw_support(double margin, double travel) {
   joint.damping = 0.2;
   const double v = 0.5;
   const double settle = 2600 * 0.5 * kG / joint.normal_stiffness;
-  BlockSpec base = box("base", Vec3(1, 1, 0.5), Vec3(0, 0, -0.25), BlockMotion::kinematic);
+  BlockSpec base = test::block_spec("base", make_box(Vec3(1, 1, 0.5), Vec3(0, 0, -0.25)), BlockMotion::kinematic);
   base.velocity = Vec3(v, 0, 0);
-  BlockSpec stone = box("stone", Vec3(0.5, 0.5, 0.5), Vec3(-0.25, 0, 0.25 - settle), BlockMotion::free);
+  BlockSpec stone =
+      test::block_spec("stone", make_box(Vec3(0.5, 0.5, 0.5), Vec3(-0.25, 0, 0.25 - settle)), BlockMotion::free);
   Blocks blocks = build_blocks({base, stone});
   BlockLoads loads;
   Prescription p;
