@@ -285,7 +285,7 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
     find_joint_cells(b.props.local_shape, b.state, contacts.pairs, contacts.sub, margin_, contacts.joints,
                      im.overlap);
   } else {
-    carry_history(b, old, contacts, laws, margin_, im.carry, threads);
+    carry_history(b, old, contacts, laws, travel_, im.carry, threads);
     // Re-sampling may lower a pair's normal strain at this pose but not
     // raise it (joint_law.hpp); what it changes is the re-sampling's, not
     // motion's, and goes to the ledger.

@@ -242,9 +242,13 @@ void build_subcontacts(const Blocks& b, const std::vector<std::pair<int, int>>& 
 // the middle of a twisted cube's edges, half a metre from any corner, with
 // no shear, and the cube sprang back about a twisted position.
 // A point outside the previous patch (the patch grew, or slid) takes the
-// value of the nearest edge within max(margin, a tenth of the patch's
-// radius) — the margin bounds how far a point can slide between detections —
-// and beyond that is contact area that is new, without history.
+// value of the nearest edge within the reach, the detection travel: since
+// the last detection no point of one block has moved relative to the other
+// by more, so the patch's edge, traced by the reference face's sides over
+// the incident face, has not either. Farther out, the point was not in
+// contact then: it is contact area that is new, without history. (A reach
+// set by anything else, the contact margin or the patch's size, hands
+// shear to area that had none, by an amount that depends on that setting.)
 //
 // Strain energy must not appear from the resampling: a pair whose new shear
 // energy exceeds its previous one has its new forces scaled down to it.
@@ -319,7 +323,7 @@ bool interpolate_stress(const PreviousPatch& pp, const CarryScratch& sc, const V
 
 }  // namespace
 
-void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& contacts, const JointLaws& laws, double margin,
+void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& contacts, const JointLaws& laws, double reach,
                    CarryScratch& scratch, int threads) {
   Subcontacts& sc = contacts.sub;
   const Subcontacts& os = old.sub;
@@ -358,7 +362,7 @@ void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& cont
     double radius2 = 0;
     for (int o = op->first; o < op->first + op->count; ++o)
       radius2 = std::max(radius2, (scratch.old_point[o] - pp.centroid).squaredNorm());
-    pp.tolerance = std::max(margin, 0.1 * std::sqrt(radius2));
+    pp.tolerance = reach;
     const double tiny_area = 1e-12 * radius2;
     const Vec3 n = st.rotation[cp.ref_block] * sc.ref_normal_local[cp.first];
     // The previous forces were on the previous incident block; if the

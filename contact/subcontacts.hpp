@@ -12,7 +12,8 @@
 // the reference block's body frame, the incident point in the incident
 // block's body frame. So the normal gap and the shear displacement follow
 // the blocks exactly until the next detection, which only rebuilds the patch
-// when some block has moved more than half the contact margin.
+// when some blocks have moved relative to each other by the detection travel
+// (contact/detection.hpp).
 //
 // The history a joint carries (elastic shear, bond, dissipation so far)
 // belongs to a place on the joint, not to a vertex of the clipped polygon:
@@ -168,8 +169,9 @@ struct CarryScratch {
 // current pose of `blocks` (they are fixed in their block): they span the
 // previous patch, and their elastic shear stresses F/A sample the joint's
 // shear field. Each new subcontact (built at the current pose) lying on the
-// previous patch — inside it, or outside by at most max(margin, a tenth of
-// the patch's radius about its centroid), in the joint plane — takes
+// previous patch — inside it, or outside by at most `reach` in the joint
+// plane (the detection travel: the farthest the patch's edge can have moved
+// since the previous detection) — takes
 //   - the shear stress interpolated linearly at its point (a fan of
 //     triangles about the previous points' centroid, whose value is their
 //     mean, so a uniform shear and a twist are reproduced exactly; along
@@ -190,6 +192,6 @@ struct CarryScratch {
 // ledger's balance is unchanged by a detection.
 // `threads` > 1: the pairs in parallel (the same bits).
 void carry_history(const Blocks& blocks, const ContactSet& previous, ContactSet& current, const JointLaws& laws,
-                   double margin, CarryScratch& scratch, int threads = 1);
+                   double reach, CarryScratch& scratch, int threads = 1);
 
 }  // namespace polydem

@@ -7,7 +7,8 @@
 // The scenes are built by hand: two blocks at the origin with the identity
 // orientation (so body frames are the world frame), pair (0, 1), block 0's
 // face z = 0 the reference plane, block 1 incident. Subcontacts are given
-// by their points on the plane. ks = 1e9 Pa/m, margin 0.01 m.
+// by their points on the plane. ks = 1e9 Pa/m; history reaches 0.01 m
+// beyond the previous patch (the detection travel).
 #include "contact/subcontacts.hpp"
 
 #include "contact/joint_law.hpp"
@@ -23,7 +24,7 @@ namespace {
 constexpr double kKs = 1e9;
 // The blocks' joints under one law of shear stiffness kKs.
 JointLaws ks_laws(const Blocks& b) { return uniform_joint_laws(JointLaw{1e10, kKs, 0.5, 0, 0, 0}, b.count); }
-constexpr double kMargin = 0.01;
+constexpr double kReach = 0.01;
 
 struct Point {
   double x, y;
@@ -100,7 +101,7 @@ TEST(CarryHistory, FollowsThePositionNotTheKey) {
                             {0.5, -0.5, 0.225, 94}, {0.0, 0.0, 0.1, 95}};
   ContactSet current = one_pair(now);
   CarryScratch scratch;
-  carry_history(b, previous, current, ks_laws(b), kMargin, scratch);
+  carry_history(b, previous, current, ks_laws(b), kReach, scratch);
   const int source[4] = {2, 3, 0, 1};
   Vec3 mean_stress = Vec3::Zero();
   for (int o = 0; o < 4; ++o) mean_stress += previous.sub.shear_force[o] / 0.25 / 4;
@@ -146,7 +147,7 @@ TEST(CarryHistory, ATwistIsCarriedOntoANewClipExactly) {
                                 {0.5, 0.0, 0.125, 7},       {0.0, 0.5, 0.125, 8}};
   ContactSet current = one_pair(octagon);
   CarryScratch scratch;
-  carry_history(b, previous, current, ks_laws(b), kMargin, scratch);
+  carry_history(b, previous, current, ks_laws(b), kReach, scratch);
   double e_old = 0, e_new = 0;
   for (int s = 0; s < 4; ++s) e_old += energy(previous.sub.shear_force[s], 0.25);
   for (std::size_t s = 0; s < octagon.size(); ++s) {
@@ -160,8 +161,8 @@ TEST(CarryHistory, ATwistIsCarriedOntoANewClipExactly) {
   EXPECT_NEAR(current.dropped_shear_energy, e_old - e_new, 1e-12 * e_old);
 }
 
-// A point off the previous patch by more than the tolerance (the margin, or
-// a tenth of the patch's radius) is contact area that is new.
+// A point off the previous patch by more than the reach (the detection
+// travel) is contact area that is new, however large the patch.
 TEST(CarryHistory, APointOffThePreviousPatchStartsWithoutHistory) {
   const Blocks b = two_blocks_at_rest();
   ContactSet previous = one_pair(square(1));
@@ -169,11 +170,11 @@ TEST(CarryHistory, APointOffThePreviousPatchStartsWithoutHistory) {
     previous.sub.shear_force.set(s, Vec3(0, 250, 0));
     previous.sub.bonded[s] = 1;
   }
-  // 0.0707 m (a tenth of the radius) is the tolerance: 0.06 m off carries,
-  // 0.08 m off does not.
-  ContactSet current = one_pair({{0.56, 0.0, 0.25, 1}, {-0.58, 0.0, 0.25, 2}});
+  // 9 mm off carries, 11 mm off does not (a reach set by the patch's size,
+  // a tenth of its 0.71 m radius, would carry both).
+  ContactSet current = one_pair({{0.509, 0.0, 0.25, 1}, {-0.511, 0.0, 0.25, 2}});
   CarryScratch scratch;
-  carry_history(b, previous, current, ks_laws(b), kMargin, scratch);
+  carry_history(b, previous, current, ks_laws(b), kReach, scratch);
   EXPECT_NEAR((current.sub.shear_force[0] - Vec3(0, 250, 0)).norm(), 0.0, 1e-9);
   EXPECT_EQ(current.sub.bonded[0], 1);
   EXPECT_EQ(current.sub.shear_force[1], Vec3::Zero());
@@ -193,7 +194,7 @@ TEST(CarryHistory, ACornerSplitIntoTwoCrossingsSharesItsDisplacement) {
   previous.sub.bonded[0] = 1;
   ContactSet current = one_pair({{0.495, 0.5, 0.125, 7}, {0.5, 0.495, 0.125, 8}});
   CarryScratch scratch;
-  carry_history(b, previous, current, ks_laws(b), kMargin, scratch);
+  carry_history(b, previous, current, ks_laws(b), kReach, scratch);
   for (int s = 0; s < 2; ++s) {
     EXPECT_NEAR((current.sub.shear_force[s] - 0.5 * f).norm(), 0.0, 1e-12 * f.norm()) << s;
     EXPECT_EQ(current.sub.bonded[s], 1);
@@ -213,7 +214,7 @@ TEST(CarryHistory, InheritorsWithMoreAreaShareTheEnergyInsteadOfCopyingIt) {
   previous.sub.shear_force.set(0, f);
   ContactSet current = one_pair({{0.495, 0.5, 0.25, 7}, {0.5, 0.495, 0.25, 8}});
   CarryScratch scratch;
-  carry_history(b, previous, current, ks_laws(b), kMargin, scratch);
+  carry_history(b, previous, current, ks_laws(b), kReach, scratch);
   const double e_new = energy(current.sub.shear_force[0], 0.25) + energy(current.sub.shear_force[1], 0.25);
   EXPECT_NEAR(e_new, energy(f, 0.25), 1e-12 * energy(f, 0.25));
   EXPECT_NEAR(current.sub.shear_force[0].y(), 1000 / std::sqrt(2.0), 1e-9);
@@ -233,7 +234,7 @@ TEST(CarryHistory, ShearOfAreaThatIsGoneIsBookedAsDropped) {
   // Corners 0, 2, 3 remain with a fifth of their area lost; corner 1 is gone.
   ContactSet current = one_pair({{-0.5, -0.5, 0.2, 1}, {0.5, 0.5, 0.2, 2}, {-0.5, 0.5, 0.2, 3}});
   CarryScratch scratch;
-  carry_history(b, previous, current, ks_laws(b), kMargin, scratch);
+  carry_history(b, previous, current, ks_laws(b), kReach, scratch);
   for (int s = 0; s < 3; ++s) EXPECT_NEAR((current.sub.shear_force[s] - 0.8 * f).norm(), 0.0, 1e-9) << s;
   const double before = 4 * energy(f, 0.25);
   const double after = 3 * energy(0.8 * f, 0.2);
@@ -250,7 +251,7 @@ TEST(CarryHistory, AReferenceFaceThatChangesSidesTurnsTheForceOntoTheOtherBlock)
   previous.sub.shear_force.set(0, Vec3(10, 20, 0));
   ContactSet current = one_pair({{0.5, 0.5, 0.25, 1}}, 1);
   CarryScratch scratch;
-  carry_history(b, previous, current, ks_laws(b), kMargin, scratch);
+  carry_history(b, previous, current, ks_laws(b), kReach, scratch);
   EXPECT_EQ(current.sub.shear_force[0], Vec3(-10, -20, 0));
 }
 
@@ -268,7 +269,7 @@ TEST(CarryHistory, AnotherPairDoesNotInheritAndAPairThatIsGoneDropsItsShear) {
   previous.sub.shear_force.set(0, Vec3(500, 0, 0));
   ContactSet current = one_pair({{0.5, 0.5, 0.25, 11}}, 0, 0, 2);
   CarryScratch scratch;
-  carry_history(b, previous, current, ks_laws(b), kMargin, scratch);
+  carry_history(b, previous, current, ks_laws(b), kReach, scratch);
   EXPECT_EQ(current.sub.shear_force[0], Vec3::Zero());
   EXPECT_EQ(current.sub.slip_energy[0], 0.0);
   EXPECT_EQ(current.retired_slip_energy, 3.0);
