@@ -243,9 +243,11 @@ void build_subcontacts(const Blocks& b, const std::vector<std::pair<int, int>>& 
 // no shear, and the cube sprang back about a twisted position.
 // A point outside the previous patch (the patch grew, or slid) takes the
 // value of the nearest edge within the reach, the detection travel: since
-// the last detection no point of one block has moved relative to the other
-// by more, so the patch's edge, traced by the reference face's sides over
-// the incident face, has not either. Farther out, the point was not in
+// the last detection the blocks have moved relative to each other by about
+// that much at most, and the patch's edge, traced by the reference face's
+// sides over the incident face, with them (the pair that triggered the
+// detection a hair more: a crossing on its patch's edge can fall just
+// outside, docs/contact.md). Farther out, the point was not in
 // contact then: it is contact area that is new, without history. (A reach
 // set by anything else, the contact margin or the patch's size, hands
 // shear to area that had none, by an amount that depends on that setting.)

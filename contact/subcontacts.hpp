@@ -170,8 +170,8 @@ struct CarryScratch {
 // previous patch, and their elastic shear stresses F/A sample the joint's
 // shear field. Each new subcontact (built at the current pose) lying on the
 // previous patch — inside it, or outside by at most `reach` in the joint
-// plane (the detection travel: the farthest the patch's edge can have moved
-// since the previous detection) — takes
+// plane (the detection travel: about the farthest the patch's edge can have
+// moved since the previous detection) — takes
 //   - the shear stress interpolated linearly at its point (a fan of
 //     triangles about the previous points' centroid, whose value is their
 //     mean, so a uniform shear and a twist are reproduced exactly; along
