@@ -25,7 +25,8 @@ The CSVs:
   timings.csv    wall times: machine, cpu, commit, date, command, quantity,
                  value, unit (benchmarks/spire_speed.py, benchmarks/build_time.sh
                  and by hand from .ci/run's log)
-  error_vs_time.csv, throughput.csv   written by the benchmark programs
+  error_vs_time.csv, throughput.csv, redetection_jump.csv
+                 written by the benchmark programs
   convergence.csv  the spire's answers per numerical setting: machine, cpu,
                  commit, date, case, setting, quantity, value, unit
                  (benchmarks/convergence.py)
@@ -190,6 +191,14 @@ def table_throughput():
               "wall best (s)", "updates/s", "speed-up", "bitwise = 1 thread"]
     return (markdown(header, [[r[h] for h in header] for r in rows]) +
             f'\nFrom `scripts/bench.sh throughput` at {csv_comment("throughput.csv", "polydem")}, best of 5 runs.\n')
+
+
+def table_redetection_jump():
+    rows = read_csv("redetection_jump.csv")
+    header = ["joint model", "scene", "seeds", "pairs", "worst jump"]
+    return (markdown(header, [[r[h] for h in header] for r in rows]) +
+            f'\nFrom `scripts/bench.sh jump` at {csv_comment("redetection_jump.csv", "polydem")}: the largest '
+            'change of any pair\'s force or moment, relative to the largest before.\n')
 
 
 def table_wall_scaling():
@@ -463,6 +472,7 @@ TABLES = {
     "main_job_verdict": table_main_job_verdict,
     "error_vs_time": table_error_vs_time,
     "throughput": table_throughput,
+    "redetection_jump": table_redetection_jump,
     "layout": table_layout,
     "wall_scaling": table_wall_scaling,
     "convergence": table_convergence,
