@@ -66,6 +66,14 @@ double travel_l1(const Blocks& b, const Vec3& p0, const Quat& q0, int i, const V
          dt * (l1(b.state.velocity[i]) + l1(b.state.angular_velocity[i]) * radius);
 }
 
+// The chord block i's rotation since the detection (q0) swept at its
+// bounding radius, 2·|sin(θ/2)|·r: the farthest any of its points has moved
+// by turning. |vec(q·q0*)| = |sin(θ/2)|.
+double turn_chord(const Blocks& b, const Quat& q0, int i) {
+  const Quat dq = b.state.orientation[i] * q0.conjugate();
+  return 2.0 * dq.vec().norm() * b.props.radius[i];
+}
+
 PosedBlock posed(const Blocks& b, int i) {
   return {&b.props.local_shape[i], b.state.rotation[i], b.state.position[i], b.props.size[i]};
 }
@@ -126,9 +134,7 @@ bool ContactDetector::needs_detection(const Blocks& b, double dt, bool bound_fir
   double r1 = any_fixed ? c.norm() : 0.0, r2 = 0;  // a fixed block's travel from c
   for (int i = 0; i < n; ++i) {
     if (motion[i] == BlockMotion::fixed) continue;
-    const Quat dq = b.state.orientation[i] * im.detected_orientation[i].conjugate();
-    // |vec(dq)| = sin(angle/2); 2·|vec| bounds the angle well for small turns.
-    const double turn = 2.0 * dq.vec().norm() * b.props.radius[i];
+    const double turn = turn_chord(b, im.detected_orientation[i], i);
     const double ahead =
         dt * (b.state.velocity[i].norm() + b.state.angular_velocity[i].norm() * b.props.radius[i]);
     const double r = (b.state.position[i] - im.detected_position[i] - c).norm() + turn + ahead;
@@ -285,7 +291,15 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
     find_joint_cells(b.props.local_shape, b.state, contacts.pairs, contacts.sub, margin_, contacts.joints,
                      im.overlap);
   } else {
-    carry_history(b, old, contacts, laws, travel_, im.carry, threads);
+    // How far each block has moved since the previous detection: the
+    // reach of a pair's history (carry_history).
+    im.carry.moved.resize(static_cast<std::size_t>(b.count));
+    im.carry.turned.resize(static_cast<std::size_t>(b.count));
+    for (int i = 0; i < b.count; ++i) {
+      im.carry.moved[i] = b.state.position[i] - im.detected_position[i];
+      im.carry.turned[i] = turn_chord(b, im.detected_orientation[i], i);
+    }
+    carry_history(b, old, contacts, laws, im.carry, threads);
     // Re-sampling may lower a pair's normal strain at this pose but not
     // raise it (joint_law.hpp); what it changes is the re-sampling's, not
     // motion's, and goes to the ledger.

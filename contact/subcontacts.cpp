@@ -242,15 +242,15 @@ void build_subcontacts(const Blocks& b, const std::vector<std::pair<int, int>>& 
 // the middle of a twisted cube's edges, half a metre from any corner, with
 // no shear, and the cube sprang back about a twisted position.
 // A point outside the previous patch (the patch grew, or slid) takes the
-// value of the nearest edge within the reach, the detection travel: since
-// the last detection the blocks have moved relative to each other by about
-// that much at most, and the patch's edge, traced by the reference face's
-// sides over the incident face, with them (the pair that triggered the
-// detection a hair more: a crossing on its patch's edge can fall just
-// outside, docs/contact.md). Farther out, the point was not in
-// contact then: it is contact area that is new, without history. (A reach
-// set by anything else, the contact margin or the patch's size, hands
-// shear to area that had none, by an amount that depends on that setting.)
+// value of the nearest edge within the pair's reach: how far any point of
+// one block has moved relative to the other since the last detection,
+// from the blocks' own motion. The patch's edge, traced by the reference
+// face's sides over the incident face, has not moved farther. Farther out,
+// the point was not in contact then: it is contact area that is new,
+// without history. (A reach set by anything else, the contact margin, the
+// patch's size or the detection travel, a threshold the pair that
+// triggered the detection has just crossed, hands shear to area that had
+// none or takes it from area that had it.)
 //
 // Strain energy must not appear from the resampling: a pair whose new shear
 // energy exceeds its previous one has its new forces scaled down to it.
@@ -323,9 +323,20 @@ bool interpolate_stress(const PreviousPatch& pp, const CarryScratch& sc, const V
   return best <= pp.tolerance * pp.tolerance;
 }
 
+// How far any point of block a can have moved relative to any point of
+// block b since the previous detection: |d_a − d_b| + turned_a + turned_b
+// (each block's points move by its translation plus at most the chord of
+// its rotation at its bounding radius), raised by a relative 1e-9 so that a
+// point on the edge of a patch whose blocks made just this move is not lost
+// to round-off.
+double pair_reach(const CarryScratch& sc, int a, int b) {
+  if (sc.moved.empty()) return 0.0;
+  return (1.0 + 1e-9) * ((sc.moved[a] - sc.moved[b]).norm() + sc.turned[a] + sc.turned[b]);
+}
+
 }  // namespace
 
-void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& contacts, const JointLaws& laws, double reach,
+void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& contacts, const JointLaws& laws,
                    CarryScratch& scratch, int threads) {
   Subcontacts& sc = contacts.sub;
   const Subcontacts& os = old.sub;
@@ -364,7 +375,7 @@ void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& cont
     double radius2 = 0;
     for (int o = op->first; o < op->first + op->count; ++o)
       radius2 = std::max(radius2, (scratch.old_point[o] - pp.centroid).squaredNorm());
-    pp.tolerance = reach;
+    pp.tolerance = pair_reach(scratch, cp.a, cp.b);
     const double tiny_area = 1e-12 * radius2;
     const Vec3 n = st.rotation[cp.ref_block] * sc.ref_normal_local[cp.first];
     // The previous forces were on the previous incident block; if the

@@ -161,6 +161,11 @@ struct CarryScratch {
   std::vector<Vec3> old_stress;         // previous subcontacts' elastic shear stress F/A, Pa
   std::vector<int> source;              // per new subcontact: the nearest previous one on the patch, or -1
   std::vector<char> dissipation_taken;  // per previous subcontact: its dissipation went to an inheritor
+  // Per block, set by the caller: how far it has moved since the previous
+  // detection, its translation and the chord its rotation swept at its
+  // bounding radius (2·|sin(θ/2)|·r). Empty: no block has moved.
+  std::vector<Vec3> moved;
+  std::vector<double> turned;
 };
 
 // History carry-over from one detection to the next, by position on the
@@ -169,9 +174,11 @@ struct CarryScratch {
 // current pose of `blocks` (they are fixed in their block): they span the
 // previous patch, and their elastic shear stresses F/A sample the joint's
 // shear field. Each new subcontact (built at the current pose) lying on the
-// previous patch — inside it, or outside by at most `reach` in the joint
-// plane (the detection travel: about the farthest the patch's edge can have
-// moved since the previous detection) — takes
+// previous patch — inside it, or outside by at most the pair's reach in the
+// joint plane, |d_a − d_b| + turned_a + turned_b from scratch.moved and
+// scratch.turned (the farthest any point of one block has moved relative to
+// the other since the previous detection, so the farthest the patch's edge
+// can have moved) — takes
 //   - the shear stress interpolated linearly at its point (a fan of
 //     triangles about the previous points' centroid, whose value is their
 //     mean, so a uniform shear and a twist are reproduced exactly; along
@@ -192,6 +199,6 @@ struct CarryScratch {
 // ledger's balance is unchanged by a detection.
 // `threads` > 1: the pairs in parallel (the same bits).
 void carry_history(const Blocks& blocks, const ContactSet& previous, ContactSet& current, const JointLaws& laws,
-                   double reach, CarryScratch& scratch, int threads = 1);
+                   CarryScratch& scratch, int threads = 1);
 
 }  // namespace polydem

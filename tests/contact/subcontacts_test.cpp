@@ -7,8 +7,9 @@
 // The scenes are built by hand: two blocks at the origin with the identity
 // orientation (so body frames are the world frame), pair (0, 1), block 0's
 // face z = 0 the reference plane, block 1 incident. Subcontacts are given
-// by their points on the plane. ks = 1e9 Pa/m; history reaches 0.01 m
-// beyond the previous patch (the detection travel).
+// by their points on the plane. ks = 1e9 Pa/m; block 1 has moved 0.01 m
+// since the previous detection, so history reaches 0.01 m beyond the
+// previous patch.
 #include "contact/subcontacts.hpp"
 
 #include "contact/joint_law.hpp"
@@ -25,6 +26,15 @@ constexpr double kKs = 1e9;
 // The blocks' joints under one law of shear stiffness kKs.
 JointLaws ks_laws(const Blocks& b) { return uniform_joint_laws(JointLaw{1e10, kKs, 0.5, 0, 0, 0}, b.count); }
 constexpr double kReach = 0.01;
+
+// Scratch for a detection after which block 1 has moved kReach along x
+// since the previous one (block 0 not at all): the pair's reach.
+CarryScratch moved_by(double d) {
+  CarryScratch s;
+  s.moved = {Vec3::Zero(), Vec3(d, 0, 0)};
+  s.turned = {0.0, 0.0};
+  return s;
+}
 
 struct Point {
   double x, y;
@@ -100,8 +110,8 @@ TEST(CarryHistory, FollowsThePositionNotTheKey) {
   std::vector<Point> now = {{0.5, 0.5, 0.225, 91},  {-0.5, 0.5, 0.225, 92}, {-0.5, -0.5, 0.225, 93},
                             {0.5, -0.5, 0.225, 94}, {0.0, 0.0, 0.1, 95}};
   ContactSet current = one_pair(now);
-  CarryScratch scratch;
-  carry_history(b, previous, current, ks_laws(b), kReach, scratch);
+  CarryScratch scratch = moved_by(kReach);
+  carry_history(b, previous, current, ks_laws(b), scratch);
   const int source[4] = {2, 3, 0, 1};
   Vec3 mean_stress = Vec3::Zero();
   for (int o = 0; o < 4; ++o) mean_stress += previous.sub.shear_force[o] / 0.25 / 4;
@@ -146,8 +156,8 @@ TEST(CarryHistory, ATwistIsCarriedOntoANewClipExactly) {
                                 {-0.5 + c, 0.5, 0.126, 4},  {-0.5, 0.0, 0.125, 5},     {0.0, -0.5, 0.125, 6},
                                 {0.5, 0.0, 0.125, 7},       {0.0, 0.5, 0.125, 8}};
   ContactSet current = one_pair(octagon);
-  CarryScratch scratch;
-  carry_history(b, previous, current, ks_laws(b), kReach, scratch);
+  CarryScratch scratch = moved_by(kReach);
+  carry_history(b, previous, current, ks_laws(b), scratch);
   double e_old = 0, e_new = 0;
   for (int s = 0; s < 4; ++s) e_old += energy(previous.sub.shear_force[s], 0.25);
   for (std::size_t s = 0; s < octagon.size(); ++s) {
@@ -161,8 +171,9 @@ TEST(CarryHistory, ATwistIsCarriedOntoANewClipExactly) {
   EXPECT_NEAR(current.dropped_shear_energy, e_old - e_new, 1e-12 * e_old);
 }
 
-// A point off the previous patch by more than the reach (the detection
-// travel) is contact area that is new, however large the patch.
+// A point off the previous patch by more than the pair's reach (how far
+// its blocks moved relative to each other since the previous detection) is
+// contact area that is new, however large the patch.
 TEST(CarryHistory, APointOffThePreviousPatchStartsWithoutHistory) {
   const Blocks b = two_blocks_at_rest();
   ContactSet previous = one_pair(square(1));
@@ -171,14 +182,23 @@ TEST(CarryHistory, APointOffThePreviousPatchStartsWithoutHistory) {
     previous.sub.bonded[s] = 1;
   }
   // 9 mm off carries, 11 mm off does not (a reach set by the patch's size,
-  // a tenth of its 0.71 m radius, would carry both).
-  ContactSet current = one_pair({{0.509, 0.0, 0.25, 1}, {-0.511, 0.0, 0.25, 2}});
-  CarryScratch scratch;
-  carry_history(b, previous, current, ks_laws(b), kReach, scratch);
+  // a tenth of its 0.71 m radius, would carry both); a point off by just the
+  // reach (an edge that moved with the block, 0.5 + 0.01 m: 1e-17 m more in
+  // round-off) carries.
+  ContactSet current =
+      one_pair({{0.509, 0.0, 0.25, 1}, {-0.511, 0.0, 0.25, 2}, {0.5 + kReach, 0.3, 0.25, 3}});
+  CarryScratch scratch = moved_by(kReach);
+  carry_history(b, previous, current, ks_laws(b), scratch);
   EXPECT_NEAR((current.sub.shear_force[0] - Vec3(0, 250, 0)).norm(), 0.0, 1e-9);
   EXPECT_EQ(current.sub.bonded[0], 1);
   EXPECT_EQ(current.sub.shear_force[1], Vec3::Zero());
   EXPECT_EQ(current.sub.bonded[1], 0);
+  EXPECT_NEAR((current.sub.shear_force[2] - Vec3(0, 250, 0)).norm(), 0.0, 1e-9);
+  // Blocks that have not moved since: the reach is nil, 9 mm off is new.
+  ContactSet again = one_pair({{0.509, 0.0, 0.25, 1}});
+  CarryScratch still = moved_by(0.0);
+  carry_history(b, previous, again, ks_laws(b), still);
+  EXPECT_EQ(again.sub.shear_force[0], Vec3::Zero());
 }
 
 // A corner clipped into two crossings (a block twisted on an equal block):
@@ -193,8 +213,8 @@ TEST(CarryHistory, ACornerSplitIntoTwoCrossingsSharesItsDisplacement) {
   previous.sub.slip_energy[0] = 2.0;
   previous.sub.bonded[0] = 1;
   ContactSet current = one_pair({{0.495, 0.5, 0.125, 7}, {0.5, 0.495, 0.125, 8}});
-  CarryScratch scratch;
-  carry_history(b, previous, current, ks_laws(b), kReach, scratch);
+  CarryScratch scratch = moved_by(kReach);
+  carry_history(b, previous, current, ks_laws(b), scratch);
   for (int s = 0; s < 2; ++s) {
     EXPECT_NEAR((current.sub.shear_force[s] - 0.5 * f).norm(), 0.0, 1e-12 * f.norm()) << s;
     EXPECT_EQ(current.sub.bonded[s], 1);
@@ -213,8 +233,8 @@ TEST(CarryHistory, InheritorsWithMoreAreaShareTheEnergyInsteadOfCopyingIt) {
   const Vec3 f(0, 1000, 0);
   previous.sub.shear_force.set(0, f);
   ContactSet current = one_pair({{0.495, 0.5, 0.25, 7}, {0.5, 0.495, 0.25, 8}});
-  CarryScratch scratch;
-  carry_history(b, previous, current, ks_laws(b), kReach, scratch);
+  CarryScratch scratch = moved_by(kReach);
+  carry_history(b, previous, current, ks_laws(b), scratch);
   const double e_new = energy(current.sub.shear_force[0], 0.25) + energy(current.sub.shear_force[1], 0.25);
   EXPECT_NEAR(e_new, energy(f, 0.25), 1e-12 * energy(f, 0.25));
   EXPECT_NEAR(current.sub.shear_force[0].y(), 1000 / std::sqrt(2.0), 1e-9);
@@ -233,8 +253,8 @@ TEST(CarryHistory, ShearOfAreaThatIsGoneIsBookedAsDropped) {
   previous.sub.damping_energy[1] = 1.5;
   // Corners 0, 2, 3 remain with a fifth of their area lost; corner 1 is gone.
   ContactSet current = one_pair({{-0.5, -0.5, 0.2, 1}, {0.5, 0.5, 0.2, 2}, {-0.5, 0.5, 0.2, 3}});
-  CarryScratch scratch;
-  carry_history(b, previous, current, ks_laws(b), kReach, scratch);
+  CarryScratch scratch = moved_by(kReach);
+  carry_history(b, previous, current, ks_laws(b), scratch);
   for (int s = 0; s < 3; ++s) EXPECT_NEAR((current.sub.shear_force[s] - 0.8 * f).norm(), 0.0, 1e-9) << s;
   const double before = 4 * energy(f, 0.25);
   const double after = 3 * energy(0.8 * f, 0.2);
@@ -250,8 +270,8 @@ TEST(CarryHistory, AReferenceFaceThatChangesSidesTurnsTheForceOntoTheOtherBlock)
   ContactSet previous = one_pair({{0.5, 0.5, 0.25, 1}}, 0);
   previous.sub.shear_force.set(0, Vec3(10, 20, 0));
   ContactSet current = one_pair({{0.5, 0.5, 0.25, 1}}, 1);
-  CarryScratch scratch;
-  carry_history(b, previous, current, ks_laws(b), kReach, scratch);
+  CarryScratch scratch = moved_by(kReach);
+  carry_history(b, previous, current, ks_laws(b), scratch);
   EXPECT_EQ(current.sub.shear_force[0], Vec3(-10, -20, 0));
 }
 
@@ -268,8 +288,8 @@ TEST(CarryHistory, AnotherPairDoesNotInheritAndAPairThatIsGoneDropsItsShear) {
   previous.sub.slip_energy[0] = 3.0;
   previous.sub.shear_force.set(0, Vec3(500, 0, 0));
   ContactSet current = one_pair({{0.5, 0.5, 0.25, 11}}, 0, 0, 2);
-  CarryScratch scratch;
-  carry_history(b, previous, current, ks_laws(b), kReach, scratch);
+  CarryScratch scratch = moved_by(kReach);
+  carry_history(b, previous, current, ks_laws(b), scratch);
   EXPECT_EQ(current.sub.shear_force[0], Vec3::Zero());
   EXPECT_EQ(current.sub.slip_energy[0], 0.0);
   EXPECT_EQ(current.retired_slip_energy, 3.0);
