@@ -11,6 +11,7 @@
 #include "structures/spire.hpp"
 
 #include "tests/support/blocks.hpp"
+#include "tests/support/redetection.hpp"
 
 #include <gtest/gtest.h>
 
@@ -29,10 +30,8 @@ JointLaw law_for_test() { return test::round_law(0.5); }
 
 using test::block_spec;
 
-void turn(Blocks& b, int i, double angle, const Vec3& axis) {
-  b.state.orientation[i] = (Quat(Eigen::AngleAxisd(angle, axis.normalized())) * b.state.orientation[i]).normalized();
-  b.state.rotation[i] = b.state.orientation[i].toRotationMatrix();
-}
+using test::perturb;
+using test::turn;
 
 // A base and a cube on it, detected under the overlap model.
 struct CubeOnBase {
@@ -222,87 +221,12 @@ Blocks spire_blocks() {
   return build_blocks(specs);
 }
 
-// The joint's wrench for every pair of `c` (dt = 0: no increments).
-std::vector<lanes::PairRest> wrenches(const JointLaws& laws, const Blocks& b, ContactSet& c, OverlapScratch& s) {
-  overlap_joint_forces(laws, b.props.local_shape, b.state, c.pairs, c.sub, c.joints, 0.0, 0, c.pairs.size(), s);
-  return c.joints.wrench;
-}
-
-// The largest change of a pair's force and moment at a re-detection,
-// relative to the largest force (moment) of the pairs compared.
-double worst_jump(const std::vector<ContactPair>& pa, const std::vector<int>& ra, const std::vector<lanes::PairRest>& wa,
-                  const std::vector<ContactPair>& pb, const std::vector<int>& rb,
-                  const std::vector<lanes::PairRest>& wb) {
-  double fmax = 0, mmax = 0;
-  for (const auto& w : wa) {
-    fmax = std::max(fmax, v3(w.force).norm());
-    mmax = std::max({mmax, v3(w.moment).norm(), v3(w.moment_ref).norm()});
-  }
-  if (!(fmax > 0 && mmax > 0)) return std::numeric_limits<double>::infinity();  // nothing compared
-  double worst = 0;
-  std::size_t k = 0;
-  for (std::size_t q = 0; q < pa.size(); ++q) {
-    while (k < pb.size() && std::make_pair(pb[k].a, pb[k].b) < std::make_pair(pa[q].a, pa[q].b)) {
-      worst = std::max(worst, v3(wb[k].force).norm() / fmax);  // a pair only after
-      ++k;
-    }
-    const bool same = k < pb.size() && pb[k].a == pa[q].a && pb[k].b == pa[q].b;
-    const lanes::PairRest zero{};
-    const lanes::PairRest& a = wa[q];
-    const lanes::PairRest& b = same ? wb[k] : zero;
-    // The same pair seen from the other side: the wrench on the other block.
-    const bool flipped = same && ra[q] != rb[k];
-    const Vec3 fb = flipped ? Vec3(-v3(b.force)) : v3(b.force);
-    const Vec3 mb = flipped ? v3(b.moment_ref) : v3(b.moment);
-    const Vec3 mrb = flipped ? v3(b.moment) : v3(b.moment_ref);
-    const double here = std::max({(v3(a.force) - fb).norm() / fmax, (v3(a.moment) - mb).norm() / mmax,
-                      (v3(a.moment_ref) - mrb).norm() / mmax});
-    worst = std::max(worst, here);
-    if (same) ++k;
-  }
-  for (; k < pb.size(); ++k) worst = std::max(worst, v3(wb[k].force).norm() / fmax);
-  return worst;
-}
-
-// Moves the free blocks by up to `step` and turns them by up to
-// `step`/metre, and gives them velocities (for the shear increments).
-void perturb(Blocks& b, std::mt19937_64& rng, double step) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (int i : b.free_blocks) {
-    b.state.position[i] += step * Vec3(u(rng), u(rng), u(rng));
-    turn(b, i, step * std::abs(u(rng)), Vec3(u(rng), u(rng), u(rng)));
-  }
-}
-
-void set_velocities(Blocks& b, std::mt19937_64& rng, double v) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (int i : b.free_blocks) {
-    b.state.velocity[i] = v * Vec3(u(rng), u(rng), u(rng));
-    b.state.angular_velocity[i] = v * Vec3(u(rng), u(rng), u(rng));
-  }
-}
-
-// Forces continuous at a re-detection: shear and twist stored, the blocks
-// moved since the last detection (less than half the margin), the joints'
-// wrenches computed with the contacts held, then found again at the same
-// pose: the wrenches must not change (1e-9 relative to the largest).
+// Forces continuous at a re-detection (tests/support/redetection.hpp): shear
+// and twist stored, the blocks moved since the last detection (less than
+// half the margin), found again at the same pose: the wrenches must not
+// change (1e-9 relative to the largest).
 double redetection_jump(Blocks& blocks, const JointLaws& laws, double margin, std::uint64_t seed, double move) {
-  ContactDetector det(blocks, margin);
-  det.set_pair_joints(true);
-  ContactSet c;
-  OverlapScratch scratch;
-  std::mt19937_64 rng(seed);
-  det.detect(blocks, c, false, laws);
-  set_velocities(blocks, rng, 1e-2);
-  overlap_joint_forces(laws, blocks.props.local_shape, blocks.state, c.pairs, c.sub, c.joints, 1e-4, 0,
-                       c.pairs.size(), scratch);  // shear and twist stored
-  perturb(blocks, rng, move * margin);
-  const std::vector<ContactPair> pairs_before = c.pairs;
-  const std::vector<int> ref_before = c.joints.ref_block;
-  const std::vector<lanes::PairRest> before = wrenches(laws, blocks, c, scratch);
-  det.detect(blocks, c, false, laws);
-  const std::vector<lanes::PairRest> after = wrenches(laws, blocks, c, scratch);
-  return worst_jump(pairs_before, ref_before, before, c.pairs, c.joints.ref_block, after);
+  return test::redetection_jump(test::JointModelKind::overlap, blocks, laws, margin, seed, move).worst;
 }
 
 TEST(OverlapJoint, ForcesDoNotJumpAtARedetectionOnTheSpire) {
