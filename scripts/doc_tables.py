@@ -198,7 +198,8 @@ def table_redetection_jump():
     header = ["joint model", "scene", "seeds", "pairs", "worst jump"]
     return (markdown(header, [[r[h] for h in header] for r in rows]) +
             f'\nFrom `scripts/bench.sh jump` at {csv_comment("redetection_jump.csv", "polydem")}: the largest '
-            'change of any pair\'s force or moment, relative to the largest before.\n')
+            'change of any pair\'s force or moment, relative to the largest before, that the seeds found (a '
+            'lower bound on the model\'s worst).\n')
 
 
 def table_wall_scaling():
