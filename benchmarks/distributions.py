@@ -25,11 +25,14 @@ joints' whole normal force, spring and dashpot (`joint.friction_normal_force
             16-84 % band, or the bracket of a step sharper than the grid
             (docs/ensembles.md, "Bands along an intensity axis")
   walking4  the whole spire under the earthquake deck's record x4
-            (examples/spire/earthquake.toml), 5 replicas: the median and
-            16-84 % of the largest residual and largest transient opening
-            of vertical and of bed joints, and the median of the top
-            course's largest residual vertical opening (the course that
-            walks most)
+            (examples/spire/earthquake.toml), 5 replicas
+            (--walking-replicas): the median and 16-84 % of the largest
+            residual and largest transient opening of vertical and of bed
+            joints, the median of the top course's largest residual
+            vertical opening (the course that walks most), and the 5-95 %
+            interval of the median of the largest residual vertical
+            opening over the replicas resampled (bootstrap): how far the
+            median of so few runs may stray
 
 Every run is `nice -n 10 polydem ... --threads 1`, --jobs at a time. Each
 case and setting is a `polydem sweep` in DIR/<case>_<setting> (default
@@ -46,6 +49,8 @@ import csv
 import datetime
 import json
 import os
+import random
+import statistics
 import subprocess
 import sys
 import time
@@ -153,13 +158,31 @@ def margin_args(setting, default_out):
     return ["--set", f"simulation.contact_margin={margin * factor!r}"] + half
 
 
-def walking_case(polydem, setting, out, jobs, default_out, scales_at_default):
+def median_interval(values, draws=4000, seed=1):
+    """The 5 % and 95 % points of the median of `values` resampled with
+    replacement (`draws` times, a fixed seed): how far the median of so few
+    replicas may stray from the ensemble's own."""
+    rng = random.Random(seed)
+    meds = sorted(statistics.median(rng.choices(values, k=len(values))) for _ in range(draws))
+    return meds[int(0.05 * draws)], meds[int(0.95 * draws)]
+
+
+def walking_case(polydem, setting, out, jobs, default_out, scales_at_default, replicas):
     scales = scales_at_default if setting.startswith("safety factor 0.8") else "4"
     sweep(polydem, EARTHQUAKE, ["--set", "output.snapshot_interval=0"] + margin_args(setting, default_out) + ["--quiet",
-                                                    "--vary", f"ground_motion.scale={scales}", "--replicas", "5"],
+                                                    "--vary", f"ground_motion.scale={scales}", "--replicas",
+                                                    str(replicas)],
           out, jobs)
     point = next(r for r in read(os.path.join(out, "ensembles.csv")) if float(r["ground_motion.scale"]) == 4)
     got = {"replicas": (point["replicas"], "-"), "run time summed": (run_seconds(out), "s")}
+    values = []
+    for r in read(os.path.join(out, "sweep.csv")):
+        if float(r["ground_motion.scale"]) == 4 and int(r["ensemble.replica"]) < replicas:
+            with open(os.path.join(out, "points", r["point"], "summary.json")) as f:
+                values.append(json.load(f)["walking"]["residual_vertical_opening_m"])
+    lo, hi = median_interval(values)
+    got["residual_vertical_opening median 5 %"] = (repr(lo), "m")
+    got["residual_vertical_opening median 95 %"] = (repr(hi), "m")
     for stem in ("residual_vertical_opening_m", "residual_bed_opening_m", "max_vertical_opening_m",
                  "max_bed_opening_m"):
         for p in ("p16", "median", "p84"):
@@ -180,6 +203,8 @@ def main():
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--walking-scales", default="2,4,6",
                     help="the record's scales at the safety factor 0.8 (the scale 4 is compared)")
+    ap.add_argument("--walking-replicas", type=int, default=5,
+                    help="replicas of each walking ensemble (5: the issue's least)")
     ap.add_argument("--force", action="store_true")
     ap.add_argument("--out", default=os.path.join(ROOT, "out", "distributions"))
     args = ap.parse_args()
@@ -200,7 +225,8 @@ def main():
             out = os.path.join(args.out, f"{case}_{setting.replace(' ', '_')}")
             t0 = time.monotonic()
             default = "walking4_" + ("safety factor 0.8" + (HALF if setting.endswith(HALF) else "")).replace(" ", "_")
-            got = (walking_case(polydem, setting, out, args.jobs, os.path.join(args.out, default), args.walking_scales)
+            got = (walking_case(polydem, setting, out, args.jobs, os.path.join(args.out, default), args.walking_scales,
+                                 args.walking_replicas)
                    if case == "walking4"
                    else tip_case(polydem, case[3:], setting, out, args.jobs))
             got["benchmark wall time"] = (f"{time.monotonic() - t0:.0f}", "s")

@@ -323,6 +323,12 @@ def table_distributions():
         v = [1e3 * float(q[f"{stem} {p}"]) for p in ("median", "p16", "p84")]
         return f"{v[0]:.1f} [{v[1]:.1f}, {v[2]:.1f}]"
 
+    def median_interval(q):
+        if "residual_vertical_opening median 5 %" not in q:
+            return "-"
+        return (f'[{1e3 * float(q["residual_vertical_opening median 5 %"]):.1f}, '
+                f'{1e3 * float(q["residual_vertical_opening median 95 %"]):.1f}]')
+
     lines = []
     for T in ("0.6", "1.0", "2.0"):
         lines.append((f"tip, T_p = {T} s: collapse a_p, 50 % [16-84 %] (g)", f"tip{T}", collapse))
@@ -332,6 +338,10 @@ def table_distributions():
                         ("top course: largest residual vertical opening", "top course residual vertical largest")):
         lines.append((f"spire, record ×4: {label}, median [16-84 %] (mm)", "walking4",
                       (lambda st: lambda q: mm(q, st))(stem)))
+        if stem == "residual_vertical_opening":
+            lines.append(("spire, record ×4: the median's 5-95 % interval, replicas resampled (mm)", "walking4",
+                          median_interval))
+    lines.append(("spire, record ×4: replicas", "walking4", lambda q: q.get("replicas", "-")))
     walking_only = tuple(s + h for s in ("friction on total", "margin x0.5", "margin x2", "split damping",
                                          "merged corner stones", "merged corner stones, margin 3.05 mm")
                          for h in ("", ", travel half the margin"))
@@ -339,11 +349,10 @@ def table_distributions():
     for label, case, show in lines:
         table.append([label] + [show(got[(case, s)]) if (case, s) in got else
                                 "–" if case.startswith("tip") and s in walking_only else "not run" for s in settings])
-    replicas = {s: got.get(("walking4", s), {}).get("replicas", "-") for s in settings}
     commits = sorted({r["commit"] for r in rows})
     return (markdown(["figure"] + [s.replace(" x", " ×") for s in settings], table) +
             f"\nFrom `benchmarks/distributions.py build/polydem` at {', '.join(commits)}: the tip 20 replicas a "
-            f"point (at the two safety factors only), the spire {replicas[settings[0]]} replicas a setting; \"travel half "
+            f"point (at the two safety factors only), the spire's replicas as the row says; \"travel half "
             "the margin\": the detection travel at half the contact margin (`simulation.detection_travel = 1`); "
             "\"a step\": every replica "
             "survives at the first amplitude and collapses at the second (0.01 g apart). Run times in "
