@@ -19,7 +19,6 @@
 // the table.
 #include "bench_util.hpp"
 #include "io/atomic_file.hpp"
-#include "structures/spire.hpp"
 #include "tests/support/blocks.hpp"
 #include "tests/support/redetection.hpp"
 
@@ -50,11 +49,7 @@ struct Scene {
 };
 
 Scene spire_scene() {
-  const SpireModel model = build_spire(SpireSpec{});
-  std::vector<BlockSpec> specs;
-  for (const GeneratedBlock& g : model.blocks)
-    specs.push_back(test::block_spec(g.name, g.shape, g.kind == BlockKind::base ? BlockMotion::fixed : BlockMotion::free));
-  Scene s{build_blocks(specs), {}, 0.003, 0.1, 2e-4};
+  Scene s{test::default_spire_blocks(), {}, 0.003, 0.1, 2e-4};
   s.laws = uniform_joint_laws(test::round_law(0.5), s.blocks.count);
   return s;
 }

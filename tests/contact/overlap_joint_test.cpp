@@ -8,7 +8,6 @@
 #include "contact/detection.hpp"
 #include "contact/overlap_joint.hpp"
 #include "contact/pair_gather.hpp"
-#include "structures/spire.hpp"
 
 #include "tests/support/blocks.hpp"
 #include "tests/support/redetection.hpp"
@@ -189,7 +188,6 @@ TEST(OverlapJoint, TheDashpotNeverPullsTheBlocksTogether) {
   EXPECT_NEAR(w.force[2], 0.0, 1e-12 * law.kn * kDelta);  // cut at zero, not below
 }
 
-// The default spire's blocks, the base fixed.
 // A stone that left its bed and now lies beside the base, 2 mm from its
 // side face, within the margin: the pair is found again, open on the bed's
 // plane, and takes the side face's plane, so that pressed into that face it
@@ -213,14 +211,6 @@ TEST(OverlapJoint, AJointFoundOpenTakesThePlaneTheDetectionFinds) {
   EXPECT_NEAR(std::hypot(f.y(), f.z()), 0.0, 1e-12 * kn * kDelta);
 }
 
-Blocks spire_blocks() {
-  const SpireModel model = build_spire(SpireSpec{});
-  std::vector<BlockSpec> specs;
-  for (const GeneratedBlock& g : model.blocks)
-    specs.push_back(block_spec(g.name, g.shape, g.kind == BlockKind::base ? BlockMotion::fixed : BlockMotion::free));
-  return build_blocks(specs);
-}
-
 // Forces continuous at a re-detection (tests/support/redetection.hpp): shear
 // and twist stored, the blocks moved since the last detection (less than
 // half the margin), found again at the same pose: the wrenches must not
@@ -230,7 +220,7 @@ double redetection_jump(Blocks& blocks, const JointLaws& laws, double margin, st
 }
 
 TEST(OverlapJoint, ForcesDoNotJumpAtARedetectionOnTheSpire) {
-  Blocks blocks = spire_blocks();
+  Blocks blocks = test::default_spire_blocks();
   const JointLaws laws = uniform_joint_laws(law_for_test(), blocks.count);
   // Pressed into each other first, so that the joints carry load.
   std::mt19937_64 rng(11);
@@ -263,7 +253,7 @@ TEST(OverlapJoint, ForcesDoNotJumpAtARedetectionEdgeOnAndCornerOn) {
 // the integral over them equals the full one, to the bit, on the spire's
 // pairs moved by up to a quarter of the margin.
 TEST(OverlapJoint, TheCellsFoundAtADetectionHoldEveryCellUntilTheNext) {
-  Blocks blocks = spire_blocks();
+  Blocks blocks = test::default_spire_blocks();
   const JointLaws laws = uniform_joint_laws(law_for_test(), blocks.count);
   const double margin = 0.003;
   ContactDetector det(blocks, margin);

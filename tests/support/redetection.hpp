@@ -19,6 +19,8 @@
 #include "contact/joint_law.hpp"
 #include "contact/overlap_joint.hpp"
 #include "core/blocks.hpp"
+#include "structures/spire.hpp"
+#include "tests/support/blocks.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -27,6 +29,7 @@
 #include <map>
 #include <random>
 #include <utility>
+#include <vector>
 
 namespace polydem::test {
 
@@ -51,6 +54,16 @@ inline void set_velocities(Blocks& b, std::mt19937_64& rng, double v) {
     b.state.velocity[i] = v * Vec3(u(rng), u(rng), u(rng));
     b.state.angular_velocity[i] = v * Vec3(u(rng), u(rng), u(rng));
   }
+}
+
+// The default spire as blocks: its base fixed, every stone free (the scene
+// whose joints both the tests and the benchmark re-detect).
+inline Blocks default_spire_blocks() {
+  const SpireModel model = build_spire(SpireSpec{});
+  std::vector<BlockSpec> specs;
+  for (const GeneratedBlock& g : model.blocks)
+    specs.push_back(block_spec(g.name, g.shape, g.kind == BlockKind::base ? BlockMotion::fixed : BlockMotion::free));
+  return build_blocks(specs);
 }
 
 enum class JointModelKind { subcontacts, overlap };
