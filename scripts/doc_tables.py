@@ -474,6 +474,30 @@ def table_ledger():
             "(the wall times are in benchmarks/results/ledger.csv).\n")
 
 
+def table_spire_walking():
+    """docs/spire.md's walking under the earthquake deck: one row per record
+    scale from docs/data/spire_walking.csv (the ensembles.csv of `polydem
+    sweep --replicas`), median [16-84 %] over the replicas in mm."""
+    path = os.path.join(ROOT, "docs", "data", "spire_walking.csv")
+    with open(path, encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+
+    def mm(r, stem):
+        return "{:.1f} [{:.1f}, {:.1f}]".format(*(1e3 * float(r[f"{stem}_{k}"]) for k in ("median", "p16", "p84")))
+
+    def outcome(r):
+        counts = [(int(r[k]), k[2:].replace("_", " ")) for k in r if k.startswith("n_") and r[k] and int(r[k]) > 0]
+        return ", ".join(f"{label} {n} of {r['replicas']}" for n, label in counts)
+
+    header = ["record", "largest residual opening, vertical joints", "vertical, during the shaking",
+              "largest residual opening, bed joints", "bed, during the shaking", "tip's peak", "outcome"]
+    table = [[f"×{float(r['ground_motion.scale']):g}", mm(r, "residual_vertical_opening_m"),
+              mm(r, "max_vertical_opening_m"), mm(r, "residual_bed_opening_m"), mm(r, "max_bed_opening_m"),
+              mm(r, "peak_tip_displacement_m"), outcome(r)]
+             for r in sorted(rows, key=lambda r: float(r["ground_motion.scale"]))]
+    return markdown(header, table)
+
+
 TABLES = {
     "two_commands": table_two_commands,
     "checks": table_checks,
@@ -487,6 +511,7 @@ TABLES = {
     "wall_scaling": table_wall_scaling,
     "convergence": table_convergence,
     "distributions": table_distributions,
+    "spire_walking": table_spire_walking,
     "ledger": table_ledger,
     "deck_example": table_deck_example,
     "python_example": table_python_example,
