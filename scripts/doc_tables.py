@@ -296,6 +296,12 @@ def table_convergence():
             "the blocks' poses (run/crack.hpp).\n")
 
 
+def band_mm(median, p16, p84):
+    """An ensemble's median [16-84 %] of a length in metres, as mm."""
+    v = [1e3 * float(x) for x in (median, p16, p84)]
+    return f"{v[0]:.1f} [{v[1]:.1f}, {v[2]:.1f}]"
+
+
 def table_distributions():
     """benchmarks/distributions.py's ensembles: one row per figure, one
     column per safety factor."""
@@ -320,8 +326,7 @@ def table_distributions():
     def mm(q, stem):
         if f"{stem} median" not in q:
             return "-"
-        v = [1e3 * float(q[f"{stem} {p}"]) for p in ("median", "p16", "p84")]
-        return f"{v[0]:.1f} [{v[1]:.1f}, {v[2]:.1f}]"
+        return band_mm(*(q[f"{stem} {p}"] for p in ("median", "p16", "p84")))
 
     def median_interval(q):
         if "residual_vertical_opening median 5 %" not in q:
@@ -483,7 +488,7 @@ def table_spire_walking():
         rows = list(csv.DictReader(f))
 
     def mm(r, stem):
-        return "{:.1f} [{:.1f}, {:.1f}]".format(*(1e3 * float(r[f"{stem}_{k}"]) for k in ("median", "p16", "p84")))
+        return band_mm(*(r[f"{stem}_{k}"] for k in ("median", "p16", "p84")))
 
     def outcome(r):
         counts = [(int(r[k]), k[2:].replace("_", " ")) for k in r if k.startswith("n_") and r[k] and int(r[k]) > 0]
