@@ -12,7 +12,7 @@ travel, explicit damping):
   settings  default; safety factor 0.4 and 0.2 (`simulation.safety_factor`);
             margin x0.5 and x2 (`simulation.contact_margin`, the automatic
             margin a short run of the same deck reports in summary.json,
-            scaled); detection travel x0.25, x0.5 and x2
+            scaled); detection travel x0.125, x0.25, x0.5 and x2
             (`simulation.detection_travel`, likewise); split damping
             (`simulation.damping_scheme = "split"`); the same settings and
             the margin x0.125 and x0.25 with the detection travel at half the
@@ -73,6 +73,7 @@ SETTINGS = {
     "safety factor 0.2": (["simulation.safety_factor=0.2"], None),
     "margin x0.5": ([], ("margin", 0.5)),
     "margin x2": ([], ("margin", 2.0)),
+    "travel x0.125": ([], ("travel", 0.125)),
     "travel x0.25": ([], ("travel", 0.25)),
     "travel x0.5": ([], ("travel", 0.5)),
     "travel x2": ([], ("travel", 2.0)),
