@@ -222,7 +222,7 @@ def table_convergence():
     got = {}
     for r in rows:
         got.setdefault((r["case"], r["setting"]), {})[r["quantity"]] = r["value"]
-    order = ["default", "safety factor 0.4", "safety factor 0.2", "margin x0.5", "margin x2", "travel x0.25", "travel x0.5",
+    order = ["default", "safety factor 0.4", "safety factor 0.2", "margin x0.5", "margin x2", "travel x0.125", "travel x0.25", "travel x0.5",
              "travel x2", "split damping", "travel half the margin", "safety factor 0.4, travel half the margin",
              "safety factor 0.2, travel half the margin", "margin x0.125, travel half the margin",
              "margin x0.25, travel half the margin", "margin x0.5, travel half the margin",
