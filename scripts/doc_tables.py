@@ -59,6 +59,10 @@ import sys
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 RESULTS = os.path.join(ROOT, "benchmarks", "results")
+# The benchmarks' own lists of settings give the tables' column and row order.
+sys.path.insert(0, os.path.join(ROOT, "benchmarks"))
+import convergence  # noqa: E402
+import distributions  # noqa: E402
 BLOCK = re.compile(r"(<!-- table:([a-z0-9_]+) -->\n)(.*?)(<!-- /table -->)", re.S)
 
 
@@ -222,14 +226,7 @@ def table_convergence():
     got = {}
     for r in rows:
         got.setdefault((r["case"], r["setting"]), {})[r["quantity"]] = r["value"]
-    order = ["default", "safety factor 0.4", "safety factor 0.2", "margin x0.5", "margin x2", "travel x0.125", "travel x0.25", "travel x0.5",
-             "travel x2", "split damping", "travel half the margin", "safety factor 0.4, travel half the margin",
-             "safety factor 0.2, travel half the margin", "margin x0.125, travel half the margin",
-             "margin x0.25, travel half the margin", "margin x0.5, travel half the margin",
-             "margin x2, travel half the margin", "split damping, travel half the margin", "overlap model",
-             "overlap model, margin x0.5", "overlap model, margin x2", "merged corner stones",
-             "merged corner stones, margin 3.05 mm", "merged corner stones, travel half the margin",
-             "merged corner stones, margin 3.05 mm, travel half the margin"]
+    order = list(convergence.SETTINGS)
     settings = sorted({r["setting"] for r in rows}, key=lambda s: (order.index(s) if s in order else len(order), s))
 
     def crack(q):
@@ -311,9 +308,7 @@ def table_distributions():
     got = {}
     for r in rows:
         got.setdefault((r["case"], r["setting"]), {})[r["quantity"]] = r["value"]
-    order = ["safety factor 0.8", "safety factor 0.4", "friction on total", "margin x0.5", "margin x2", "split damping",
-             "merged corner stones", "merged corner stones, margin 3.05 mm"]
-    order += [s + ", travel half the margin" for s in order]
+    order = list(distributions.SETTINGS)
     settings = sorted({r["setting"] for r in rows}, key=lambda s: (order.index(s) if s in order else len(order), s))
 
     def collapse(q):
