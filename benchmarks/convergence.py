@@ -14,7 +14,9 @@ travel, explicit damping):
             margin a short run of the same deck reports in summary.json,
             scaled); detection travel x0.125, x0.25, x0.5 and x2
             (`simulation.detection_travel`, likewise); split damping
-            (`simulation.damping_scheme = "split"`); the same settings and
+            (`simulation.damping_scheme = "split"`); the joints re-sampled
+            pair by pair (`simulation.detection_trigger = "pair"`) at the
+            detection travel x1, x0.5, x0.25, x0.125, x0.0625 and x0.03125; the same settings and
             the margin x0.125 and x0.25 with the detection travel at half the
             margin (`simulation.detection_travel = 1`, taken as half the
             margin: how often the subcontacts are re-sampled then follows the
@@ -67,6 +69,8 @@ COLUMNS = ["machine", "cpu", "commit", "date", "case", "setting", "quantity", "v
 # the table's. "travel half the margin": the detection travel at its largest,
 # the margin's half (the deck's 1 m is taken as that).
 HALF = ["simulation.detection_travel=1"]
+# the joints re-sampled pair by pair (contact/detection.hpp)
+PAIR = ['simulation.detection_trigger="pair"']
 SETTINGS = {
     "default": ([], None),
     "safety factor 0.4": (["simulation.safety_factor=0.4"], None),
@@ -78,6 +82,12 @@ SETTINGS = {
     "travel x0.5": ([], ("travel", 0.5)),
     "travel x2": ([], ("travel", 2.0)),
     "split damping": (['simulation.damping_scheme="split"'], None),
+    "pair trigger": (PAIR, None),
+    "pair trigger, travel x0.5": (PAIR, ("travel", 0.5)),
+    "pair trigger, travel x0.25": (PAIR, ("travel", 0.25)),
+    "pair trigger, travel x0.125": (PAIR, ("travel", 0.125)),
+    "pair trigger, travel x0.0625": (PAIR, ("travel", 0.0625)),
+    "pair trigger, travel x0.03125": (PAIR, ("travel", 0.03125)),
     "travel half the margin": (HALF, None),
     "safety factor 0.4, travel half the margin": (["simulation.safety_factor=0.4"] + HALF, None),
     "safety factor 0.2, travel half the margin": (["simulation.safety_factor=0.2"] + HALF, None),
@@ -152,7 +162,10 @@ def run_quantities(s):
             ("time step", f'{s["time_step_s"]:.4g}', "s"),
             ("contact margin", f'{s["contact_margin_m"]:.4g}', "m"),
             ("detection travel", f'{s["detection_travel_m"]:.4g}', "m"),
+            ("detections", str(s["contact_detections"]), ""),
             ("numerical energy of slip and damping", f'{100 * s["energy"]["numerical_of_dissipation"]:.3g}', "%")]
+    if "pairs_resampled" in s:
+        out.append(("pairs re-sampled", str(s["pairs_resampled"]), ""))
     return out
 
 

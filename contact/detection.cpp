@@ -31,6 +31,15 @@ struct ContactDetector::Impl {
   std::vector<int> count;
   CarryScratch carry;
   OverlapScratch overlap;
+  // Pair by pair only. Per candidate: the previous set's pair taken over
+  // whole, or −1; the candidates to sample.
+  std::vector<int> kept;
+  std::vector<int> todo;
+  std::vector<char> old_kept;  // per pair of the previous set: taken over whole
+  // Per pair of the current set: its blocks' poses when it was sampled
+  // (a, b as the pair's), and the same being built for the next set.
+  std::vector<Vec3> pose_pa, pose_pb, next_pa, next_pb;
+  std::vector<Quat> pose_qa, pose_qb, next_qa, next_qb;
 };
 
 namespace {
@@ -72,6 +81,21 @@ double travel_l1(const Blocks& b, const Vec3& p0, const Quat& q0, int i, const V
 double turn_chord(const Blocks& b, const Quat& q0, int i) {
   const Quat dq = b.state.orientation[i] * q0.conjugate();
   return 2.0 * dq.vec().norm() * b.props.radius[i];
+}
+
+// How far any point of block a may have moved relative to any point of
+// block b since the poses (pa, qa), (pb, qb), counting the coming step dt:
+// the relative translation, the chords of both rotations at their bounding
+// radii, and the step at the current speeds.
+double pair_travel(const Blocks& b, int a, int c, const Vec3& pa, const Quat& qa, const Vec3& pb, const Quat& qb,
+                   double dt) {
+  const auto& st = b.state;
+  const double ra = b.props.radius[a], rc = b.props.radius[c];
+  double u = ((st.position[a] - pa) - (st.position[c] - pb)).norm() + turn_chord(b, qa, a) + turn_chord(b, qb, c);
+  if (dt > 0)
+    u += dt * ((st.velocity[a] - st.velocity[c]).norm() + st.angular_velocity[a].norm() * ra +
+               st.angular_velocity[c].norm() * rc);
+  return u;
 }
 
 PosedBlock posed(const Blocks& b, int i) {
@@ -129,7 +153,7 @@ bool ContactDetector::needs_detection(const Blocks& b, double dt, bool bound_fir
   }
   if (n == 0) return false;
   const Vec3 c = 0.5 * (lo + hi);
-  const double threshold = travel_;
+  const double threshold = scene_threshold();
   if (bound_first && travels_clearly_below(b, c, any_fixed, dt, threshold)) return false;
   double r1 = any_fixed ? c.norm() : 0.0, r2 = 0;  // a fixed block's travel from c
   for (int i = 0; i < n; ++i) {
@@ -229,7 +253,7 @@ bool ContactDetector::clearly_no_detection(const TravelBound& t, const Vec3& ref
   drift = c;
   double u1 = t.u1, u2 = t.u2;
   if (t.any_fixed) keep_two_largest(l1(ref), u1, u2);
-  return u1 + u2 + 2.0 * delta < travel_ * (1.0 - 1e-6);
+  return u1 + u2 + 2.0 * delta < scene_threshold() * (1.0 - 1e-6);
 }
 
 DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bool bond_new, const JointLaws& laws) {
@@ -240,19 +264,93 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
   // 1. Broad phase.
   im.broad.find_pairs(b, 0.5 * margin_, im.candidates);
   const Clock::time_point t1 = Clock::now();
+  times.broad_phase = seconds(t0, t1);
+
+  // Pair by pair, the pairs whose blocks have not moved by the travel since
+  // they were sampled are taken over whole; the rest are sampled.
+  const int nc = static_cast<int>(im.candidates.size());
+  im.todo.clear();
+  if (pair_trigger_ && im.pose_pa.size() == contacts.pairs.size()) {
+    im.kept.assign(static_cast<std::size_t>(nc), -1);
+    for (int k = 0; k < nc; ++k) {
+      const auto [i, j] = im.candidates[k];
+      if (const ContactPair* op = find_pair(contacts, i, j)) {
+        const std::size_t o = static_cast<std::size_t>(op - contacts.pairs.data());
+        if (pair_travel(b, i, j, im.pose_pa[o], im.pose_qa[o], im.pose_pb[o], im.pose_qb[o], 0.0) <= travel_) {
+          im.kept[static_cast<std::size_t>(k)] = static_cast<int>(o);
+          continue;
+        }
+      }
+      im.todo.push_back(k);
+    }
+  } else {
+    im.kept.assign(pair_trigger_ ? static_cast<std::size_t>(nc) : 0, -1);
+    im.todo.resize(static_cast<std::size_t>(nc));
+    for (int k = 0; k < nc; ++k) im.todo[static_cast<std::size_t>(k)] = k;
+  }
+
+  // 2-3. Narrow phase and patches, against the current set's planes.
+  narrow_phase_and_patches(b, contacts, times);
 
   // The previous contacts become the history to carry over.
   std::swap(im.previous, contacts);
-  const ContactSet& old = im.previous;
+  sample(b, contacts, bond_new, laws, true, times);
+  return times;
+}
 
-  // 2. Narrow phase, in parallel, one slot per candidate.
-  const int nc = static_cast<int>(im.candidates.size());
+bool ContactDetector::moved_pairs(const Blocks& b, const ContactSet& contacts, double dt,
+                                  std::vector<int>& moved) const {
+  const auto& im = *impl_;
+  moved.clear();
+  const std::size_t np = contacts.pairs.size();
+  if (im.pose_pa.size() != np) {  // a set this detector did not build: all of it
+    for (std::size_t q = 0; q < np; ++q) moved.push_back(static_cast<int>(q));
+    return np > 0;
+  }
+  for (std::size_t q = 0; q < np; ++q) {
+    const ContactPair& p = contacts.pairs[q];
+    if (!(pair_travel(b, p.a, p.b, im.pose_pa[q], im.pose_qa[q], im.pose_pb[q], im.pose_qb[q], dt) <= travel_))
+      moved.push_back(static_cast<int>(q));  // NaN too: sampled again, the guard judges the state
+  }
+  return !moved.empty();
+}
+
+DetectionTimes ContactDetector::resample(const Blocks& b, ContactSet& contacts, const std::vector<int>& moved,
+                                         const JointLaws& laws) {
+  auto& im = *impl_;
+  DetectionTimes times;
+  const std::size_t np = contacts.pairs.size();
+  im.candidates.resize(np);
+  im.kept.resize(np);
+  for (std::size_t q = 0; q < np; ++q) {
+    im.candidates[q] = {contacts.pairs[q].a, contacts.pairs[q].b};
+    im.kept[q] = static_cast<int>(q);
+  }
+  im.todo = moved;
+  for (int q : moved) im.kept[static_cast<std::size_t>(q)] = -1;
+  narrow_phase_and_patches(b, contacts, times);
+  for (int k : im.todo)
+    if (!im.found[static_cast<std::size_t>(k)]) return detect(b, contacts, false, laws);  // a pair has left
+  std::swap(im.previous, contacts);
+  sample(b, contacts, false, laws, false, times);
+  return times;
+}
+
+// Stages 2 and 3 for the candidates im.todo, in parallel, one slot per
+// candidate; `current` is the set in use (each pair keeps its common plane
+// while it is still nearly the best).
+void ContactDetector::narrow_phase_and_patches(const Blocks& b, const ContactSet& current, DetectionTimes& times) {
+  auto& im = *impl_;
+  const Clock::time_point t1 = Clock::now();
+  const std::size_t nc = im.candidates.size();
+  const int nt = static_cast<int>(im.todo.size());
   const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
   im.hits.resize(nc);
   im.patches.resize(nc);
   im.found.assign(nc, 0);
-#pragma omp parallel for schedule(dynamic, 16) if (nc >= 64) num_threads(threads)
-  for (int k = 0; k < nc; ++k) {
+#pragma omp parallel for schedule(dynamic, 16) if (nt >= 64) num_threads(threads)
+  for (int t = 0; t < nt; ++t) {
+    const int k = im.todo[static_cast<std::size_t>(t)];
     const auto [i, j] = im.candidates[k];
     const PosedBlock pa = posed(b, i), pb = posed(b, j);
     PatchScratch& s = im.scratch[omp_get_thread_num()];
@@ -262,14 +360,13 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
   }
   const Clock::time_point t2 = Clock::now();
 
-  // 3. Patches for the pairs within the margin, in parallel, keeping each
-  // pair's previous common plane while it is still nearly the best.
-#pragma omp parallel for schedule(dynamic, 16) if (nc >= 64) num_threads(threads)
-  for (int k = 0; k < nc; ++k) {
+#pragma omp parallel for schedule(dynamic, 16) if (nt >= 64) num_threads(threads)
+  for (int t = 0; t < nt; ++t) {
+    const int k = im.todo[static_cast<std::size_t>(t)];
     if (!im.found[k]) continue;
     const auto [i, j] = im.candidates[k];
     int prev_side = -1, prev_face = -1;
-    if (const ContactPair* op = find_pair(old, i, j)) {
+    if (const ContactPair* op = find_pair(current, i, j)) {
       prev_side = op->ref_block == i ? 0 : 1;
       prev_face = op->ref_face;
     }
@@ -277,10 +374,25 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
                               im.scratch[omp_get_thread_num()], pair_joints_);
   }
   const Clock::time_point t3 = Clock::now();
+  times.narrow_phase = seconds(t1, t2);
+  times.patch = seconds(t2, t3);
+}
+
+// Stages 4 and 5: the new set from the candidates' patches (and, pair by
+// pair, the pairs taken over whole), the history carried from im.previous.
+// `scene`: a scene-wide detection (it counts, and the scene's test measures
+// travels from here on).
+void ContactDetector::sample(const Blocks& b, ContactSet& contacts, bool bond_new, const JointLaws& laws, bool scene,
+                             DetectionTimes& times) {
+  auto& im = *impl_;
+  const Clock::time_point t3 = Clock::now();
+  const ContactSet& old = im.previous;
+  const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
 
   // 4. Subcontacts in candidate order (sorted by block pair), with the
   // history of the detection before, carried by position on the joint.
-  build_subcontacts(b, im.candidates, im.patches, im.found, bond_new, contacts);
+  build_subcontacts(b, im.candidates, im.patches, im.found, bond_new, contacts, &old,
+                    pair_trigger_ ? &im.kept : nullptr);
   if (bond_new) {  // only the joints whose law has a strength start bonded
     for (std::size_t s = 0; s < contacts.sub.size(); ++s)
       if (!laws.between(contacts.sub.ref_block[s], contacts.sub.inc_block[s]).bonds()) contacts.sub.bonded[s] = 0;
@@ -291,48 +403,131 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
     find_joint_cells(b.props.local_shape, b.state, contacts.pairs, contacts.sub, margin_, contacts.joints,
                      im.overlap);
   } else {
-    // How far each block has moved since the previous detection: the
-    // reach of a pair's history (carry_history).
-    im.carry.moved.resize(static_cast<std::size_t>(b.count));
-    im.carry.turned.resize(static_cast<std::size_t>(b.count));
-    for (int i = 0; i < b.count; ++i) {
-      im.carry.moved[i] = b.state.position[i] - im.detected_position[i];
-      im.carry.turned[i] = turn_chord(b, im.detected_orientation[i], i);
+    if (pair_trigger_) {
+      // Each pair's reach is its own blocks' motion since it was sampled.
+      take_pair_poses(b, old);
+    } else {
+      // How far each block has moved since the previous detection: the
+      // reach of a pair's history (carry_history).
+      im.carry.moved.resize(static_cast<std::size_t>(b.count));
+      im.carry.turned.resize(static_cast<std::size_t>(b.count));
+      for (int i = 0; i < b.count; ++i) {
+        im.carry.moved[i] = b.state.position[i] - im.detected_position[i];
+        im.carry.turned[i] = turn_chord(b, im.detected_orientation[i], i);
+      }
     }
     carry_history(b, old, contacts, laws, im.carry, threads);
     // Re-sampling may lower a pair's normal strain at this pose but not
     // raise it (joint_law.hpp); what it changes is the re-sampling's, not
     // motion's, and goes to the ledger.
-    hold_normal_strain(laws, b.state, old, contacts, threads);
-    contacts.resampled_normal_energy += normal_strain_energy_now(laws, b.state, old.sub, threads) -
-                                        normal_strain_energy_now(laws, b.state, contacts.sub, threads);
+    hold_normal_strain(laws, b.state, old, contacts, threads, pair_trigger_ ? &im.carry.kept_from : nullptr);
+    if (!pair_trigger_) {
+      contacts.resampled_normal_energy += normal_strain_energy_now(laws, b.state, old.sub, threads) -
+                                          normal_strain_energy_now(laws, b.state, contacts.sub, threads);
+    } else {  // the same difference over the pairs sampled and the pairs gone (the rest cancel)
+      double change = 0;
+      for (std::size_t q = 0; q < contacts.pairs.size(); ++q) {
+        if (im.carry.kept_from[q] >= 0) continue;
+        const ContactPair& cp = contacts.pairs[q];
+        change -= normal_strain_energy_now(laws, b.state, contacts.sub, cp.first, cp.first + cp.count);
+      }
+      for (std::size_t o = 0; o < old.pairs.size(); ++o) {
+        if (im.old_kept[o]) continue;
+        const ContactPair& op = old.pairs[o];
+        change += normal_strain_energy_now(laws, b.state, old.sub, op.first, op.first + op.count);
+      }
+      contacts.resampled_normal_energy += change;
+    }
   }
-  contacts.detections = old.detections + 1;
+  contacts.detections = old.detections + (scene ? 1 : 0);
   const Clock::time_point t4 = Clock::now();
 
   // 5. Gather lists: per block, its subcontacts in subcontact order.
   build_gather_lists(b.count, contacts, im.count);
 
-  im.detected_position = b.state.position;
-  im.detected_orientation = b.state.orientation;
+  if (scene) {
+    im.detected_position = b.state.position;
+    im.detected_orientation = b.state.orientation;
+  }
   const Clock::time_point t5 = Clock::now();
-  times.broad_phase = seconds(t0, t1);
-  times.narrow_phase = seconds(t1, t2);
-  times.patch = seconds(t2, t3);
   times.subcontacts = seconds(t3, t4);
   times.gather = seconds(t4, t5);
-  return times;
+}
+
+// Pair by pair: per pair of the new set (built in candidate order from the
+// kept and the found candidates), whether it was taken over whole, its
+// reach since it was sampled, and the poses it was sampled at (the kept
+// pairs' own, the others' now).
+void ContactDetector::take_pair_poses(const Blocks& b, const ContactSet& old) {
+  auto& im = *impl_;
+  const auto& st = b.state;
+  const std::size_t nc = im.candidates.size();
+  im.carry.kept_from.clear();
+  im.carry.reach.clear();
+  im.old_kept.assign(old.pairs.size(), 0);
+  im.next_pa.clear();
+  im.next_pb.clear();
+  im.next_qa.clear();
+  im.next_qb.clear();
+  for (std::size_t k = 0; k < nc; ++k) {
+    const int o = im.kept[k];
+    if (o < 0 && !im.found[k]) continue;
+    const auto [i, j] = im.candidates[k];
+    if (o >= 0) {
+      const auto u = static_cast<std::size_t>(o);
+      im.old_kept[u] = 1;
+      im.carry.kept_from.push_back(o);
+      im.carry.reach.push_back(0.0);
+      im.next_pa.push_back(im.pose_pa[u]);
+      im.next_pb.push_back(im.pose_pb[u]);
+      im.next_qa.push_back(im.pose_qa[u]);
+      im.next_qb.push_back(im.pose_qb[u]);
+      continue;
+    }
+    double reach = 0;
+    if (const ContactPair* op = find_pair(old, i, j)) {
+      const auto u = static_cast<std::size_t>(op - old.pairs.data());
+      reach = pair_travel(b, i, j, im.pose_pa[u], im.pose_qa[u], im.pose_pb[u], im.pose_qb[u], 0.0);
+    }
+    im.carry.kept_from.push_back(-1);
+    im.carry.reach.push_back(reach);
+    im.next_pa.push_back(st.position[i]);
+    im.next_pb.push_back(st.position[j]);
+    im.next_qa.push_back(st.orientation[i]);
+    im.next_qb.push_back(st.orientation[j]);
+    ++pairs_resampled_;
+  }
+  std::swap(im.pose_pa, im.next_pa);
+  std::swap(im.pose_pb, im.next_pb);
+  std::swap(im.pose_qa, im.next_qa);
+  std::swap(im.pose_qb, im.next_qb);
 }
 
 void ContactDetector::save(ByteWriter& w) const {
-  w.put(impl_->detected_position);
-  w.put(impl_->detected_orientation);
+  const auto& im = *impl_;
+  w.put(im.detected_position);
+  w.put(im.detected_orientation);
+  if (!pair_trigger_) return;
+  w.put(im.pose_pa);
+  w.put(im.pose_pb);
+  w.put(im.pose_qa);
+  w.put(im.pose_qb);
+  w.put(static_cast<std::int64_t>(pairs_resampled_));
 }
 
-void ContactDetector::load(ByteReader& r) {
-  const auto n = static_cast<std::size_t>(impl_->blocks);
-  r.get_sized(impl_->detected_position, n, "detector.detected_position");
-  r.get_sized(impl_->detected_orientation, n, "detector.detected_orientation");
+void ContactDetector::load(ByteReader& r, std::size_t pairs) {
+  auto& im = *impl_;
+  const auto n = static_cast<std::size_t>(im.blocks);
+  r.get_sized(im.detected_position, n, "detector.detected_position");
+  r.get_sized(im.detected_orientation, n, "detector.detected_orientation");
+  if (!pair_trigger_) return;
+  r.get_sized(im.pose_pa, pairs, "detector.pair_pose_a");
+  r.get_sized(im.pose_pb, pairs, "detector.pair_pose_b");
+  r.get_sized(im.pose_qa, pairs, "detector.pair_orientation_a");
+  r.get_sized(im.pose_qb, pairs, "detector.pair_orientation_b");
+  std::int64_t resampled = 0;
+  r.get(resampled);
+  pairs_resampled_ = resampled;
 }
 
 }  // namespace polydem

@@ -25,7 +25,17 @@
 // that lag; under the subcontact model it is by default 0.25 % of the
 // smallest free block, far below half the margin (docs/contact.md, "The
 // detection travel"), under the overlap model (nothing sampled) half the
-// margin. Steps 2
+// margin.
+//
+// Triggered pair by pair (simulation.detection_trigger = "pair"), the lag
+// is bounded for each pair by its own blocks' motion: a pair is re-sampled
+// alone (resample()) once its two blocks have moved relative to each other
+// by the detection travel since it was sampled, and the whole scene is
+// searched again (detect()) only for new pairs, once any two blocks may
+// have closed by half the margin; pairs that have not moved are then taken
+// over whole. The travel can be made small at the cost of the pairs that
+// move, not of the scene (docs/contact.md, "Detection pair by pair").
+// Steps 2
 // and 3 run in parallel, one slot per candidate; step 4's history carry and
 // held normal strain run pair by pair in parallel (a pair writes only its
 // own subcontacts), and its energy sums take their terms in subcontact
@@ -99,6 +109,15 @@ class ContactDetector {
   // hands each joint's state on by its pair, and the subcontacts only
   // sample the joint's opening.
   void set_pair_joints(bool on) { pair_joints_ = on; }
+  // Pair by pair (see above): the scene's test then asks for half the
+  // margin, and moved_pairs() for each pair's travel. Set before the first
+  // detect().
+  void set_pair_trigger(bool on) { pair_trigger_ = on; }
+  bool pair_trigger() const { return pair_trigger_; }
+  // What the scene-wide test compares the two largest travels with: the
+  // detection travel, or half the margin when pairs are re-sampled on their
+  // own.
+  double scene_threshold() const { return pair_trigger_ ? 0.5 * margin_ : travel_; }
   // True when some pair may have moved by more than the detection travel since
   // detect(), counting the coming step of length dt at the current speeds.
   // `bound_first`: a cheap bound settles the clear cases (the same answer;
@@ -120,7 +139,25 @@ class ContactDetector {
   // (`resampled_normal_energy`), so that a detection leaves the ledger's
   // balance as it was. New subcontacts start bonded when `bond_new` is set
   // (cohesion/tension at t = 0). Returns the time spent in each stage.
+  // Pair by pair, detect() takes over whole (build_subcontacts) the pairs
+  // whose blocks have moved relative to each other by less than the travel
+  // since they were sampled.
   DetectionTimes detect(const Blocks& blocks, ContactSet& contacts, bool bond_new, const JointLaws& laws);
+  // Pair by pair only: the pairs of `contacts` whose two blocks may have
+  // moved relative to each other by more than the detection travel since
+  // the pair was sampled, counting the coming step of length dt, into
+  // `moved` (ascending). Returns whether there are any.
+  bool moved_pairs(const Blocks& blocks, const ContactSet& contacts, double dt, std::vector<int>& moved) const;
+  // Re-samples the pairs `moved` of `contacts` (ascending), each as detect()
+  // would, carrying its history by position, and takes the others over
+  // whole. A moved pair no longer within the margin would leave the scene's
+  // guarantee for new pairs behind (it could close again before the next
+  // scene-wide search): then the whole scene is searched (detect()).
+  DetectionTimes resample(const Blocks& blocks, ContactSet& contacts, const std::vector<int>& moved,
+                          const JointLaws& laws);
+  // Pair re-samplings so far (resample()'s pairs, and detect()'s pairs that
+  // were not taken over whole).
+  long long pairs_resampled() const { return pairs_resampled_; }
 
   // Checkpoints: the poses at the last detection (they decide when the next
   // one runs). Nothing else carries over: the contacts of the detection
@@ -128,12 +165,20 @@ class ContactDetector {
   // current set in as the history and rebuilds every array it hands back,
   // and the FCL tree is refitted to exact boxes at each detection and its
   // pairs are sorted, so a tree rebuilt after a restart finds the same ones.
+  // Pair by pair, also each pair's poses when it was sampled (`pairs`: the
+  // checkpoint's contact pairs, loaded before).
   void save(ByteWriter& w) const;
-  void load(ByteReader& r);
+  void load(ByteReader& r, std::size_t pairs = 0);
 
  private:
   bool travels_clearly_below(const Blocks& blocks, const Vec3& drift, bool any_fixed, double dt,
                              double threshold) const;
+  // Stages 2-5 for im.candidates (kept[k] ≥ 0: the previous set's pair
+  // taken over whole); `old` is the previous set, swapped out of `contacts`.
+  void narrow_phase_and_patches(const Blocks& blocks, const ContactSet& current, DetectionTimes& times);
+  void sample(const Blocks& blocks, ContactSet& contacts, bool bond_new, const JointLaws& laws, bool scene,
+              DetectionTimes& times);
+  void take_pair_poses(const Blocks& blocks, const ContactSet& old);
 
   struct Impl;
   std::unique_ptr<Impl> impl_;
@@ -141,6 +186,8 @@ class ContactDetector {
   double travel_;
   int threads_ = 0;
   bool pair_joints_ = false;
+  bool pair_trigger_ = false;
+  long long pairs_resampled_ = 0;
 };
 
 }  // namespace polydem

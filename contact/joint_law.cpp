@@ -240,7 +240,11 @@ void apply_dashpot_rest(const JointLaws& laws, double theta, const BlockState& s
 }
 
 void settle_damping_work(const BlockState& st, Subcontacts& sub, double dt) {
-  for (std::size_t s = 0; s < sub.size(); ++s) {
+  settle_damping_work(st, sub, dt, 0, static_cast<int>(sub.size()));
+}
+
+void settle_damping_work(const BlockState& st, Subcontacts& sub, double dt, int first, int last) {
+  for (int s = first; s < last; ++s) {
     const Vec3 f = sub.damping_force[s];
     if (f.isZero(0.0)) continue;
     const int r = sub.ref_block[s];
@@ -288,8 +292,19 @@ double normal_strain_energy_now(const JointLaws& laws, const BlockState& st, con
   return e;
 }
 
+double normal_strain_energy_now(const JointLaws& laws, const BlockState& st, const Subcontacts& sub, int first,
+                                int last) {
+  double e = 0;
+  for (int s = first; s < last; ++s) {
+    const double u = overlap_now(st, sub, static_cast<std::size_t>(s));
+    const JointLaw& law = laws.between(sub.ref_block[s], sub.inc_block[s]);
+    if (u > 0 || sub.bonded[s]) e += 0.5 * law.kn * sub.area[s] * u * u;
+  }
+  return e;
+}
+
 void hold_normal_strain(const JointLaws& laws, const BlockState& st, const ContactSet& old, ContactSet& contacts,
-                        int threads) {
+                        int threads, const std::vector<int>* kept) {
   Subcontacts& sc = contacts.sub;
   const Subcontacts& os = old.sub;
   // Pair by pair, in parallel: a pair writes only its own subcontacts.
@@ -297,7 +312,7 @@ void hold_normal_strain(const JointLaws& laws, const BlockState& st, const Conta
 #pragma omp parallel for schedule(dynamic, 32) if (threads > 1 && n_pairs >= 256) num_threads(threads)
   for (std::ptrdiff_t q = 0; q < n_pairs; ++q) {
     const ContactPair& cp = contacts.pairs[static_cast<std::size_t>(q)];
-    if (cp.count == 0) continue;
+    if (cp.count == 0 || (kept && (*kept)[static_cast<std::size_t>(q)] >= 0)) continue;
     // A pair found for the first time after the first detection held nothing
     // before: found already overlapping (a corner that the clip kept outside
     // the reference face until it was in), it starts at zero force.
@@ -369,8 +384,12 @@ double joint_strain_energy(const JointLaws& laws, const Subcontacts& sub) {
 }
 
 double shear_strain_energy(const JointLaws& laws, const Subcontacts& sub) {
+  return shear_strain_energy(laws, sub, 0, static_cast<int>(sub.size()));
+}
+
+double shear_strain_energy(const JointLaws& laws, const Subcontacts& sub, int first, int last) {
   double e = 0;
-  for (std::size_t s = 0; s < sub.size(); ++s) {
+  for (int s = first; s < last; ++s) {
     const double ks = laws.between(sub.ref_block[s], sub.inc_block[s]).ks;
     if (ks > 0 && sub.area[s] > 0) e += 0.5 * sub.shear_force[s].squaredNorm() / (ks * sub.area[s]);
   }

@@ -164,6 +164,11 @@ void settle_damping_work(const BlockState& state, Subcontacts& sub, double dt);
 // point), J. Detection compares it before and after it re-samples the joints.
 double normal_strain_energy_now(const JointLaws& laws, const BlockState& state, const Subcontacts& sub,
                                 int threads = 1);
+// The same over subcontacts [first, last), serial.
+double normal_strain_energy_now(const JointLaws& laws, const BlockState& state, const Subcontacts& sub, int first,
+                                int last);
+// The dashpot work still owed by subcontacts [first, last) (settle_damping_work).
+void settle_damping_work(const BlockState& state, Subcontacts& sub, double dt, int first, int last);
 
 // Re-sampling must not make normal strain. A detection re-clips every joint
 // at the pose it finds: the points and tributary areas of a pair's new
@@ -189,13 +194,17 @@ double normal_strain_energy_now(const JointLaws& laws, const BlockState& state, 
 // reference face until it was in: 1.1 and 2.5 kJ in the 1.0 g run), it
 // starts at zero force. Only the first detection's pairs (t = 0, the
 // structure as built) start from the geometry.
+// `kept` (per pair of `contacts`, when given): ≥ 0 for the pairs taken over
+// whole from `old`, left alone.
 void hold_normal_strain(const JointLaws& laws, const BlockState& state, const ContactSet& old, ContactSet& contacts,
-                        int threads = 1);
+                        int threads = 1, const std::vector<int>* kept = nullptr);
 
 // Elastic strain energy stored in the joints, J.
 double joint_strain_energy(const JointLaws& laws, const Subcontacts& sub);
 
 // Shear strain energy Σ |F_s|²/(2·ks·A) with each subcontact's own ks, J.
 double shear_strain_energy(const JointLaws& laws, const Subcontacts& sub);
+// The same over subcontacts [first, last).
+double shear_strain_energy(const JointLaws& laws, const Subcontacts& sub, int first, int last);
 
 }  // namespace polydem

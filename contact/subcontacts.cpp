@@ -159,18 +159,87 @@ std::uint64_t subcontact_key(int ref_side, int ref_face, int inc_face, std::uint
          (static_cast<std::uint64_t>(inc_face & 0xFFFF) << 32) | feature;
 }
 
+namespace {
+
+// Pairs [o1, o2) of `from` appended whole to `to` as its pairs from
+// `index` on, their subcontacts from `first` on (to.sub already sized):
+// one contiguous copy per array.
+template <class T>
+void copy_range(const std::vector<T>& from, std::size_t begin, std::size_t end, std::vector<T>& to, std::size_t at) {
+  std::copy(from.begin() + static_cast<std::ptrdiff_t>(begin), from.begin() + static_cast<std::ptrdiff_t>(end),
+            to.begin() + static_cast<std::ptrdiff_t>(at));
+}
+
+void copy_range(const Vec3Array& from, std::size_t begin, std::size_t end, Vec3Array& to, std::size_t at) {
+  copy_range(from.x, begin, end, to.x, at);
+  copy_range(from.y, begin, end, to.y, at);
+  copy_range(from.z, begin, end, to.z, at);
+}
+
+void copy_pairs(const ContactSet& from, int o1, int o2, int index, int first, ContactSet& to) {
+  const Subcontacts& os = from.sub;
+  Subcontacts& sc = to.sub;
+  const auto begin = static_cast<std::size_t>(from.pairs[static_cast<std::size_t>(o1)].first);
+  const ContactPair& last = from.pairs[static_cast<std::size_t>(o2 - 1)];
+  const auto end = static_cast<std::size_t>(last.first + last.count);
+  const auto at = static_cast<std::size_t>(first);
+  copy_range(os.ref_block, begin, end, sc.ref_block, at);
+  copy_range(os.inc_block, begin, end, sc.inc_block, at);
+  copy_range(os.key, begin, end, sc.key, at);
+  copy_range(os.ref_normal_local, begin, end, sc.ref_normal_local, at);
+  copy_range(os.ref_offset_local, begin, end, sc.ref_offset_local, at);
+  copy_range(os.inc_point_local, begin, end, sc.inc_point_local, at);
+  copy_range(os.area, begin, end, sc.area, at);
+  copy_range(os.crush, begin, end, sc.crush, at);
+  copy_range(os.shear_force, begin, end, sc.shear_force, at);
+  copy_range(os.bonded, begin, end, sc.bonded, at);
+  copy_range(os.force, begin, end, sc.force, at);
+  copy_range(os.point, begin, end, sc.point, at);
+  copy_range(os.overlap, begin, end, sc.overlap, at);
+  copy_range(os.normal_force, begin, end, sc.normal_force, at);
+  copy_range(os.slip_energy, begin, end, sc.slip_energy, at);
+  copy_range(os.damping_energy, begin, end, sc.damping_energy, at);
+  copy_range(os.damping_force, begin, end, sc.damping_force, at);
+  const int shift = first - static_cast<int>(begin);
+  for (int o = o1; o < o2; ++o) {
+    ContactPair cp = from.pairs[static_cast<std::size_t>(o)];
+    const int q = index + (o - o1);
+    for (int s = cp.first; s < cp.first + cp.count; ++s) sc.pair[static_cast<std::size_t>(s + shift)] = q;
+    cp.first += shift;
+    to.pairs.push_back(cp);
+  }
+}
+
+}  // namespace
+
 void build_subcontacts(const Blocks& b, const std::vector<std::pair<int, int>>& candidates,
                        const std::vector<Patch>& patches, const std::vector<char>& found, bool bond_new,
-                       ContactSet& contacts) {
+                       ContactSet& contacts, const ContactSet* previous, const std::vector<int>* kept_from) {
   const std::size_t nc = candidates.size();
+  auto kept = [&](std::size_t k) { return kept_from && (*kept_from)[k] >= 0; };
   contacts.pairs.clear();
   std::size_t total = 0;
-  for (std::size_t k = 0; k < nc; ++k)
-    if (found[k]) total += patches[k].points.size();
+  for (std::size_t k = 0; k < nc; ++k) {
+    if (kept(k))
+      total += static_cast<std::size_t>(previous->pairs[static_cast<std::size_t>((*kept_from)[k])].count);
+    else if (found[k])
+      total += patches[k].points.size();
+  }
   Subcontacts& sc = contacts.sub;
   sc.resize(total);
   std::size_t s = 0;
   for (std::size_t k = 0; k < nc; ++k) {
+    if (kept(k)) {  // a run of pairs that follow each other in `previous` too, copied at once
+      const int o1 = (*kept_from)[k];
+      std::size_t k2 = k + 1;
+      while (k2 < nc && kept(k2) && (*kept_from)[k2] == o1 + static_cast<int>(k2 - k)) ++k2;
+      const int o2 = o1 + static_cast<int>(k2 - k);
+      const std::size_t n0 = contacts.pairs.size();
+      copy_pairs(*previous, o1, o2, static_cast<int>(n0), static_cast<int>(s), contacts);
+      for (std::size_t q = n0; q < contacts.pairs.size(); ++q) s += static_cast<std::size_t>(contacts.pairs[q].count);
+      k = k2 - 1;
+      continue;
+    }
     if (!found[k]) continue;
     const auto [i, j] = candidates[k];
     const Patch& patch = patches[k];
@@ -345,11 +414,17 @@ void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& cont
   scratch.old_point.resize(n_old);
   scratch.old_stress.resize(n_old);
   const bool parallel = threads > 1 && contacts.pairs.size() >= 256;
-#pragma omp parallel for schedule(static) if (parallel) num_threads(threads)
-  for (std::size_t o = 0; o < n_old; ++o) {
+  // Pair by pair, most pairs are taken over whole: only the pairs sampled
+  // read their previous points, each its own.
+  const bool by_pair = !scratch.kept_from.empty();
+  auto old_sample = [&](std::size_t o) {
     const int c = os.inc_block[o];
     scratch.old_point[o] = st.position[c] + st.rotation[c] * os.inc_point_local[o];
     scratch.old_stress[o] = os.area[o] > 0 ? Vec3(os.shear_force[o] / os.area[o]) : Vec3(Vec3::Zero());
+  };
+  if (!by_pair) {
+#pragma omp parallel for schedule(static) if (parallel) num_threads(threads)
+    for (std::size_t o = 0; o < n_old; ++o) old_sample(o);
   }
   scratch.source.assign(n_new, -1);
   scratch.dissipation_taken.assign(n_old, 0);
@@ -361,8 +436,18 @@ void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& cont
 #pragma omp parallel for schedule(dynamic, 32) if (parallel) num_threads(threads)
   for (std::ptrdiff_t q = 0; q < n_pairs; ++q) {
     const ContactPair& cp = contacts.pairs[static_cast<std::size_t>(q)];
+    if (by_pair && scratch.kept_from[static_cast<std::size_t>(q)] >= 0) {  // taken over whole
+      const ContactPair& kp = old.pairs[static_cast<std::size_t>(scratch.kept_from[static_cast<std::size_t>(q)])];
+      for (int k = 0; k < cp.count; ++k) {
+        scratch.source[static_cast<std::size_t>(cp.first + k)] = kp.first + k;
+        scratch.dissipation_taken[static_cast<std::size_t>(kp.first + k)] = 1;
+      }
+      continue;
+    }
     const ContactPair* op = find_pair(old, cp.a, cp.b);
     if (!op || op->count == 0 || cp.count == 0) continue;
+    if (by_pair)  // the previous points of this pair only
+      for (int o = op->first; o < op->first + op->count; ++o) old_sample(static_cast<std::size_t>(o));
     PreviousPatch pp;
     pp.first = op->first;
     pp.count = op->count;
@@ -375,7 +460,8 @@ void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& cont
     double radius2 = 0;
     for (int o = op->first; o < op->first + op->count; ++o)
       radius2 = std::max(radius2, (scratch.old_point[o] - pp.centroid).squaredNorm());
-    pp.tolerance = pair_reach(scratch, cp.a, cp.b);
+    pp.tolerance = scratch.reach.empty() ? pair_reach(scratch, cp.a, cp.b)
+                                         : (1.0 + 1e-9) * scratch.reach[static_cast<std::size_t>(q)];
     const double tiny_area = 1e-12 * radius2;
     const Vec3 n = st.rotation[cp.ref_block] * sc.ref_normal_local[cp.first];
     // The previous forces were on the previous incident block; if the
@@ -425,8 +511,30 @@ void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& cont
     contacts.retired_slip_energy += os.slip_energy[o];
     contacts.retired_damping_energy += os.damping_energy[o];
   }
-  contacts.dropped_shear_energy =
-      old.dropped_shear_energy + (shear_strain_energy(laws, os) - shear_strain_energy(laws, sc));
+  if (!by_pair) {
+    contacts.dropped_shear_energy =
+        old.dropped_shear_energy + (shear_strain_energy(laws, os) - shear_strain_energy(laws, sc));
+  } else {  // the same difference, without the pairs taken over whole (theirs cancel)
+    double dropped = 0;
+    scratch.old_taken.assign(old.pairs.size(), 0);
+    for (std::size_t q = 0; q < contacts.pairs.size(); ++q) {
+      const ContactPair& cp = contacts.pairs[q];
+      const int kept = scratch.kept_from[q];
+      if (kept >= 0) {
+        scratch.old_taken[static_cast<std::size_t>(kept)] = 1;
+        continue;
+      }
+      if (const ContactPair* op = find_pair(old, cp.a, cp.b)) {
+        scratch.old_taken[static_cast<std::size_t>(op - old.pairs.data())] = 1;
+        dropped += shear_strain_energy(laws, os, op->first, op->first + op->count);
+      }
+      dropped -= shear_strain_energy(laws, sc, cp.first, cp.first + cp.count);
+    }
+    for (std::size_t o = 0; o < old.pairs.size(); ++o)  // pairs gone
+      if (!scratch.old_taken[o])
+        dropped += shear_strain_energy(laws, os, old.pairs[o].first, old.pairs[o].first + old.pairs[o].count);
+    contacts.dropped_shear_energy = old.dropped_shear_energy + dropped;
+  }
   contacts.resampled_normal_energy = old.resampled_normal_energy;
 }
 

@@ -150,9 +150,14 @@ std::uint64_t subcontact_key(int ref_side, int ref_face, int inc_face, std::uint
 // incident block's frame) at the current state and starts without history:
 // no shear force, no dissipation, bonded if `bond_new`. The gather lists,
 // the retired dissipation and the detection count are left alone.
+// `kept_from` (with `previous`): per candidate, the index of a pair of
+// `previous` taken over whole instead of its patch (its subcontacts, their
+// body-fixed geometry and history, bit for bit), or −1 to build from the
+// patch: a pair that has not moved since it was sampled is not re-sampled.
 void build_subcontacts(const Blocks& blocks, const std::vector<std::pair<int, int>>& candidates,
                        const std::vector<Patch>& patches, const std::vector<char>& found, bool bond_new,
-                       ContactSet& out);
+                       ContactSet& out, const ContactSet* previous = nullptr,
+                       const std::vector<int>* kept_from = nullptr);
 
 // Scratch for carry_history, reused across detections (no allocation once
 // warmed up).
@@ -166,6 +171,16 @@ struct CarryScratch {
   // bounding radius (2·|sin(θ/2)|·r). Empty: no block has moved.
   std::vector<Vec3> moved;
   std::vector<double> turned;
+  // Pair by pair (contact/detection.hpp), per pair of the new set: the
+  // previous set's pair it was taken over whole from (`kept_from`, nothing
+  // to carry), or −1; and its own reach (`reach`, in place of the one from
+  // `moved` and `turned`: its blocks' relative motion since the pair was
+  // sampled). The ledger's terms are then taken over the pairs sampled and
+  // the pairs gone only, and `old_taken` marks, per previous pair, whether
+  // a new pair took it on.
+  std::vector<int> kept_from;
+  std::vector<double> reach;
+  std::vector<char> old_taken;
 };
 
 // History carry-over from one detection to the next, by position on the

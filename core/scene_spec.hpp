@@ -46,6 +46,14 @@ enum class DampingScheme { explicit_lagged, split };
 // twist of the joint taken whole.
 enum class JointModel { subcontacts, overlap };
 
+// What re-samples the joints (contact/detection.hpp): `scene`, the whole
+// contact set once any two blocks may have moved relative to each other by
+// the detection travel; `pair`, each pair on its own once its two blocks
+// have moved relative to each other by the travel since the pair was
+// sampled, and the whole scene (for new pairs) once any two blocks may have
+// closed by half the margin.
+enum class DetectionTrigger { scene, pair };
+
 // [simulation]
 struct SimulationSpec {
   double end_time = 1.0;          // s, > 0
@@ -60,6 +68,7 @@ struct SimulationSpec {
   // detections, at most half the margin; 0 = automatic (subcontacts: 0.25 %
   // of the smallest block's size; overlap model: half the margin)
   double detection_travel = 0.0;
+  DetectionTrigger detection_trigger = DetectionTrigger::scene;
   int threads = 0;                // 0 = OpenMP default
   // Let the run drop to one thread while more are slower (a competing
   // process on a core; integrators/thread_governor.hpp). Same bits either way.

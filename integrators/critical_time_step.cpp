@@ -144,8 +144,10 @@ template <class StiffnessOf>
 CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const StiffnessOf& stiffness_of,
                            double beta, double safety_factor, std::vector<double>* per_block = nullptr,
                            double below = 0, int threads = 1, StepBound bound = StepBound::block,
-                           DampingScheme scheme = DampingScheme::explicit_lagged) {
+                           DampingScheme scheme = DampingScheme::explicit_lagged,
+                           const std::vector<int>* only = nullptr) {
   CriticalStep out;
+  const std::vector<int>& free_blocks = only && bound == StepBound::block ? *only : b.free_blocks;
   if (per_block) per_block->assign(static_cast<std::size_t>(b.count), 0.0);
   const auto& sub = contacts.sub;
   const bool joint_bound = bound == StepBound::joint;
@@ -197,7 +199,7 @@ CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const St
   // same bits on any thread count. The calling thread's scratch, reused (no
   // allocation once warmed up), named by reference: inside the region
   // thread_local would name each thread's own.
-  const std::ptrdiff_t n_free = static_cast<std::ptrdiff_t>(b.free_blocks.size());
+  const std::ptrdiff_t n_free = static_cast<std::ptrdiff_t>(free_blocks.size());
   thread_local std::vector<double> scratch;
   std::vector<double>& omega2 = scratch;
   omega2.resize(static_cast<std::size_t>(n_free));
@@ -206,22 +208,24 @@ CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const St
     own_bound.assign(static_cast<std::size_t>(b.count), 0.0);
 #pragma omp parallel for schedule(dynamic, 8) if (parallel) num_threads(std::max(threads, 1))
     for (std::ptrdiff_t j = 0; j < n_free; ++j) {
-      const int i = b.free_blocks[static_cast<std::size_t>(j)];
+      const int i = free_blocks[static_cast<std::size_t>(j)];
       Mat6 K;
       if (stiffness(i, K, false)) own_bound[static_cast<std::size_t>(i)] = omega_squared_bound(b, i, K);
     }
   }
 #pragma omp parallel for schedule(dynamic, 8) if (parallel) num_threads(std::max(threads, 1))
   for (std::ptrdiff_t j = 0; j < n_free; ++j) {
-    const int i = b.free_blocks[static_cast<std::size_t>(j)];
+    const int i = free_blocks[static_cast<std::size_t>(j)];
     Mat6 K;
-    omega2[static_cast<std::size_t>(j)] =
-        stiffness(i, K, joint_bound) && !skipped(i, K) ? block_omega_squared(b, i, K) : -1.0;
+    omega2[static_cast<std::size_t>(j)] = b.props.motion[i] == BlockMotion::free && stiffness(i, K, joint_bound) &&
+                                                  !skipped(i, K)
+                                              ? block_omega_squared(b, i, K)
+                                              : -1.0;
   }
   for (std::ptrdiff_t j = 0; j < n_free; ++j) {
     const double w2 = omega2[static_cast<std::size_t>(j)];
     if (w2 < 0) continue;
-    const int i = b.free_blocks[static_cast<std::size_t>(j)];
+    const int i = free_blocks[static_cast<std::size_t>(j)];
     keep_highest(out, i, w2, factor);
     if (per_block) (*per_block)[i] = std::sqrt(w2);
   }
@@ -233,7 +237,7 @@ CriticalStep from_contacts(const Blocks& b, const ContactSet& contacts, const St
 
 CriticalStep critical_time_step_from_contacts(const Blocks& b, const ContactSet& contacts, const JointLaws& laws,
                                               double beta, double safety_factor, double below, int threads,
-                                              StepBound bound, DampingScheme scheme) {
+                                              StepBound bound, DampingScheme scheme, const std::vector<int>* only) {
   const auto& sub = contacts.sub;
   return from_contacts(
       b, contacts,
@@ -241,7 +245,7 @@ CriticalStep critical_time_step_from_contacts(const Blocks& b, const ContactSet&
         const JointLaw& law = laws.between(sub.ref_block[s], sub.inc_block[s]);
         return std::pair<double, double>{law.kn, law.ks};
       },
-      beta, safety_factor, nullptr, below, threads, bound, scheme);
+      beta, safety_factor, nullptr, below, threads, bound, scheme, only);
 }
 
 namespace {

@@ -96,10 +96,15 @@ std::vector<double> block_frequencies(const Blocks& blocks, const JointLaw& stif
 //
 // Each joint with its own law's kn and ks (JointLaws::between); `beta`: the
 // dashpots' β the step is limited by (the stiffest law's, stiffest_law).
+//
+// `only` (StepBound::block): these blocks alone (ascending; those not free
+// are passed over), the blocks whose joints a re-sampling pair by pair has
+// just changed; the others' were checked when theirs last changed.
 CriticalStep critical_time_step_from_contacts(const Blocks& blocks, const ContactSet& contacts, const JointLaws& laws,
                                               double beta, double safety_factor, double below = 0, int threads = 1,
                                               StepBound bound = StepBound::block,
-                                              DampingScheme scheme = DampingScheme::explicit_lagged);
+                                              DampingScheme scheme = DampingScheme::explicit_lagged,
+                                              const std::vector<int>* only = nullptr);
 
 // Each free block's ω_b on the joints it has now (the subcontacts of the
 // last detection, each law's kn and ks; 0 for blocks without joints). A

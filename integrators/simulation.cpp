@@ -47,6 +47,7 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, JointLaws laws,
   overlap_joints_ = sim.joint_model == JointModel::overlap;
   if (overlap_joints_) overlap_scratch_.resize(static_cast<std::size_t>(std::max(1, omp_get_max_threads())));
   detector_.set_pair_joints(overlap_joints_);
+  detector_.set_pair_trigger(sim.detection_trigger == DetectionTrigger::pair);
   ledger_.start(blocks_.state);
   // The first detection on the governor's threads: one, when it governs
   // (beside a competitor the first region on two threads waits ~15 ms for
@@ -113,19 +114,35 @@ void Simulation::joint_forces(double dt, std::size_t begin, std::size_t end, Cod
 // allow less, the step is lowered for the rest of the run. Leapfrog carries
 // the change exactly (the velocity update spans the mean of the old and new
 // steps).
-DetectionTimes Simulation::detect_contacts() {
-  if (overlap_joints_)
+DetectionTimes Simulation::detect_contacts(const std::vector<int>* moved) {
+  const int detections = contacts_.detections;
+  if (overlap_joints_) {
     settle_pair_damping(blocks_.state, contacts_.pairs, contacts_.joints, clock_.dt);
-  else
+  } else if (moved) {  // pair by pair: the pairs taken over whole keep their dashpots' account
+    moved_blocks_.clear();
+    for (int q : *moved) {
+      const ContactPair& p = contacts_.pairs[static_cast<std::size_t>(q)];
+      settle_damping_work(blocks_.state, contacts_.sub, clock_.dt, p.first, p.first + p.count);
+      moved_blocks_.push_back(p.a);
+      moved_blocks_.push_back(p.b);
+    }
+    std::sort(moved_blocks_.begin(), moved_blocks_.end());
+    moved_blocks_.erase(std::unique(moved_blocks_.begin(), moved_blocks_.end()), moved_blocks_.end());
+  } else {
     settle_damping_work(blocks_.state, contacts_.sub, clock_.dt);
+  }
   const DetectionTimes times =
-      detector_.detect(blocks_, contacts_, bond_initial_ && contacts_.detections == 0, laws_);
+      moved ? detector_.resample(blocks_, contacts_, *moved, laws_)
+            : detector_.detect(blocks_, contacts_, bond_initial_ && contacts_.detections == 0, laws_);
+  // A re-sampling pair by pair changed the joints of its pairs' blocks
+  // alone (unless it became a scene-wide detection).
+  const std::vector<int>* only = moved && contacts_.detections == detections ? &moved_blocks_ : nullptr;
   if (overlap_joints_) pair_gather_.build(contacts_.pairs, blocks_.count, &contacts_.joints.ref_block);
   if (sim_.damping_scheme == DampingScheme::split) rest_.size_for(contacts_, blocks_.count);
   if (!control_.adaptive) return times;
   const CriticalStep c =
       critical_time_step_from_contacts(blocks_, contacts_, laws_, step_law_.beta, sim_.safety_factor, clock_.dt,
-                                       detector_.threads(), sim_.time_step_bound, sim_.damping_scheme);
+                                       detector_.threads(), sim_.time_step_bound, sim_.damping_scheme, only);
   if (c.chosen > 0 && c.chosen < clock_.dt) {
     clock_.dt = c.chosen;
     ++control_.reductions;
@@ -148,6 +165,8 @@ void Simulation::step() {
   double patch = 0;  // 1. detection, where the half-margin test asks for it
   if (!detection_known_unneeded(threads_, clock_.dt) && detector_.needs_detection(blocks_, clock_.dt))
     patch = detect_contacts().patch;
+  else if (detector_.pair_trigger() && detector_.moved_pairs(blocks_, contacts_, clock_.dt, moved_pairs_))
+    patch = detect_contacts(&moved_pairs_).patch;  // pair by pair: the moved pairs alone
   const Clock::time_point t1 = Clock::now();
   const StepLoads loads = step_loads();  // the loads once, before the threads
   if (!loads_.loaded.empty() && !stage_.active) evaluate_point_loads(loads_, blocks_.state, clock_.time);
@@ -351,7 +370,7 @@ void Simulation::load_state(ByteReader& r) {
     find_joint_cells(blocks_.props.local_shape, blocks_.state, contacts_.pairs, contacts_.sub, detector_.margin(),
                      contacts_.joints, overlap_scratch_[0]);
   }
-  detector_.load(r);
+  detector_.load(r, contacts_.pairs.size());
   loads_.load(r, n);
   if (sim_.damping_scheme == DampingScheme::split) {
     rest_.set_step(clock_.dt, step_law_.beta, sim_.safety_factor, blocks_.count);  // θ is the step's

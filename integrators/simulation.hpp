@@ -73,6 +73,7 @@ class Simulation {
   const Blocks& blocks() const { return blocks_; }
   const ContactSet& contacts() const { return contacts_; }
   double detection_travel() const { return detector_.travel(); }
+  long long pairs_resampled() const { return detector_.pairs_resampled(); }
   const GroundMotion& ground_motion() const { return motion_; }
   const JointLaws& joint_laws() const { return laws_; }
   // The stiffest law that can act: its β sets the time step's damping.
@@ -118,7 +119,8 @@ class Simulation {
   bool large_enough_for_threads() const;
 
  private:
-  DetectionTimes detect_contacts();
+  // A scene-wide detection, or (`moved`) the re-sampling of those pairs.
+  DetectionTimes detect_contacts(const std::vector<int>* moved = nullptr);
   void start_half_step_back();
   void joint_forces(double dt, std::size_t begin, std::size_t end, CodePath path, const SplitPart& part, int thread);
   StepLoads step_loads() const;
@@ -155,6 +157,8 @@ class Simulation {
   bool overlap_joints_ = false;
   std::vector<OverlapScratch> overlap_scratch_;
   PairGather pair_gather_;
+  std::vector<int> moved_pairs_;   // pair by pair: the pairs to re-sample (scratch)
+  std::vector<int> moved_blocks_;  // and their blocks
   StepProfile profile_;
 };
 

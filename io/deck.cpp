@@ -46,7 +46,8 @@ using namespace deck_reader;
 constexpr std::string_view kSimulationKeys[] = {
     "end_time",          "time_step",       "safety_factor", "gravity",           "contact_margin",  "detection_travel",
     "threads",           "adaptive_threads", "overlap_tolerance", "settle_velocity", "settle_time",
-    "gravity_rise_time", "time_step_bound", "damping_scheme",    "joint_model"};
+    "gravity_rise_time", "time_step_bound", "damping_scheme",    "joint_model",
+    "detection_trigger"};
 constexpr std::string_view kJointKeys[] = {"normal_stiffness", "shear_stiffness",  "friction_angle",
                                            "cohesion",         "tensile_strength", "damping", "between",
                                            "friction_normal_force"};
@@ -125,6 +126,10 @@ SimulationSpec read_simulation(const Deck& deck) {
   s.gravity = r.vec3("gravity").value_or(s.gravity);
   s.contact_margin = r.number("contact_margin", s.contact_margin, Range::non_negative);
   s.detection_travel = r.number("detection_travel", s.detection_travel, Range::non_negative);
+  s.detection_trigger = r.choice<DetectionTrigger>(
+      "detection_trigger", {{"scene", DetectionTrigger::scene}, {"pair", DetectionTrigger::pair}}, s.detection_trigger);
+  if (s.joint_model == JointModel::overlap && s.detection_trigger == DetectionTrigger::pair)
+    r.fail("detection_trigger", "\"pair\" re-samples subcontacts: it needs joint_model = \"subcontacts\"");
   if (const auto t = r.integer("threads")) {
     if (*t < 0 || *t > 4096) r.fail("threads", "must be in [0, 4096], 0 = OpenMP default (got " + std::to_string(*t) + ")");
     s.threads = static_cast<int>(*t);

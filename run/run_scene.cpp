@@ -188,6 +188,7 @@ void finish_report(RunReport& rep, const Simulation& sim, Recorder& recorder, As
   if (rep.critical.governing_block >= 0) rep.time_step_block = sim.blocks().props.name[rep.critical.governing_block];
   rep.end_time = sim.time();
   rep.detections = sim.contacts().detections;
+  rep.pairs_resampled = sim.pairs_resampled();
   rep.energy = sim.energies();
   rep.energy_start = recorder.first_energy ? rep.energy : recorder.start;
   rep.energy_reference = recorder.reference;

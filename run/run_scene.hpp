@@ -85,6 +85,7 @@ struct RunReport {
   std::string time_step_block;   // the governing block's name ("" if none)
   double margin = 0;
   double detection_travel = 0;  // m, the contacts' re-sampling travel (contact/detection.hpp)
+  long long pairs_resampled = 0;  // pair by pair: the pairs re-sampled (scene-wide detections' too)
   double wall_seconds = 0;
   long subcontact_updates = 0;  // Σ over steps of the number of subcontacts
   // Checkpoints written (output.checkpoint_interval), over the whole run

@@ -255,7 +255,7 @@ def table_convergence():
         elif margin and "margin" not in s.replace("half the margin", "") and "corner" in s:
             # a geometry with its own automatic margin
             name = name.replace("merged corner stones", f"merged corner stones, margin {1000 * float(margin):.2f} mm")
-        if travel and s.startswith("travel x"):
+        if travel and (s.startswith("travel x") or s.startswith("pair trigger, travel x")):
             name = f"{name} ({1000 * float(travel):.2f} mm)"
         return name
 
@@ -263,8 +263,17 @@ def table_convergence():
         v = q.get("numerical energy of slip and damping")
         return f"{float(v):+.2f} %" if v not in (None, "", "-") else "-"
 
+    def effort(q):
+        wall = q.get("wall time, 1 thread")
+        text = f"{float(wall):.0f} s" if wall else "-"
+        if q.get("pairs re-sampled"):
+            text += f' ({q["detections"]} detections, {int(q["pairs re-sampled"]):,} pairs re-sampled)'
+        elif q.get("detections"):
+            text += f' ({int(q["detections"]):,} detections)'
+        return text
+
     header = ["setting", "time step (µs)", "mechanism (g)", "crack", "stones lost", "main job",
-              "numerical (of slip + damping)", "pulse 0.25 g", "pulse 0.35 g", "pulse 0.5 g", "λ onto a window face (g, bracket)"]
+              "main job's run (1 thread)", "numerical (of slip + damping)", "pulse 0.25 g", "pulse 0.35 g", "pulse 0.5 g", "λ onto a window face (g, bracket)"]
     table = []
     for s in settings:
         m = got.get(("main", s))
@@ -272,9 +281,9 @@ def table_convergence():
         if m:
             line += [f'{1e6 * float(m["time step"]):.2f}', m["mechanism acceleration"], crack(m),
                      lost(m), m["status"] + (f' {m["collapse mode"]}' if m["collapse mode"] != "-" else ""),
-                     numerical(m)]
+                     effort(m), numerical(m)]
         else:
-            line += ["not run"] * 6
+            line += ["not run"] * 7
         for case in ("pulse25", "pulse35", "pulse50"):
             q = got.get((case, s))
             line.append(outcome(q) if q else "not run")
@@ -286,7 +295,8 @@ def table_convergence():
             f"\nFrom `benchmarks/convergence.py build/polydem` at {', '.join(commits)}, one run per cell on "
             "1 thread; \"travel half the margin\": the detection travel at its largest, half the contact margin "
             "(`simulation.detection_travel = 1`), where the margin also sets how often the joints are "
-            "re-sampled (λ: five trials from [0.155, 0.205] g, six from [0.105, 0.205] g where λ lies lower, the "
+            "re-sampled; \"pair trigger\": the joints re-sampled pair by pair "
+            "(`simulation.detection_trigger = \"pair\"`), at the travel given (λ: five trials from [0.155, 0.205] g, six from [0.105, 0.205] g where λ lies lower, the "
             "bracket halved to 0.00625 g); the wall times, steps, margins and "
             "energy lines are in benchmarks/results/convergence.csv. The crack: the joints of the initial mesh "
             "whose faces moved apart, open or slid, by more than 2.5 mm (half the damage displacement), from "

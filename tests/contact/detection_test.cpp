@@ -257,5 +257,158 @@ TEST(ContactDetector, ShearStressIsContinuousAcrossReDetectionWhileStuck) {
   EXPECT_NEAR(cs.dropped_shear_energy, dropped_expected, 1e-9 * dropped_expected);
 }
 
+// Pair by pair (simulation.detection_trigger = "pair"): two cubes resting on
+// one base, 3 m apart, travel 2 mm, margin 20 mm.
+Blocks two_resting_cubes() {
+  return build_blocks({block_spec("base", make_box(Vec3(6, 3, 1), Vec3(0, 0, -0.5)), BlockMotion::fixed),
+                       block_spec("left", make_box(Vec3(1, 1, 1), Vec3(-1.5, 0, 0.5)), BlockMotion::free),
+                       block_spec("right", make_box(Vec3(1, 1, 1), Vec3(1.5, 0, 0.5)), BlockMotion::free)});
+}
+
+// The subcontacts of pair q, every array, as bytes: what "taken over whole"
+// must leave bit for bit.
+std::string pair_bytes(const ContactSet& c, std::size_t q) {
+  ContactSet one;
+  const ContactPair& p = c.pairs[q];
+  one.pairs.push_back(p);
+  one.pairs.back().first = 0;
+  one.sub.resize(static_cast<std::size_t>(p.count));
+  for (int k = 0; k < p.count; ++k) {
+    const std::size_t s = static_cast<std::size_t>(p.first + k), d = static_cast<std::size_t>(k);
+    one.sub.pair[d] = 0;
+    one.sub.ref_block[d] = c.sub.ref_block[s];
+    one.sub.inc_block[d] = c.sub.inc_block[s];
+    one.sub.key[d] = c.sub.key[s];
+    one.sub.ref_normal_local[d] = c.sub.ref_normal_local[s];
+    one.sub.ref_offset_local[d] = c.sub.ref_offset_local[s];
+    one.sub.inc_point_local.set(d, c.sub.inc_point_local[s]);
+    one.sub.area[d] = c.sub.area[s];
+    one.sub.crush[d] = c.sub.crush[s];
+    one.sub.shear_force.set(d, c.sub.shear_force[s]);
+    one.sub.bonded[d] = c.sub.bonded[s];
+    one.sub.slip_energy[d] = c.sub.slip_energy[s];
+    one.sub.damping_energy[d] = c.sub.damping_energy[s];
+  }
+  std::string out;
+  ByteWriter w(out);
+  w.put(one.pairs[0].ref_block);
+  w.put(one.pairs[0].ref_face);
+  w.put(one.pairs[0].patch_area);
+  w.put(one.sub.ref_normal_local);
+  w.put(one.sub.ref_offset_local);
+  w.put(one.sub.inc_point_local);
+  w.put(one.sub.area);
+  w.put(one.sub.crush);
+  w.put(one.sub.shear_force);
+  w.put(one.sub.slip_energy);
+  return out;
+}
+
+// The cube that moved by more than the travel is re-sampled, as a
+// scene-wide detection would re-sample it (its shear carried by position);
+// the one that did not is taken over bit for bit; no scene-wide detection
+// runs while no two blocks may have closed by half the margin.
+TEST(PairTrigger, OnlyTheMovedPairIsResampled) {
+  const JointLaws laws = uniform_joint_laws(kLaw, 3);
+  Blocks b = two_resting_cubes(), s = two_resting_cubes();
+  ContactDetector pairwise(b, kMargin, 0.002), scene(s, kMargin, 0.002);
+  pairwise.set_pair_trigger(true);
+  EXPECT_DOUBLE_EQ(pairwise.scene_threshold(), 0.5 * kMargin);
+  EXPECT_DOUBLE_EQ(scene.scene_threshold(), 0.002);
+  ContactSet cp, cs;
+  pairwise.detect(b, cp, false, laws);
+  scene.detect(s, cs, false, laws);
+  ASSERT_EQ(cp.pairs.size(), 2u);
+  EXPECT_EQ(pairwise.pairs_resampled(), 2);
+  // Shear on both joints, the same in both sets.
+  for (std::size_t k = 0; k < cp.sub.size(); ++k) {
+    const Vec3 f(10.0 + k, -5.0, 0.0);
+    cp.sub.shear_force.set(k, f);
+    cs.sub.shear_force.set(k, f);
+    cp.sub.slip_energy[k] = cs.sub.slip_energy[k] = 0.25 * k;
+  }
+  const std::string right_before = pair_bytes(cp, 1);
+  std::vector<int> moved;
+  EXPECT_FALSE(pairwise.moved_pairs(b, cp, 0.0, moved));
+
+  // The left cube slides 5 mm and turns a little: more than the travel,
+  // less than half the margin.
+  translate(b, 1, Vec3(0.005, 0, 0));
+  turn(b, 1, 1e-3, Vec3::UnitZ());
+  translate(s, 1, Vec3(0.005, 0, 0));
+  turn(s, 1, 1e-3, Vec3::UnitZ());
+  EXPECT_FALSE(pairwise.needs_detection(b));
+  EXPECT_TRUE(scene.needs_detection(s));
+  ASSERT_TRUE(pairwise.moved_pairs(b, cp, 0.0, moved));
+  ASSERT_EQ(moved, std::vector<int>{0});
+  // The coming step counts: the right cube about to move by the travel.
+  b.state.velocity[2] = Vec3(1.0, 0, 0);
+  std::vector<int> ahead;
+  pairwise.moved_pairs(b, cp, 0.0021, ahead);
+  EXPECT_EQ(ahead, (std::vector<int>{0, 1}));
+  b.state.velocity[2] = Vec3::Zero();
+
+  pairwise.resample(b, cp, moved, laws);
+  scene.detect(s, cs, false, laws);
+  EXPECT_EQ(cp.detections, 1) << "a re-sampling is not a scene-wide detection";
+  EXPECT_EQ(pairwise.pairs_resampled(), 3);
+  ASSERT_EQ(cp.pairs.size(), 2u);
+  EXPECT_EQ(pair_bytes(cp, 1), right_before) << "the unmoved pair, taken over whole";
+  // The moved pair as the scene-wide detection samples it.
+  const ContactPair &a = cp.pairs[0], &c = cs.pairs[0];
+  ASSERT_EQ(a.count, c.count);
+  EXPECT_NEAR(a.patch_area, c.patch_area, 1e-12);
+  for (int k = 0; k < a.count; ++k) {
+    const std::size_t i = static_cast<std::size_t>(a.first + k), j = static_cast<std::size_t>(c.first + k);
+    EXPECT_NEAR((cp.sub.point[i] - cs.sub.point[j]).norm(), 0.0, 1e-12) << k;
+    EXPECT_NEAR(cp.sub.area[i], cs.sub.area[j], 1e-12) << k;
+    EXPECT_NEAR((cp.sub.shear_force[i] - cs.sub.shear_force[j]).norm(), 0.0, 1e-9) << k;
+  }
+  // Its shear carried, and the ledger's books as the scene's: dissipation
+  // handed on, nothing retired twice.
+  EXPECT_GT(cp.sub.shear_force[static_cast<std::size_t>(a.first)].norm(), 1.0);
+  double slip_p = cp.retired_slip_energy, slip_s = cs.retired_slip_energy;
+  for (std::size_t k = 0; k < cp.sub.size(); ++k) slip_p += cp.sub.slip_energy[k];
+  for (std::size_t k = 0; k < cs.sub.size(); ++k) slip_s += cs.sub.slip_energy[k];
+  EXPECT_NEAR(slip_p, slip_s, 1e-12);
+  EXPECT_FALSE(pairwise.moved_pairs(b, cp, 0.0, moved)) << "sampled again: its travel starts afresh";
+  // Gather lists cover every subcontact twice.
+  EXPECT_EQ(static_cast<std::size_t>(cp.gather_offset.back()), 2 * cp.sub.size());
+}
+
+// A moved pair no longer within the margin: the whole scene is searched
+// (the guarantee for new pairs starts again from here).
+TEST(PairTrigger, APairThatLeftTheMarginMakesItASceneDetection) {
+  const JointLaws laws = uniform_joint_laws(kLaw, 3);
+  Blocks b = two_resting_cubes();
+  ContactDetector det(b, kMargin, 0.002);
+  det.set_pair_trigger(true);
+  ContactSet c;
+  det.detect(b, c, false, laws);
+  translate(b, 2, Vec3(0, 0, 0.05));  // lifted clear of the base
+  std::vector<int> moved;
+  ASSERT_TRUE(det.moved_pairs(b, c, 0.0, moved));
+  EXPECT_EQ(moved, std::vector<int>{1});
+  det.resample(b, c, moved, laws);
+  EXPECT_EQ(c.detections, 2);
+  ASSERT_EQ(c.pairs.size(), 1u);
+  EXPECT_EQ(c.pairs[0].b, 1);
+  // A pair's poses go into checkpoints: a detector loaded from one answers
+  // as the one that wrote it.
+  std::string bytes;
+  ByteWriter w(bytes);
+  det.save(w);
+  ContactDetector again(b, kMargin, 0.002);
+  again.set_pair_trigger(true);
+  ByteReader r(bytes);
+  again.load(r, c.pairs.size());
+  translate(b, 1, Vec3(0.003, 0, 0));
+  std::vector<int> m1, m2;
+  EXPECT_TRUE(det.moved_pairs(b, c, 0.0, m1));
+  EXPECT_TRUE(again.moved_pairs(b, c, 0.0, m2));
+  EXPECT_EQ(m1, m2);
+  EXPECT_EQ(again.pairs_resampled(), det.pairs_resampled());
+}
+
 }  // namespace
 }  // namespace polydem
