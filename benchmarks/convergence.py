@@ -15,8 +15,10 @@ travel, explicit damping):
             scaled); detection travel x0.125, x0.25, x0.5 and x2
             (`simulation.detection_travel`, likewise); split damping
             (`simulation.damping_scheme = "split"`); the joints re-sampled
-            pair by pair (`simulation.detection_trigger = "pair"`) at the
-            detection travel x1, x0.5, x0.25, x0.125, x0.0625 and x0.03125; the same settings and
+            pair by pair (`simulation.detection_trigger = "pair"`) at their
+            own automatic travel (a sixteenth of the scene-wide one) and at
+            the scene-wide automatic travel x1, x0.5, x0.25, x0.125, x0.0625
+            x0.03125 and x0.015625; the same settings and
             the margin x0.125 and x0.25 with the detection travel at half the
             margin (`simulation.detection_travel = 1`, taken as half the
             margin: how often the subcontacts are re-sampled then follows the
@@ -83,11 +85,13 @@ SETTINGS = {
     "travel x2": ([], ("travel", 2.0)),
     "split damping": (['simulation.damping_scheme="split"'], None),
     "pair trigger": (PAIR, None),
+    "pair trigger, travel x1": (PAIR, ("travel", 1.0)),
     "pair trigger, travel x0.5": (PAIR, ("travel", 0.5)),
     "pair trigger, travel x0.25": (PAIR, ("travel", 0.25)),
     "pair trigger, travel x0.125": (PAIR, ("travel", 0.125)),
     "pair trigger, travel x0.0625": (PAIR, ("travel", 0.0625)),
     "pair trigger, travel x0.03125": (PAIR, ("travel", 0.03125)),
+    "pair trigger, travel x0.015625": (PAIR, ("travel", 0.015625)),
     "travel half the margin": (HALF, None),
     "safety factor 0.4, travel half the margin": (["simulation.safety_factor=0.4"] + HALF, None),
     "safety factor 0.2, travel half the margin": (["simulation.safety_factor=0.2"] + HALF, None),

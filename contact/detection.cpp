@@ -113,7 +113,9 @@ double smallest_block_size(const Blocks& b) {
   return std::isfinite(smallest) ? smallest : 0.0;
 }
 
-double automatic_detection_travel(const Blocks& b) { return 0.0025 * smallest_block_size(b); }
+double automatic_detection_travel(const Blocks& b, bool pair_trigger) {
+  return (pair_trigger ? 0.0025 / 16 : 0.0025) * smallest_block_size(b);
+}
 
 ContactDetector::ContactDetector(const Blocks& blocks, double margin, double travel)
     : impl_(std::make_unique<Impl>(blocks.count)),

@@ -56,9 +56,13 @@ namespace polydem {
 
 // The detection travel a subcontact-model run takes when the deck sets none
 // (simulation.detection_travel = 0): 0.25 % of the smallest free block's size
-// (of any block when none is free), the travel below which the spire's
-// answers no longer move (docs/contact.md, "The detection travel").
-double automatic_detection_travel(const Blocks& blocks);
+// (of any block when none is free), where the spire's answers lie within a
+// bisection bracket of those at smaller travels (docs/contact.md, "The
+// detection travel"). Pair by pair (`pair_trigger`) a sixteenth of it: a
+// pair is then re-sampled on its own blocks' motion, not at the cadence of
+// the fastest pair in the scene, and its travel must be that much smaller
+// for the same answers (docs/contact.md, "Detection pair by pair").
+double automatic_detection_travel(const Blocks& blocks, bool pair_trigger = false);
 // The smallest free block's size (of any block when none is free; 0 without
 // blocks): what the automatic margin and detection travel scale with.
 double smallest_block_size(const Blocks& blocks);

@@ -25,7 +25,8 @@ double seconds(Clock::time_point from, Clock::time_point to) {
 // sample the joints (the overlap model samples nothing: half the margin).
 double deck_detection_travel(const SimulationSpec& sim, const Blocks& blocks) {
   if (sim.detection_travel > 0) return sim.detection_travel;
-  return sim.joint_model == JointModel::overlap ? 0.0 : automatic_detection_travel(blocks);
+  if (sim.joint_model == JointModel::overlap) return 0.0;
+  return automatic_detection_travel(blocks, sim.detection_trigger == DetectionTrigger::pair);
 }
 
 }  // namespace

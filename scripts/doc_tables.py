@@ -255,8 +255,8 @@ def table_convergence():
         elif margin and "margin" not in s.replace("half the margin", "") and "corner" in s:
             # a geometry with its own automatic margin
             name = name.replace("merged corner stones", f"merged corner stones, margin {1000 * float(margin):.2f} mm")
-        if travel and (s.startswith("travel x") or s.startswith("pair trigger, travel x")):
-            name = f"{name} ({1000 * float(travel):.2f} mm)"
+        if travel and (s.startswith("travel x") or s.startswith("pair trigger")):
+            name = f"{name} ({1000 * float(travel):.2g} mm)"
         return name
 
     def numerical(q):
@@ -267,7 +267,7 @@ def table_convergence():
         wall = q.get("wall time, 1 thread")
         text = f"{float(wall):.0f} s" if wall else "-"
         if q.get("pairs re-sampled"):
-            text += f' ({q["detections"]} detections, {int(q["pairs re-sampled"]):,} pairs re-sampled)'
+            text += f' ({int(q["detections"]):,} detections, {int(q["pairs re-sampled"]):,} pairs re-sampled)'
         elif q.get("detections"):
             text += f' ({int(q["detections"]):,} detections)'
         return text
@@ -293,7 +293,8 @@ def table_convergence():
     commits = sorted({r["commit"] for r in rows})
     return (markdown(header, table) +
             f"\nFrom `benchmarks/convergence.py build/polydem` at {', '.join(commits)}, one run per cell on "
-            "1 thread; \"travel half the margin\": the detection travel at its largest, half the contact margin "
+            "1 thread (the run column's wall times from runs two at a time on 2 cores beside other work: what a "
+            "run costs, not a benchmark, which docs/benchmarks.md keeps); \"travel half the margin\": the detection travel at its largest, half the contact margin "
             "(`simulation.detection_travel = 1`), where the margin also sets how often the joints are "
             "re-sampled; \"pair trigger\": the joints re-sampled pair by pair "
             "(`simulation.detection_trigger = \"pair\"`), at the travel given (λ: five trials from [0.155, 0.205] g, six from [0.105, 0.205] g where λ lies lower, the "

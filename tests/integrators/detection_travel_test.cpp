@@ -28,14 +28,17 @@ struct Tipping {
   double onset = -1;  // s, when the stone's tilt first exceeds 1 mrad
   double tilt = 0;    // rad, at the end
   int detections = 0;
+  double travel = 0;  // m, the run's detection travel
+  long long pairs_resampled = 0;
 };
 
 // A 0.5 m cube stone on a 1 × 1 × 0.5 m base, flush with the base's edge at
 // x = −0.5; the base is drawn away along +x at 0.5 m/s under a joint
 // without friction, so the stone stays where it is and the base's edge
 // passes under its centre at t* = 0.5 s: from then on it tips over the edge.
-Tipping withdraw_support(double margin, double travel) {
+Tipping withdraw_support(double margin, double travel, bool pair_trigger = false) {
   SimulationSpec sim;
+  if (pair_trigger) sim.detection_trigger = DetectionTrigger::pair;
   sim.gravity = Vec3(0, 0, -kG);
   sim.detection_travel = travel;
   JointSpec joint;
@@ -66,6 +69,8 @@ Tipping withdraw_support(double margin, double travel) {
   }
   out.tilt = tilt(s, 1);
   out.detections = s.contacts().detections;
+  out.travel = s.detection_travel();
+  out.pairs_resampled = s.pairs_resampled();
   return out;
 }
 
@@ -92,6 +97,28 @@ TEST(DetectionTravel, AStoneTipsWhenItsSupportIsWithdrawnWhateverTheMargin) {
   // answer.
   EXPECT_GT(half_large.onset - small.onset, 0.005);
   EXPECT_LT(half_large.tilt, 0.97 * small.tilt);
+}
+
+// Pair by pair (simulation.detection_trigger = "pair") the automatic travel
+// is a sixteenth of the scene-wide one (78 µm here) and the stone's joint is
+// re-sampled on its own motion: it tips as with the scene-wide trigger,
+// within the scene-wide travel's resolution (2.5 ms of the base's travel),
+// at either margin.
+TEST(DetectionTravel, PairByPairTheStoneTipsAsWithTheSceneWideTrigger) {
+  const Tipping scene = withdraw_support(0.01, 0);
+  const Tipping small = withdraw_support(0.01, 0, true), large = withdraw_support(0.04, 0, true);
+  std::printf("pair by pair, onset (tilt at 0.8 s, scene detections, pairs re-sampled): margin 10 mm %.4f s "
+              "(%.4f rad, %d, %lld), 40 mm %.4f s (%.4f rad, %d, %lld); scene-wide %.4f s\n",
+              small.onset, small.tilt, small.detections, small.pairs_resampled, large.onset, large.tilt,
+              large.detections, large.pairs_resampled, scene.onset);
+  EXPECT_DOUBLE_EQ(small.travel, scene.travel / 16);
+  EXPECT_DOUBLE_EQ(scene.travel, 0.0025 * 0.5);
+  ASSERT_GT(small.onset, 0.5);
+  EXPECT_NEAR(small.onset, scene.onset, 0.0025);
+  EXPECT_NEAR(large.onset, scene.onset, 0.0025);
+  EXPECT_NEAR(small.tilt, scene.tilt, 0.01 * scene.tilt);
+  EXPECT_NEAR(large.tilt, scene.tilt, 0.01 * scene.tilt);
+  EXPECT_GT(small.pairs_resampled, 16 * scene.detections / 2) << "the joint re-sampled at its own, finer travel";
 }
 
 }  // namespace

@@ -70,18 +70,27 @@ TEST(Determinism, OneAndTwoThreadsGiveTheSameBits) {
   EXPECT_GT(moved, 1e-3);
 }
 
-// The overlap joint model (a wrench per pair, gathered pair by pair) on 1
-// and 2 threads: the same bits.
-TEST(Determinism, TheOverlapModelGivesTheSameBitsOnOneAndTwoThreads) {
-  SceneSpec spec = parse_deck(big_wall_deck(), "big_wall.toml", {"simulation.joint_model=\"overlap\""});
+// The big wall with `setting` run on 1 and on 2 threads (every step in
+// parallel): the same bits. Returns the run on 1 thread and, in `two`, the
+// run on 2.
+RunReport one_and_two_threads(const std::string& setting, RunReport& two_threads) {
+  SceneSpec spec = parse_deck(big_wall_deck(), "big_wall.toml", {setting});
   spec.simulation.adaptive_threads = false;
   RunControl one, two;
   one.threads = 1;
   two.threads = 2;
   one.parallel_threshold = two.parallel_threshold = 0;
   const RunReport a = run_scene(spec, one);
-  const RunReport b = run_scene(spec, two);
-  expect_same_bits(a, b);
+  two_threads = run_scene(spec, two);
+  expect_same_bits(a, two_threads, setting);
+  return a;
+}
+
+// The overlap joint model (a wrench per pair, gathered pair by pair) on 1
+// and 2 threads: the same bits.
+TEST(Determinism, TheOverlapModelGivesTheSameBitsOnOneAndTwoThreads) {
+  RunReport b;
+  const RunReport a = one_and_two_threads("simulation.joint_model=\"overlap\"", b);
   EXPECT_GT(a.energy.slip, 0.0);
 }
 
@@ -89,15 +98,8 @@ TEST(Determinism, TheOverlapModelGivesTheSameBitsOnOneAndTwoThreads) {
 // the moved pairs found, sampled and spliced in on 1 and 2 threads give
 // the same bits, with pairs re-sampled between scene-wide detections.
 TEST(Determinism, ThePairTriggerGivesTheSameBitsOnOneAndTwoThreads) {
-  SceneSpec spec = parse_deck(big_wall_deck(), "big_wall.toml", {"simulation.detection_trigger=\"pair\""});
-  spec.simulation.adaptive_threads = false;
-  RunControl one, two;
-  one.threads = 1;
-  two.threads = 2;
-  one.parallel_threshold = two.parallel_threshold = 0;
-  const RunReport a = run_scene(spec, one);
-  const RunReport b = run_scene(spec, two);
-  expect_same_bits(a, b);
+  RunReport b;
+  const RunReport a = one_and_two_threads("simulation.detection_trigger=\"pair\"", b);
   EXPECT_EQ(a.pairs_resampled, b.pairs_resampled);
   EXPECT_GT(a.pairs_resampled, 0);
   EXPECT_GT(a.energy.slip, 0.0);

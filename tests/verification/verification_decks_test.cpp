@@ -53,15 +53,22 @@ INSTANTIATE_TEST_SUITE_P(Decks, VerificationDeck,
 // result the explicit scheme meets, at the split scheme's larger step.
 class VerificationDeckSplitDamping : public ::testing::TestWithParam<const char*> {};
 
-TEST_P(VerificationDeckSplitDamping, ChecksPass) {
-  const SceneSpec spec = read_deck(deck(GetParam()), {"simulation.damping_scheme=\"split\""});
+// A deck run with one setting changed, each of its checks required to pass
+// (printed with `label`).
+RunReport run_with_checks(const char* name, const std::string& setting, const std::string& label) {
+  const SceneSpec spec = read_deck(deck(name), {setting});
   const RunReport r = run_scene(spec);
   for (const CheckResult& c : r.checks) {
     EXPECT_TRUE(c.passed) << c.name << ": measured " << c.measured << " expected " << c.expected << " tolerance "
                           << c.tolerance << " (" << c.note << ")";
-    std::cout << "  " << GetParam() << " (split) " << c.name << ": measured " << c.measured << " expected "
+    std::cout << "  " << name << " (" << label << ") " << c.name << ": measured " << c.measured << " expected "
               << c.expected << " " << c.unit << "\n";
   }
+  return r;
+}
+
+TEST_P(VerificationDeckSplitDamping, ChecksPass) {
+  const RunReport r = run_with_checks(GetParam(), "simulation.damping_scheme=\"split\"", "split");
   EXPECT_LT(r.energy_balance_error, 0.01) << "energy ledger does not close";  // 0.71 % at most
   std::cout << "  " << GetParam() << " (split): " << r.steps << " steps of " << r.time_step << " s, theta "
             << r.damping_split_fraction << "\n";
@@ -76,14 +83,7 @@ INSTANTIATE_TEST_SUITE_P(Decks, VerificationDeckSplitDamping,
 class VerificationDeckPairTrigger : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(VerificationDeckPairTrigger, ChecksPass) {
-  const SceneSpec spec = read_deck(deck(GetParam()), {"simulation.detection_trigger=\"pair\""});
-  const RunReport r = run_scene(spec);
-  for (const CheckResult& c : r.checks) {
-    EXPECT_TRUE(c.passed) << c.name << ": measured " << c.measured << " expected " << c.expected << " tolerance "
-                          << c.tolerance << " (" << c.note << ")";
-    std::cout << "  " << GetParam() << " (pair) " << c.name << ": measured " << c.measured << " expected "
-              << c.expected << " " << c.unit << "\n";
-  }
+  const RunReport r = run_with_checks(GetParam(), "simulation.detection_trigger=\"pair\"", "pair");
   EXPECT_LT(r.energy_balance_error, 0.01) << "energy ledger does not close";
   std::cout << "  " << GetParam() << " (pair): " << r.detections << " scene detections, " << r.pairs_resampled
             << " pairs re-sampled, ledger " << r.energy_balance_error << "\n";
@@ -129,14 +129,7 @@ constexpr const char* kOverlapDecks[] = {"resting_block.toml",  "slope_slide.tom
 class VerificationDeckOverlapModel : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(VerificationDeckOverlapModel, ChecksPass) {
-  const SceneSpec spec = read_deck(deck(GetParam()), {"simulation.joint_model=\"overlap\""});
-  const RunReport r = run_scene(spec);
-  for (const CheckResult& c : r.checks) {
-    EXPECT_TRUE(c.passed) << c.name << ": measured " << c.measured << " expected " << c.expected << " tolerance "
-                          << c.tolerance << " (" << c.note << ")";
-    std::cout << "  " << GetParam() << " (overlap) " << c.name << ": measured " << c.measured << " expected "
-              << c.expected << " " << c.unit << "\n";
-  }
+  const RunReport r = run_with_checks(GetParam(), "simulation.joint_model=\"overlap\"", "overlap");
   // No detection re-samples a joint's force and the rocking pillar is not
   // among these decks: 8.4e-5 at most.
   EXPECT_LT(r.energy_balance_error, 1e-3) << "energy ledger does not close";
