@@ -150,8 +150,11 @@ class ContactDetector {
   // Pair by pair only: the pairs of `contacts` whose two blocks may have
   // moved relative to each other by more than the detection travel since
   // the pair was sampled, counting the coming step of length dt, into
-  // `moved` (ascending). Returns whether there are any.
-  bool moved_pairs(const Blocks& blocks, const ContactSet& contacts, double dt, std::vector<int>& moved) const;
+  // `moved` (ascending). Returns whether there are any. `bound_first`: a
+  // cheap bound settles the clear cases (the same answer; false only for
+  // tests comparing the two).
+  bool moved_pairs(const Blocks& blocks, const ContactSet& contacts, double dt, std::vector<int>& moved,
+                   bool bound_first = true) const;
   // Re-samples the pairs `moved` of `contacts` (ascending), each as detect()
   // would, carrying its history by position, and takes the others over
   // whole. A moved pair no longer within the margin would leave the scene's
