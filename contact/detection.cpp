@@ -35,7 +35,6 @@ struct ContactDetector::Impl {
   // whole, or −1; the candidates to sample.
   std::vector<int> kept;
   std::vector<int> todo;
-  std::vector<char> old_kept;  // per pair of the previous set: taken over whole
   // Per pair of the current set: its blocks' poses when it was sampled
   // (a, b as the pair's), and the same being built for the next set.
   std::vector<Vec3> pose_pa, pose_pb, next_pa, next_pb;
@@ -359,11 +358,64 @@ DetectionTimes ContactDetector::resample(const Blocks& b, ContactSet& contacts, 
   im.todo = moved;
   for (int q : moved) im.kept[static_cast<std::size_t>(q)] = -1;
   narrow_phase_and_patches(b, contacts, times);
-  for (int k : im.todo)
-    if (!im.found[static_cast<std::size_t>(k)]) return detect(b, contacts, false, laws);  // a pair has left
+  bool in_place = true;
+  for (int k : im.todo) {
+    const auto q = static_cast<std::size_t>(k);
+    if (!im.found[q]) return detect(b, contacts, false, laws);  // a pair has left
+    const ContactPair& cp = contacts.pairs[q];
+    const Patch& patch = im.patches[q];
+    in_place = in_place && static_cast<int>(patch.points.size()) == cp.count &&
+               (patch.ref_side == 0 ? cp.a : cp.b) == cp.ref_block;
+  }
+  if (in_place) {
+    resample_in_place(b, contacts, moved, laws, times);
+    return times;
+  }
   std::swap(im.previous, contacts);
   sample(b, contacts, false, laws, false, times);
   return times;
+}
+
+// Every moved pair sampled again with as many subcontacts as it had and
+// the same reference block: their new subcontacts go where the old ones
+// were, so the set's layout and gather lists stay as they are and nothing
+// else is copied. The old subcontacts of the moved pairs, kept aside as a
+// small set, are the history carried, as sample() would carry it.
+void ContactDetector::resample_in_place(const Blocks& b, ContactSet& contacts, const std::vector<int>& moved,
+                                        const JointLaws& laws, DetectionTimes& times) {
+  auto& im = *impl_;
+  const Clock::time_point t3 = Clock::now();
+  ContactSet& old = im.previous;
+  old.pairs.clear();
+  old.sub.resize(0);
+  for (int q : moved) append_pairs(contacts, q, q + 1, old);
+  old.retired_slip_energy = contacts.retired_slip_energy;
+  old.retired_damping_energy = contacts.retired_damping_energy;
+  old.dropped_shear_energy = contacts.dropped_shear_energy;
+  old.resampled_normal_energy = contacts.resampled_normal_energy;
+  old.detections = contacts.detections;
+  im.carry.by_pair = true;
+  im.carry.sampled = moved;
+  im.carry.old_kept.clear();
+  im.carry.reach.resize(contacts.pairs.size());
+  const auto& st = b.state;
+  for (std::size_t m = 0; m < moved.size(); ++m) {
+    const auto q = static_cast<std::size_t>(moved[m]);
+    ContactPair& cp = contacts.pairs[q];
+    const int a = cp.a, c = cp.b;
+    im.carry.reach[q] = pair_travel(b, a, c, im.pose_pa[q], im.pose_qa[q], im.pose_pb[q], im.pose_qb[q], 0.0);
+    ContactPair fresh;
+    sample_pair(b, a, c, im.patches[q], false, static_cast<int>(q), cp.first, fresh, contacts.sub);
+    cp = fresh;
+    im.pose_pa[q] = st.position[a];
+    im.pose_pb[q] = st.position[c];
+    im.pose_qa[q] = st.orientation[a];
+    im.pose_qb[q] = st.orientation[c];
+  }
+  pairs_resampled_ += static_cast<long long>(moved.size());
+  const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
+  carry_and_hold(b, old, contacts, laws, threads);
+  times.subcontacts = seconds(t3, Clock::now());
 }
 
 // Stages 2 and 3 for the candidates im.todo, in parallel, one slot per
@@ -446,28 +498,7 @@ void ContactDetector::sample(const Blocks& b, ContactSet& contacts, bool bond_ne
         im.carry.turned[i] = turn_chord(b, im.detected_orientation[i], i);
       }
     }
-    carry_history(b, old, contacts, laws, im.carry, threads);
-    // Re-sampling may lower a pair's normal strain at this pose but not
-    // raise it (joint_law.hpp); what it changes is the re-sampling's, not
-    // motion's, and goes to the ledger.
-    hold_normal_strain(laws, b.state, old, contacts, threads, pair_trigger_ ? &im.carry.kept_from : nullptr);
-    if (!pair_trigger_) {
-      contacts.resampled_normal_energy += normal_strain_energy_now(laws, b.state, old.sub, threads) -
-                                          normal_strain_energy_now(laws, b.state, contacts.sub, threads);
-    } else {  // the same difference over the pairs sampled and the pairs gone (the rest cancel)
-      double change = 0;
-      for (std::size_t q = 0; q < contacts.pairs.size(); ++q) {
-        if (im.carry.kept_from[q] >= 0) continue;
-        const ContactPair& cp = contacts.pairs[q];
-        change -= normal_strain_energy_now(laws, b.state, contacts.sub, cp.first, cp.first + cp.count);
-      }
-      for (std::size_t o = 0; o < old.pairs.size(); ++o) {
-        if (im.old_kept[o]) continue;
-        const ContactPair& op = old.pairs[o];
-        change += normal_strain_energy_now(laws, b.state, old.sub, op.first, op.first + op.count);
-      }
-      contacts.resampled_normal_energy += change;
-    }
+    carry_and_hold(b, old, contacts, laws, threads);
   }
   contacts.detections = old.detections + (scene ? 1 : 0);
   const Clock::time_point t4 = Clock::now();
@@ -484,6 +515,36 @@ void ContactDetector::sample(const Blocks& b, ContactSet& contacts, bool bond_ne
   times.gather = seconds(t4, t5);
 }
 
+// The history of `old` carried into `contacts` by position, the normal
+// strain held, and what the re-sampling changed booked: for every pair, or
+// pair by pair for the pairs sampled (im.carry) and the pairs gone.
+void ContactDetector::carry_and_hold(const Blocks& b, const ContactSet& old, ContactSet& contacts,
+                                     const JointLaws& laws, int threads) {
+  auto& im = *impl_;
+  carry_history(b, old, contacts, laws, im.carry, threads);
+  // Re-sampling may lower a pair's normal strain at this pose but not
+  // raise it (joint_law.hpp); what it changes is the re-sampling's, not
+  // motion's, and goes to the ledger.
+  hold_normal_strain(laws, b.state, old, contacts, threads, pair_trigger_ ? &im.carry.sampled : nullptr);
+  if (!pair_trigger_) {
+    contacts.resampled_normal_energy += normal_strain_energy_now(laws, b.state, old.sub, threads) -
+                                        normal_strain_energy_now(laws, b.state, contacts.sub, threads);
+    return;
+  }
+  double change = 0;  // the same difference over the pairs sampled and the pairs gone (the rest cancel)
+  for (int q : im.carry.sampled) {
+    const ContactPair& cp = contacts.pairs[static_cast<std::size_t>(q)];
+    change -= normal_strain_energy_now(laws, b.state, contacts.sub, cp.first, cp.first + cp.count);
+  }
+  const bool some_kept = !im.carry.old_kept.empty();
+  for (std::size_t o = 0; o < old.pairs.size(); ++o) {
+    if (some_kept && im.carry.old_kept[o]) continue;
+    const ContactPair& op = old.pairs[o];
+    change += normal_strain_energy_now(laws, b.state, old.sub, op.first, op.first + op.count);
+  }
+  contacts.resampled_normal_energy += change;
+}
+
 // Pair by pair: per pair of the new set (built in candidate order from the
 // kept and the found candidates), whether it was taken over whole, its
 // reach since it was sampled, and the poses it was sampled at (the kept
@@ -492,9 +553,10 @@ void ContactDetector::take_pair_poses(const Blocks& b, const ContactSet& old) {
   auto& im = *impl_;
   const auto& st = b.state;
   const std::size_t nc = im.candidates.size();
-  im.carry.kept_from.clear();
+  im.carry.by_pair = true;
+  im.carry.sampled.clear();
   im.carry.reach.clear();
-  im.old_kept.assign(old.pairs.size(), 0);
+  im.carry.old_kept.assign(old.pairs.size(), 0);
   im.next_pa.clear();
   im.next_pb.clear();
   im.next_qa.clear();
@@ -505,8 +567,7 @@ void ContactDetector::take_pair_poses(const Blocks& b, const ContactSet& old) {
     const auto [i, j] = im.candidates[k];
     if (o >= 0) {
       const auto u = static_cast<std::size_t>(o);
-      im.old_kept[u] = 1;
-      im.carry.kept_from.push_back(o);
+      im.carry.old_kept[u] = 1;
       im.carry.reach.push_back(0.0);
       im.next_pa.push_back(im.pose_pa[u]);
       im.next_pb.push_back(im.pose_pb[u]);
@@ -519,7 +580,7 @@ void ContactDetector::take_pair_poses(const Blocks& b, const ContactSet& old) {
       const auto u = static_cast<std::size_t>(op - old.pairs.data());
       reach = pair_travel(b, i, j, im.pose_pa[u], im.pose_qa[u], im.pose_pb[u], im.pose_qb[u], 0.0);
     }
-    im.carry.kept_from.push_back(-1);
+    im.carry.sampled.push_back(static_cast<int>(im.carry.reach.size()));
     im.carry.reach.push_back(reach);
     im.next_pa.push_back(st.position[i]);
     im.next_pb.push_back(st.position[j]);

@@ -186,6 +186,10 @@ class ContactDetector {
   void sample(const Blocks& blocks, ContactSet& contacts, bool bond_new, const JointLaws& laws, bool scene,
               DetectionTimes& times);
   void take_pair_poses(const Blocks& blocks, const ContactSet& old);
+  void carry_and_hold(const Blocks& blocks, const ContactSet& old, ContactSet& contacts, const JointLaws& laws,
+                      int threads);
+  void resample_in_place(const Blocks& blocks, ContactSet& contacts, const std::vector<int>& moved,
+                         const JointLaws& laws, DetectionTimes& times);
 
   struct Impl;
   std::unique_ptr<Impl> impl_;

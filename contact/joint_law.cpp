@@ -304,15 +304,17 @@ double normal_strain_energy_now(const JointLaws& laws, const BlockState& st, con
 }
 
 void hold_normal_strain(const JointLaws& laws, const BlockState& st, const ContactSet& old, ContactSet& contacts,
-                        int threads, const std::vector<int>* kept) {
+                        int threads, const std::vector<int>* sampled) {
   Subcontacts& sc = contacts.sub;
   const Subcontacts& os = old.sub;
   // Pair by pair, in parallel: a pair writes only its own subcontacts.
-  const std::ptrdiff_t n_pairs = static_cast<std::ptrdiff_t>(contacts.pairs.size());
+  const std::ptrdiff_t n_pairs = static_cast<std::ptrdiff_t>(sampled ? sampled->size() : contacts.pairs.size());
 #pragma omp parallel for schedule(dynamic, 32) if (threads > 1 && n_pairs >= 256) num_threads(threads)
-  for (std::ptrdiff_t q = 0; q < n_pairs; ++q) {
-    const ContactPair& cp = contacts.pairs[static_cast<std::size_t>(q)];
-    if (cp.count == 0 || (kept && (*kept)[static_cast<std::size_t>(q)] >= 0)) continue;
+  for (std::ptrdiff_t m = 0; m < n_pairs; ++m) {
+    const std::size_t q = sampled ? static_cast<std::size_t>((*sampled)[static_cast<std::size_t>(m)])
+                                  : static_cast<std::size_t>(m);
+    const ContactPair& cp = contacts.pairs[q];
+    if (cp.count == 0) continue;
     // A pair found for the first time after the first detection held nothing
     // before: found already overlapping (a corner that the clip kept outside
     // the reference face until it was in), it starts at zero force.

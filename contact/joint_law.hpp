@@ -194,10 +194,10 @@ void settle_damping_work(const BlockState& state, Subcontacts& sub, double dt, i
 // reference face until it was in: 1.1 and 2.5 kJ in the 1.0 g run), it
 // starts at zero force. Only the first detection's pairs (t = 0, the
 // structure as built) start from the geometry.
-// `kept` (per pair of `contacts`, when given): ≥ 0 for the pairs taken over
-// whole from `old`, left alone.
+// `sampled` (when given): these pairs of `contacts` alone (ascending), the
+// rest having been taken over whole, left alone.
 void hold_normal_strain(const JointLaws& laws, const BlockState& state, const ContactSet& old, ContactSet& contacts,
-                        int threads = 1, const std::vector<int>* kept = nullptr);
+                        int threads = 1, const std::vector<int>* sampled = nullptr);
 
 // Elastic strain energy stored in the joints, J.
 double joint_strain_energy(const JointLaws& laws, const Subcontacts& sub);

@@ -212,6 +212,56 @@ void copy_pairs(const ContactSet& from, int o1, int o2, int index, int first, Co
 
 }  // namespace
 
+void sample_pair(const Blocks& b, int i, int j, const Patch& patch, bool bond_new, int index, int first,
+                 ContactPair& cp, Subcontacts& sc) {
+  cp.a = i;
+  cp.b = j;
+  cp.ref_block = patch.ref_side == 0 ? i : j;
+  const int inc = patch.ref_side == 0 ? j : i;
+  cp.ref_face = patch.ref_face;
+  cp.inc_face = patch.inc_face;
+  cp.first = first;
+  cp.count = static_cast<int>(patch.points.size());
+  cp.patch_area = patch.area;
+  const Mat3& Rr = b.state.rotation[cp.ref_block];
+  const Mat3& Ri = b.state.rotation[inc];
+  const Vec3 n_local = Rr.transpose() * patch.normal;
+  const double off_local = patch.offset - patch.normal.dot(b.state.position[cp.ref_block]);
+  cp.normal_local = n_local;
+  cp.offset_local = off_local;
+  std::size_t s = static_cast<std::size_t>(first);
+  for (const PatchPoint& pt : patch.points) {
+    sc.pair[s] = index;
+    sc.ref_block[s] = cp.ref_block;
+    sc.inc_block[s] = inc;
+    sc.key[s] = subcontact_key(patch.ref_side, patch.ref_face, patch.inc_face, pt.feature);
+    sc.ref_normal_local[s] = n_local;
+    sc.ref_offset_local[s] = off_local;
+    sc.inc_point_local.set(s, Ri.transpose() * (pt.point - b.state.position[inc]));
+    sc.area[s] = pt.area;
+    sc.crush[s] = 0;
+    sc.shear_force.set_zero(s);
+    sc.bonded[s] = bond_new ? 1 : 0;
+    sc.slip_energy[s] = 0;
+    sc.damping_energy[s] = 0;
+    sc.damping_force.set_zero(s);
+    sc.force[s] = Vec3::Zero();
+    sc.point[s] = pt.point;
+    sc.overlap[s] = -pt.separation;
+    sc.normal_force[s] = 0;
+    ++s;
+  }
+}
+
+void append_pairs(const ContactSet& from, int first_pair, int last_pair, ContactSet& to) {
+  if (first_pair >= last_pair) return;
+  const int first = static_cast<int>(to.sub.size());
+  const ContactPair& lo = from.pairs[static_cast<std::size_t>(first_pair)];
+  const ContactPair& hi = from.pairs[static_cast<std::size_t>(last_pair - 1)];
+  to.sub.resize(static_cast<std::size_t>(first + (hi.first + hi.count - lo.first)));
+  copy_pairs(from, first_pair, last_pair, static_cast<int>(to.pairs.size()), first, to);
+}
+
 void build_subcontacts(const Blocks& b, const std::vector<std::pair<int, int>>& candidates,
                        const std::vector<Patch>& patches, const std::vector<char>& found, bool bond_new,
                        ContactSet& contacts, const ContactSet* previous, const std::vector<int>* kept_from) {
@@ -242,44 +292,10 @@ void build_subcontacts(const Blocks& b, const std::vector<std::pair<int, int>>& 
     }
     if (!found[k]) continue;
     const auto [i, j] = candidates[k];
-    const Patch& patch = patches[k];
     ContactPair cp;
-    cp.a = i;
-    cp.b = j;
-    cp.ref_block = patch.ref_side == 0 ? i : j;
-    const int inc = patch.ref_side == 0 ? j : i;
-    cp.ref_face = patch.ref_face;
-    cp.inc_face = patch.inc_face;
-    cp.first = static_cast<int>(s);
-    cp.count = static_cast<int>(patch.points.size());
-    cp.patch_area = patch.area;
-    const Mat3& Rr = b.state.rotation[cp.ref_block];
-    const Mat3& Ri = b.state.rotation[inc];
-    const Vec3 n_local = Rr.transpose() * patch.normal;
-    const double off_local = patch.offset - patch.normal.dot(b.state.position[cp.ref_block]);
-    cp.normal_local = n_local;
-    cp.offset_local = off_local;
-    for (const PatchPoint& pt : patch.points) {
-      sc.pair[s] = static_cast<int>(contacts.pairs.size());
-      sc.ref_block[s] = cp.ref_block;
-      sc.inc_block[s] = inc;
-      sc.key[s] = subcontact_key(patch.ref_side, patch.ref_face, patch.inc_face, pt.feature);
-      sc.ref_normal_local[s] = n_local;
-      sc.ref_offset_local[s] = off_local;
-      sc.inc_point_local.set(s, Ri.transpose() * (pt.point - b.state.position[inc]));
-      sc.area[s] = pt.area;
-      sc.crush[s] = 0;
-      sc.shear_force.set_zero(s);
-      sc.bonded[s] = bond_new ? 1 : 0;
-      sc.slip_energy[s] = 0;
-      sc.damping_energy[s] = 0;
-      sc.damping_force.set_zero(s);
-      sc.force[s] = Vec3::Zero();
-      sc.point[s] = pt.point;
-      sc.overlap[s] = -pt.separation;
-      sc.normal_force[s] = 0;
-      ++s;
-    }
+    sample_pair(b, i, j, patches[k], bond_new, static_cast<int>(contacts.pairs.size()), static_cast<int>(s), cp,
+                sc);
+    s += static_cast<std::size_t>(cp.count);
     contacts.pairs.push_back(cp);
   }
 }
@@ -413,10 +429,11 @@ void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& cont
   const std::size_t n_old = os.size(), n_new = sc.size();
   scratch.old_point.resize(n_old);
   scratch.old_stress.resize(n_old);
-  const bool parallel = threads > 1 && contacts.pairs.size() >= 256;
-  // Pair by pair, most pairs are taken over whole: only the pairs sampled
-  // read their previous points, each its own.
-  const bool by_pair = !scratch.kept_from.empty();
+  // Pair by pair, most pairs are not sampled: only the pairs sampled read
+  // their previous points, each its own.
+  const bool by_pair = scratch.by_pair;
+  const std::size_t n_carry = by_pair ? scratch.sampled.size() : contacts.pairs.size();
+  const bool parallel = threads > 1 && n_carry >= 256;
   auto old_sample = [&](std::size_t o) {
     const int c = os.inc_block[o];
     scratch.old_point[o] = st.position[c] + st.rotation[c] * os.inc_point_local[o];
@@ -432,18 +449,11 @@ void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& cont
   // Pair by pair, in parallel: a pair writes only its own subcontacts and
   // reads only its previous pair's (the one pair (a, b) before), whose
   // dissipation flags no other pair touches.
-  const std::ptrdiff_t n_pairs = static_cast<std::ptrdiff_t>(contacts.pairs.size());
+  const std::ptrdiff_t n_pairs = static_cast<std::ptrdiff_t>(n_carry);
 #pragma omp parallel for schedule(dynamic, 32) if (parallel) num_threads(threads)
-  for (std::ptrdiff_t q = 0; q < n_pairs; ++q) {
+  for (std::ptrdiff_t m = 0; m < n_pairs; ++m) {
+    const std::ptrdiff_t q = by_pair ? scratch.sampled[static_cast<std::size_t>(m)] : m;
     const ContactPair& cp = contacts.pairs[static_cast<std::size_t>(q)];
-    if (by_pair && scratch.kept_from[static_cast<std::size_t>(q)] >= 0) {  // taken over whole
-      const ContactPair& kp = old.pairs[static_cast<std::size_t>(scratch.kept_from[static_cast<std::size_t>(q)])];
-      for (int k = 0; k < cp.count; ++k) {
-        scratch.source[static_cast<std::size_t>(cp.first + k)] = kp.first + k;
-        scratch.dissipation_taken[static_cast<std::size_t>(kp.first + k)] = 1;
-      }
-      continue;
-    }
     const ContactPair* op = find_pair(old, cp.a, cp.b);
     if (!op || op->count == 0 || cp.count == 0) continue;
     if (by_pair)  // the previous points of this pair only
@@ -460,8 +470,8 @@ void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& cont
     double radius2 = 0;
     for (int o = op->first; o < op->first + op->count; ++o)
       radius2 = std::max(radius2, (scratch.old_point[o] - pp.centroid).squaredNorm());
-    pp.tolerance = scratch.reach.empty() ? pair_reach(scratch, cp.a, cp.b)
-                                         : (1.0 + 1e-9) * scratch.reach[static_cast<std::size_t>(q)];
+    pp.tolerance = by_pair ? (1.0 + 1e-9) * scratch.reach[static_cast<std::size_t>(q)]
+                           : pair_reach(scratch, cp.a, cp.b);
     const double tiny_area = 1e-12 * radius2;
     const Vec3 n = st.rotation[cp.ref_block] * sc.ref_normal_local[cp.first];
     // The previous forces were on the previous incident block; if the
@@ -506,24 +516,21 @@ void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& cont
   // is dropped.
   contacts.retired_slip_energy = old.retired_slip_energy;
   contacts.retired_damping_energy = old.retired_damping_energy;
+  const bool some_kept = by_pair && !scratch.old_kept.empty();
   for (std::size_t o = 0; o < n_old; ++o) {
     if (scratch.dissipation_taken[o]) continue;
+    if (some_kept && scratch.old_kept[static_cast<std::size_t>(os.pair[o])]) continue;  // copied whole
     contacts.retired_slip_energy += os.slip_energy[o];
     contacts.retired_damping_energy += os.damping_energy[o];
   }
   if (!by_pair) {
     contacts.dropped_shear_energy =
         old.dropped_shear_energy + (shear_strain_energy(laws, os) - shear_strain_energy(laws, sc));
-  } else {  // the same difference, without the pairs taken over whole (theirs cancel)
+  } else {  // the same difference over the pairs sampled and the pairs gone (the rest cancel)
     double dropped = 0;
     scratch.old_taken.assign(old.pairs.size(), 0);
-    for (std::size_t q = 0; q < contacts.pairs.size(); ++q) {
-      const ContactPair& cp = contacts.pairs[q];
-      const int kept = scratch.kept_from[q];
-      if (kept >= 0) {
-        scratch.old_taken[static_cast<std::size_t>(kept)] = 1;
-        continue;
-      }
+    for (int q : scratch.sampled) {
+      const ContactPair& cp = contacts.pairs[static_cast<std::size_t>(q)];
       if (const ContactPair* op = find_pair(old, cp.a, cp.b)) {
         scratch.old_taken[static_cast<std::size_t>(op - old.pairs.data())] = 1;
         dropped += shear_strain_energy(laws, os, op->first, op->first + op->count);
@@ -531,7 +538,7 @@ void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& cont
       dropped -= shear_strain_energy(laws, sc, cp.first, cp.first + cp.count);
     }
     for (std::size_t o = 0; o < old.pairs.size(); ++o)  // pairs gone
-      if (!scratch.old_taken[o])
+      if (!scratch.old_taken[o] && !(some_kept && scratch.old_kept[o]))
         dropped += shear_strain_energy(laws, os, old.pairs[o].first, old.pairs[o].first + old.pairs[o].count);
     contacts.dropped_shear_energy = old.dropped_shear_energy + dropped;
   }

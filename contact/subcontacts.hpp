@@ -159,6 +159,17 @@ void build_subcontacts(const Blocks& blocks, const std::vector<std::pair<int, in
                        ContactSet& out, const ContactSet* previous = nullptr,
                        const std::vector<int>* kept_from = nullptr);
 
+// The subcontacts of `patch` (found for the pair (i, j), i < j) written
+// as pair `index` of a set, from subcontact `first` on (sc already sized):
+// body-fixed at the current state, without history (bonded if
+// `bond_new`); `cp` gets the pair.
+void sample_pair(const Blocks& blocks, int i, int j, const Patch& patch, bool bond_new, int index, int first,
+                 ContactPair& cp, Subcontacts& sc);
+
+// Pairs [first_pair, last_pair) of `from` appended whole to `to` (pairs,
+// subcontacts with their history); the gather lists and totals left alone.
+void append_pairs(const ContactSet& from, int first_pair, int last_pair, ContactSet& to);
+
 // Scratch for carry_history, reused across detections (no allocation once
 // warmed up).
 struct CarryScratch {
@@ -171,15 +182,19 @@ struct CarryScratch {
   // bounding radius (2·|sin(θ/2)|·r). Empty: no block has moved.
   std::vector<Vec3> moved;
   std::vector<double> turned;
-  // Pair by pair (contact/detection.hpp), per pair of the new set: the
-  // previous set's pair it was taken over whole from (`kept_from`, nothing
-  // to carry), or −1; and its own reach (`reach`, in place of the one from
-  // `moved` and `turned`: its blocks' relative motion since the pair was
-  // sampled). The ledger's terms are then taken over the pairs sampled and
-  // the pairs gone only, and `old_taken` marks, per previous pair, whether
-  // a new pair took it on.
-  std::vector<int> kept_from;
+  // Pair by pair (`by_pair`, contact/detection.hpp): only the new set's
+  // pairs `sampled` (ascending) are carried, each with its own reach
+  // (`reach`, per pair of the new set, in place of the one from `moved`
+  // and `turned`: its blocks' relative motion since it was sampled); the
+  // previous pairs `old_kept` (per previous pair; empty: none) were copied
+  // into the new set whole and neither retire nor drop anything. The
+  // ledger's terms are taken over the pairs sampled and the pairs gone
+  // only (the rest cancel); `old_taken` gets, per previous pair, whether a
+  // sampled pair took it on.
+  bool by_pair = false;
+  std::vector<int> sampled;
   std::vector<double> reach;
+  std::vector<char> old_kept;
   std::vector<char> old_taken;
 };
 
@@ -211,7 +226,8 @@ struct CarryScratch {
 // shear energy Σ F²/(2·ks·A) of `previous` minus that of `current` (≥ 0: a
 // patch that shrank, a coarser sampling, pairs that are gone) is added to
 // `dropped_shear_energy`; the totals are taken over from `previous`. So the
-// ledger's balance is unchanged by a detection.
+// ledger's balance is unchanged by a detection. Pair by pair
+// (scratch.by_pair) the same for the pairs sampled alone.
 // `threads` > 1: the pairs in parallel (the same bits).
 void carry_history(const Blocks& blocks, const ContactSet& previous, ContactSet& current, const JointLaws& laws,
                    CarryScratch& scratch, int threads = 1);

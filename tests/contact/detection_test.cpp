@@ -410,5 +410,61 @@ TEST(PairTrigger, APairThatLeftTheMarginMakesItASceneDetection) {
   EXPECT_EQ(again.pairs_resampled(), det.pairs_resampled());
 }
 
+// A moved pair whose subcontacts change in number (a cube overhanging the
+// base's edge turned, so that the edge clips its footprint into a
+// pentagon): the set is rebuilt around it, the other pair copied whole, the
+// moved one as a scene-wide detection samples it, the ledger's totals as
+// the scene's.
+TEST(PairTrigger, APairThatChangesItsSubcontactsIsSplicedIn) {
+  const JointLaws laws = uniform_joint_laws(kLaw, 3);
+  auto scene_of = [] {
+    return build_blocks({block_spec("base", make_box(Vec3(6, 3, 1), Vec3(0, 0, -0.5)), BlockMotion::fixed),
+                         block_spec("left", make_box(Vec3(1, 1, 1), Vec3(-1.5, 0, 0.5)), BlockMotion::free),
+                         block_spec("right", make_box(Vec3(1, 1, 1), Vec3(2.55, 0, 0.5)), BlockMotion::free)});
+  };
+  Blocks b = scene_of(), s = scene_of();
+  ContactDetector pairwise(b, kMargin, 0.002), scene(s, kMargin, 0.002);
+  pairwise.set_pair_trigger(true);
+  ContactSet cp, cs;
+  pairwise.detect(b, cp, false, laws);
+  scene.detect(s, cs, false, laws);
+  ASSERT_EQ(cp.pairs.size(), 2u);
+  ASSERT_EQ(cp.pairs[1].count, 4);
+  for (std::size_t k = 0; k < cp.sub.size(); ++k) {
+    const Vec3 f(3.0 + k, 2.0, 0.0);
+    cp.sub.shear_force.set(k, f);
+    cs.sub.shear_force.set(k, f);
+    cp.sub.slip_energy[k] = cs.sub.slip_energy[k] = 0.5 * k;
+  }
+  const std::string left_before = pair_bytes(cp, 0);
+  turn(b, 2, 0.2, Vec3::UnitZ());
+  turn(s, 2, 0.2, Vec3::UnitZ());
+  std::vector<int> moved;
+  ASSERT_TRUE(pairwise.moved_pairs(b, cp, 0.0, moved));
+  ASSERT_EQ(moved, std::vector<int>{1});
+  pairwise.resample(b, cp, moved, laws);
+  scene.detect(s, cs, false, laws);
+  ASSERT_EQ(cp.pairs.size(), 2u);
+  EXPECT_EQ(cp.detections, 1);
+  EXPECT_EQ(pair_bytes(cp, 0), left_before);
+  const ContactPair &a = cp.pairs[1], &c = cs.pairs[1];
+  ASSERT_EQ(a.count, c.count);
+  EXPECT_GT(a.count, 4) << "the test's premise: the edge clips the turned footprint";
+  for (int k = 0; k < a.count; ++k) {
+    const std::size_t i = static_cast<std::size_t>(a.first + k), j = static_cast<std::size_t>(c.first + k);
+    EXPECT_NEAR((cp.sub.point[i] - cs.sub.point[j]).norm(), 0.0, 1e-12) << k;
+    EXPECT_NEAR(cp.sub.area[i], cs.sub.area[j], 1e-12) << k;
+    EXPECT_NEAR((cp.sub.shear_force[i] - cs.sub.shear_force[j]).norm(), 0.0, 1e-9) << k;
+  }
+  double slip_p = cp.retired_slip_energy, slip_s = cs.retired_slip_energy;
+  for (std::size_t k = 0; k < cp.sub.size(); ++k) slip_p += cp.sub.slip_energy[k];
+  for (std::size_t k = 0; k < cs.sub.size(); ++k) slip_s += cs.sub.slip_energy[k];
+  EXPECT_NEAR(slip_p, slip_s, 1e-12);
+  EXPECT_NEAR(cp.dropped_shear_energy, cs.dropped_shear_energy, 1e-9 * std::abs(cs.dropped_shear_energy) + 1e-12);
+  EXPECT_NEAR(cp.resampled_normal_energy, cs.resampled_normal_energy,
+              1e-9 * std::abs(cs.resampled_normal_energy) + 1e-12);
+  EXPECT_EQ(static_cast<std::size_t>(cp.gather_offset.back()), 2 * cp.sub.size());
+}
+
 }  // namespace
 }  // namespace polydem
