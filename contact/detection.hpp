@@ -34,9 +34,12 @@
 // searched again (detect()) only for new pairs, once any two blocks may
 // have closed by half the margin; pairs that have not moved are then taken
 // over whole. The travel can be made small at the cost of the pairs that
-// move, not of the scene (docs/contact.md, "Detection pair by pair").
-// Steps 2
-// and 3 run in parallel, one slot per candidate; step 4's history carry and
+// move, not of the scene; its automatic value is a sixteenth of the
+// scene-wide one (docs/contact.md, "Detection pair by pair"). A pair
+// re-sampled with an unchanged layout is written in place
+// (resample_in_place); otherwise the set is rebuilt around it.
+//
+// Steps 2 and 3 run in parallel, one slot per candidate; step 4's history carry and
 // held normal strain run pair by pair in parallel (a pair writes only its
 // own subcontacts), and its energy sums take their terms in subcontact
 // order. Everything is assembled in candidate order (sorted by block pair),
