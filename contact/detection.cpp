@@ -16,6 +16,12 @@
 
 namespace polydem {
 
+// The poses of a pair's two blocks (a, b as the pair's) when it was sampled.
+struct PairPose {
+  Vec3 pa, pb;
+  Quat qa, qb;
+};
+
 struct ContactDetector::Impl {
   explicit Impl(int n) : blocks(n), broad(n) {}
   int blocks;
@@ -35,10 +41,9 @@ struct ContactDetector::Impl {
   // whole, or −1; the candidates to sample.
   std::vector<int> kept;
   std::vector<int> todo;
-  // Per pair of the current set: its blocks' poses when it was sampled
-  // (a, b as the pair's), and the same being built for the next set.
-  std::vector<Vec3> pose_pa, pose_pb, next_pa, next_pb;
-  std::vector<Quat> pose_qa, pose_qb, next_qa, next_qb;
+  // Per pair of the current set: its blocks' poses when it was sampled,
+  // and the same being built for the next set.
+  std::vector<PairPose> pose, next_pose;
 };
 
 namespace {
@@ -63,14 +68,21 @@ void keep_two_largest(double u, double& u1, double& u2) {
 // A 1-norm bound of block i's travel since the detection (at p0, q0),
 // measured from `from`, with the coming step dt (why it bounds the travel:
 // travels_clearly_below).
-double travel_l1(const Blocks& b, const Vec3& p0, const Quat& q0, int i, const Vec3& from, double dt) {
+// A bound of the chord block i's rotation since q0 swept at its bounding
+// radius (turn_chord below): 2·min(|q − q0|₁, |q + q0|₁)·r, without a
+// quaternion product (why it bounds it: travels_clearly_below).
+double turn_bound(const Blocks& b, const Quat& q0, int i) {
   const Quat& q = b.state.orientation[i];
   const double minus = std::abs(q.x() - q0.x()) + std::abs(q.y() - q0.y()) + std::abs(q.z() - q0.z()) +
                        std::abs(q.w() - q0.w());
   const double plus = std::abs(q.x() + q0.x()) + std::abs(q.y() + q0.y()) + std::abs(q.z() + q0.z()) +
                       std::abs(q.w() + q0.w());
+  return 2.0 * std::min(minus, plus) * b.props.radius[i];
+}
+
+double travel_l1(const Blocks& b, const Vec3& p0, const Quat& q0, int i, const Vec3& from, double dt) {
   const double radius = b.props.radius[i];
-  return l1(b.state.position[i] - p0 - from) + 2.0 * std::min(minus, plus) * radius +
+  return l1(b.state.position[i] - p0 - from) + turn_bound(b, q0, i) +
          dt * (l1(b.state.velocity[i]) + l1(b.state.angular_velocity[i]) * radius);
 }
 
@@ -86,11 +98,11 @@ double turn_chord(const Blocks& b, const Quat& q0, int i) {
 // block b since the poses (pa, qa), (pb, qb), counting the coming step dt:
 // the relative translation, the chords of both rotations at their bounding
 // radii, and the step at the current speeds.
-double pair_travel(const Blocks& b, int a, int c, const Vec3& pa, const Quat& qa, const Vec3& pb, const Quat& qb,
-                   double dt) {
+double pair_travel(const Blocks& b, int a, int c, const PairPose& p, double dt) {
   const auto& st = b.state;
   const double ra = b.props.radius[a], rc = b.props.radius[c];
-  double u = ((st.position[a] - pa) - (st.position[c] - pb)).norm() + turn_chord(b, qa, a) + turn_chord(b, qb, c);
+  double u = ((st.position[a] - p.pa) - (st.position[c] - p.pb)).norm() + turn_chord(b, p.qa, a) +
+             turn_chord(b, p.qb, c);
   if (dt > 0)
     u += dt * ((st.velocity[a] - st.velocity[c]).norm() + st.angular_velocity[a].norm() * ra +
                st.angular_velocity[c].norm() * rc);
@@ -100,18 +112,9 @@ double pair_travel(const Blocks& b, int a, int c, const Vec3& pa, const Quat& qa
 // A 1-norm bound of pair_travel, without its square roots and quaternion
 // products (each 2-norm below its 1-norm, the turns' |sin(θ/2)| below
 // min(|q − q₀|₁, |q + q₀|₁) as in travels_clearly_below).
-double pair_travel_bound(const Blocks& b, int a, int c, const Vec3& pa, const Quat& qa, const Vec3& pb,
-                         const Quat& qb, double dt) {
+double pair_travel_bound(const Blocks& b, int a, int c, const PairPose& p, double dt) {
   const auto& st = b.state;
-  auto turn = [&](int i, const Quat& q0) {
-    const Quat& q = st.orientation[i];
-    const double minus = std::abs(q.x() - q0.x()) + std::abs(q.y() - q0.y()) + std::abs(q.z() - q0.z()) +
-                         std::abs(q.w() - q0.w());
-    const double plus = std::abs(q.x() + q0.x()) + std::abs(q.y() + q0.y()) + std::abs(q.z() + q0.z()) +
-                        std::abs(q.w() + q0.w());
-    return 2.0 * std::min(minus, plus) * b.props.radius[i];
-  };
-  double u = l1((st.position[a] - pa) - (st.position[c] - pb)) + turn(a, qa) + turn(c, qb);
+  double u = l1((st.position[a] - p.pa) - (st.position[c] - p.pb)) + turn_bound(b, p.qa, a) + turn_bound(b, p.qb, c);
   if (dt > 0)
     u += dt * (l1(st.velocity[a] - st.velocity[c]) + l1(st.angular_velocity[a]) * b.props.radius[a] +
                l1(st.angular_velocity[c]) * b.props.radius[c]);
@@ -292,13 +295,13 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
   // they were sampled are taken over whole; the rest are sampled.
   const int nc = static_cast<int>(im.candidates.size());
   im.todo.clear();
-  if (pair_trigger_ && im.pose_pa.size() == contacts.pairs.size()) {
+  if (pair_trigger_ && im.pose.size() == contacts.pairs.size()) {
     im.kept.assign(static_cast<std::size_t>(nc), -1);
     for (int k = 0; k < nc; ++k) {
       const auto [i, j] = im.candidates[k];
       if (const ContactPair* op = find_pair(contacts, i, j)) {
         const std::size_t o = static_cast<std::size_t>(op - contacts.pairs.data());
-        if (pair_travel(b, i, j, im.pose_pa[o], im.pose_qa[o], im.pose_pb[o], im.pose_qb[o], 0.0) <= travel_) {
+        if (pair_travel(b, i, j, im.pose[o], 0.0) <= travel_) {
           im.kept[static_cast<std::size_t>(k)] = static_cast<int>(o);
           continue;
         }
@@ -325,7 +328,7 @@ bool ContactDetector::moved_pairs(const Blocks& b, const ContactSet& contacts, d
   const auto& im = *impl_;
   moved.clear();
   const std::size_t np = contacts.pairs.size();
-  if (im.pose_pa.size() != np) {  // a set this detector did not build: all of it
+  if (im.pose.size() != np) {  // a set this detector did not build: all of it
     for (std::size_t q = 0; q < np; ++q) moved.push_back(static_cast<int>(q));
     return np > 0;
   }
@@ -336,9 +339,9 @@ bool ContactDetector::moved_pairs(const Blocks& b, const ContactSet& contacts, d
   for (std::size_t q = 0; q < np; ++q) {
     const ContactPair& p = contacts.pairs[q];
     if (bound_first &&
-        pair_travel_bound(b, p.a, p.b, im.pose_pa[q], im.pose_qa[q], im.pose_pb[q], im.pose_qb[q], dt) < clear)
+        pair_travel_bound(b, p.a, p.b, im.pose[q], dt) < clear)
       continue;
-    if (!(pair_travel(b, p.a, p.b, im.pose_pa[q], im.pose_qa[q], im.pose_pb[q], im.pose_qb[q], dt) <= travel_))
+    if (!(pair_travel(b, p.a, p.b, im.pose[q], dt) <= travel_))
       moved.push_back(static_cast<int>(q));  // NaN too: sampled again, the guard judges the state
   }
   return !moved.empty();
@@ -403,14 +406,11 @@ void ContactDetector::resample_in_place(const Blocks& b, ContactSet& contacts, c
     const auto q = static_cast<std::size_t>(moved[m]);
     ContactPair& cp = contacts.pairs[q];
     const int a = cp.a, c = cp.b;
-    im.carry.reach[q] = pair_travel(b, a, c, im.pose_pa[q], im.pose_qa[q], im.pose_pb[q], im.pose_qb[q], 0.0);
+    im.carry.reach[q] = pair_travel(b, a, c, im.pose[q], 0.0);
     ContactPair fresh;
     sample_pair(b, a, c, im.patches[q], false, static_cast<int>(q), cp.first, fresh, contacts.sub);
     cp = fresh;
-    im.pose_pa[q] = st.position[a];
-    im.pose_pb[q] = st.position[c];
-    im.pose_qa[q] = st.orientation[a];
-    im.pose_qb[q] = st.orientation[c];
+    im.pose[q] = {st.position[a], st.position[c], st.orientation[a], st.orientation[c]};
   }
   pairs_resampled_ += static_cast<long long>(moved.size());
   const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
@@ -557,10 +557,7 @@ void ContactDetector::take_pair_poses(const Blocks& b, const ContactSet& old) {
   im.carry.sampled.clear();
   im.carry.reach.clear();
   im.carry.old_kept.assign(old.pairs.size(), 0);
-  im.next_pa.clear();
-  im.next_pb.clear();
-  im.next_qa.clear();
-  im.next_qb.clear();
+  im.next_pose.clear();
   for (std::size_t k = 0; k < nc; ++k) {
     const int o = im.kept[k];
     if (o < 0 && !im.found[k]) continue;
@@ -569,29 +566,20 @@ void ContactDetector::take_pair_poses(const Blocks& b, const ContactSet& old) {
       const auto u = static_cast<std::size_t>(o);
       im.carry.old_kept[u] = 1;
       im.carry.reach.push_back(0.0);
-      im.next_pa.push_back(im.pose_pa[u]);
-      im.next_pb.push_back(im.pose_pb[u]);
-      im.next_qa.push_back(im.pose_qa[u]);
-      im.next_qb.push_back(im.pose_qb[u]);
+      im.next_pose.push_back(im.pose[u]);
       continue;
     }
     double reach = 0;
     if (const ContactPair* op = find_pair(old, i, j)) {
       const auto u = static_cast<std::size_t>(op - old.pairs.data());
-      reach = pair_travel(b, i, j, im.pose_pa[u], im.pose_qa[u], im.pose_pb[u], im.pose_qb[u], 0.0);
+      reach = pair_travel(b, i, j, im.pose[u], 0.0);
     }
     im.carry.sampled.push_back(static_cast<int>(im.carry.reach.size()));
     im.carry.reach.push_back(reach);
-    im.next_pa.push_back(st.position[i]);
-    im.next_pb.push_back(st.position[j]);
-    im.next_qa.push_back(st.orientation[i]);
-    im.next_qb.push_back(st.orientation[j]);
+    im.next_pose.push_back({st.position[i], st.position[j], st.orientation[i], st.orientation[j]});
     ++pairs_resampled_;
   }
-  std::swap(im.pose_pa, im.next_pa);
-  std::swap(im.pose_pb, im.next_pb);
-  std::swap(im.pose_qa, im.next_qa);
-  std::swap(im.pose_qb, im.next_qb);
+  std::swap(im.pose, im.next_pose);
 }
 
 void ContactDetector::save(ByteWriter& w) const {
@@ -599,10 +587,19 @@ void ContactDetector::save(ByteWriter& w) const {
   w.put(im.detected_position);
   w.put(im.detected_orientation);
   if (!pair_trigger_) return;
-  w.put(im.pose_pa);
-  w.put(im.pose_pb);
-  w.put(im.pose_qa);
-  w.put(im.pose_qb);
+  // Each field as an array of its own (the checkpoint's format).
+  std::vector<Vec3> pa, pb;
+  std::vector<Quat> qa, qb;
+  for (const PairPose& p : im.pose) {
+    pa.push_back(p.pa);
+    pb.push_back(p.pb);
+    qa.push_back(p.qa);
+    qb.push_back(p.qb);
+  }
+  w.put(pa);
+  w.put(pb);
+  w.put(qa);
+  w.put(qb);
   w.put(static_cast<std::int64_t>(pairs_resampled_));
 }
 
@@ -612,10 +609,14 @@ void ContactDetector::load(ByteReader& r, std::size_t pairs) {
   r.get_sized(im.detected_position, n, "detector.detected_position");
   r.get_sized(im.detected_orientation, n, "detector.detected_orientation");
   if (!pair_trigger_) return;
-  r.get_sized(im.pose_pa, pairs, "detector.pair_pose_a");
-  r.get_sized(im.pose_pb, pairs, "detector.pair_pose_b");
-  r.get_sized(im.pose_qa, pairs, "detector.pair_orientation_a");
-  r.get_sized(im.pose_qb, pairs, "detector.pair_orientation_b");
+  std::vector<Vec3> pa, pb;
+  std::vector<Quat> qa, qb;
+  r.get_sized(pa, pairs, "detector.pair_pose_a");
+  r.get_sized(pb, pairs, "detector.pair_pose_b");
+  r.get_sized(qa, pairs, "detector.pair_orientation_a");
+  r.get_sized(qb, pairs, "detector.pair_orientation_b");
+  im.pose.resize(pairs);
+  for (std::size_t q = 0; q < pairs; ++q) im.pose[q] = {pa[q], pb[q], qa[q], qb[q]};
   std::int64_t resampled = 0;
   r.get(resampled);
   pairs_resampled_ = resampled;

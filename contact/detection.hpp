@@ -183,8 +183,11 @@ class ContactDetector {
  private:
   bool travels_clearly_below(const Blocks& blocks, const Vec3& drift, bool any_fixed, double dt,
                              double threshold) const;
-  // Stages 2-5 for im.candidates (kept[k] ≥ 0: the previous set's pair
-  // taken over whole); `old` is the previous set, swapped out of `contacts`.
+  // Stages 2-3 for the candidates to sample (im.todo), against `current`'s
+  // planes; stages 4-5 (sample) from them and the pairs taken over whole
+  // (im.kept ≥ 0), the history carried from the previous set; pair by pair,
+  // the pairs' poses, history and ledger (take_pair_poses, carry_and_hold)
+  // and a re-sampling in place (resample_in_place).
   void narrow_phase_and_patches(const Blocks& blocks, const ContactSet& current, DetectionTimes& times);
   void sample(const Blocks& blocks, ContactSet& contacts, bool bond_new, const JointLaws& laws, bool scene,
               DetectionTimes& times);

@@ -426,7 +426,7 @@ void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& cont
   Subcontacts& sc = contacts.sub;
   const Subcontacts& os = old.sub;
   const BlockState& st = blocks.state;
-  const std::size_t n_old = os.size(), n_new = sc.size();
+  const std::size_t n_old = os.size();
   scratch.old_point.resize(n_old);
   scratch.old_stress.resize(n_old);
   // Pair by pair, most pairs are not sampled: only the pairs sampled read
@@ -443,7 +443,6 @@ void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& cont
 #pragma omp parallel for schedule(static) if (parallel) num_threads(threads)
     for (std::size_t o = 0; o < n_old; ++o) old_sample(o);
   }
-  scratch.source.assign(n_new, -1);
   scratch.dissipation_taken.assign(n_old, 0);
 
   // Pair by pair, in parallel: a pair writes only its own subcontacts and
@@ -498,7 +497,6 @@ void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& cont
           src = o;
         }
       }
-      scratch.source[s] = src;
       sc.bonded[s] = os.bonded[src];
       if (!scratch.dissipation_taken[src]) {
         scratch.dissipation_taken[src] = 1;

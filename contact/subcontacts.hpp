@@ -175,7 +175,6 @@ void append_pairs(const ContactSet& from, int first_pair, int last_pair, Contact
 struct CarryScratch {
   std::vector<Vec3> old_point;          // previous subcontacts' incident points at the current pose
   std::vector<Vec3> old_stress;         // previous subcontacts' elastic shear stress F/A, Pa
-  std::vector<int> source;              // per new subcontact: the nearest previous one on the patch, or -1
   std::vector<char> dissipation_taken;  // per previous subcontact: its dissipation went to an inheritor
   // Per block, set by the caller: how far it has moved since the previous
   // detection, its translation and the chord its rotation swept at its
