@@ -44,6 +44,8 @@ struct ContactDetector::Impl {
   // Per pair of the current set: its blocks' poses when it was sampled,
   // and the same being built for the next set.
   std::vector<PairPose> pose, next_pose;
+  // moved_pairs() on several threads: each thread's moved pairs.
+  std::vector<std::vector<int>> moved_parts;
 };
 
 namespace {
@@ -65,9 +67,6 @@ void keep_two_largest(double u, double& u1, double& u2) {
   }
 }
 
-// A 1-norm bound of block i's travel since the detection (at p0, q0),
-// measured from `from`, with the coming step dt (why it bounds the travel:
-// travels_clearly_below).
 // A bound of the chord block i's rotation since q0 swept at its bounding
 // radius (turn_chord below): 2·min(|q − q0|₁, |q + q0|₁)·r, without a
 // quaternion product (why it bounds it: travels_clearly_below).
@@ -80,6 +79,9 @@ double turn_bound(const Blocks& b, const Quat& q0, int i) {
   return 2.0 * std::min(minus, plus) * b.props.radius[i];
 }
 
+// A 1-norm bound of block i's travel since the detection (at p0, q0),
+// measured from `from`, with the coming step dt (why it bounds the travel:
+// travels_clearly_below).
 double travel_l1(const Blocks& b, const Vec3& p0, const Quat& q0, int i, const Vec3& from, double dt) {
   const double radius = b.props.radius[i];
   return l1(b.state.position[i] - p0 - from) + turn_bound(b, q0, i) +
@@ -325,7 +327,7 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
 
 bool ContactDetector::moved_pairs(const Blocks& b, const ContactSet& contacts, double dt, std::vector<int>& moved,
                                   bool bound_first) const {
-  const auto& im = *impl_;
+  auto& im = *impl_;
   moved.clear();
   const std::size_t np = contacts.pairs.size();
   if (im.pose.size() != np) {  // a set this detector did not build: all of it
@@ -336,13 +338,37 @@ bool ContactDetector::moved_pairs(const Blocks& b, const ContactSet& contacts, d
   // 1e-6, far beyond either sum's round-off: the exact test answers the
   // same); the rest by the exact test.
   const double clear = travel_ * (1.0 - 1e-6);
-  for (std::size_t q = 0; q < np; ++q) {
-    const ContactPair& p = contacts.pairs[q];
-    if (bound_first &&
-        pair_travel_bound(b, p.a, p.b, im.pose[q], dt) < clear)
-      continue;
-    if (!(pair_travel(b, p.a, p.b, im.pose[q], dt) <= travel_))
-      moved.push_back(static_cast<int>(q));  // NaN too: sampled again, the guard judges the state
+  auto test = [&](std::size_t begin, std::size_t end, std::vector<int>& out) {
+    for (std::size_t q = begin; q < end; ++q) {
+      const ContactPair& p = contacts.pairs[q];
+      if (bound_first && pair_travel_bound(b, p.a, p.b, im.pose[q], dt) < clear) continue;
+      if (!(pair_travel(b, p.a, p.b, im.pose[q], dt) <= travel_))
+        out.push_back(static_cast<int>(q));  // NaN too: sampled again, the guard judges the state
+    }
+  };
+  // On the step's threads, each a contiguous run of pairs, their lists
+  // joined in thread order: ascending, as one thread would give them.
+  const int threads = threads_ > 1 ? threads_ : 1;  // the step's choice (set_threads)
+  if (threads == 1) {
+    test(0, np, moved);
+    return !moved.empty();
+  }
+  if (im.moved_parts.size() < static_cast<std::size_t>(threads))
+    im.moved_parts.resize(static_cast<std::size_t>(threads));
+  int ran = 1;
+#pragma omp parallel num_threads(threads)
+  {
+    const auto nt = static_cast<std::size_t>(omp_get_num_threads());
+    const auto t = static_cast<std::size_t>(omp_get_thread_num());
+    std::vector<int>& out = im.moved_parts[t];
+    out.clear();
+    test(np * t / nt, np * (t + 1) / nt, out);
+#pragma omp master
+    ran = static_cast<int>(nt);
+  }
+  for (int t = 0; t < ran; ++t) {
+    const std::vector<int>& part = im.moved_parts[static_cast<std::size_t>(t)];
+    moved.insert(moved.end(), part.begin(), part.end());
   }
   return !moved.empty();
 }
