@@ -269,6 +269,12 @@ double overlap_now(const BlockState& st, const Subcontacts& sub, std::size_t s) 
   return sub.ref_offset_local[s] + n.dot(st.position[r]) - n.dot(p);
 }
 
+// ½·kn·A·u² of subcontact s at overlap u: closed, or open and bonded.
+double normal_strain(const JointLaws& laws, const Subcontacts& sub, std::size_t s, double u) {
+  const JointLaw& law = laws.between(sub.ref_block[s], sub.inc_block[s]);
+  return u > 0 || sub.bonded[s] ? 0.5 * law.kn * sub.area[s] * u * u : 0.0;
+}
+
 }  // namespace
 
 // Σ ½·kn·A·u_n² over the subcontacts, in subcontact order. The overlaps
@@ -285,10 +291,7 @@ double normal_strain_energy_now(const JointLaws& laws, const BlockState& st, con
   for (std::ptrdiff_t s = 0; s < n; ++s)
     un[static_cast<std::size_t>(s)] = overlap_now(st, sub, static_cast<std::size_t>(s));
   double e = 0;
-  for (std::size_t s = 0; s < sub.size(); ++s) {
-    const JointLaw& law = laws.between(sub.ref_block[s], sub.inc_block[s]);
-    if (un[s] > 0 || sub.bonded[s]) e += 0.5 * law.kn * sub.area[s] * un[s] * un[s];
-  }
+  for (std::size_t s = 0; s < sub.size(); ++s) e += normal_strain(laws, sub, s, un[s]);
   return e;
 }
 
@@ -296,9 +299,8 @@ double normal_strain_energy_now(const JointLaws& laws, const BlockState& st, con
                                 int last) {
   double e = 0;
   for (int s = first; s < last; ++s) {
-    const double u = overlap_now(st, sub, static_cast<std::size_t>(s));
-    const JointLaw& law = laws.between(sub.ref_block[s], sub.inc_block[s]);
-    if (u > 0 || sub.bonded[s]) e += 0.5 * law.kn * sub.area[s] * u * u;
+    const auto k = static_cast<std::size_t>(s);
+    e += normal_strain(laws, sub, k, overlap_now(st, sub, k));
   }
   return e;
 }
