@@ -20,6 +20,8 @@ each) into PREFIX.csv, and their ensembles.csv into PREFIX_points.csv with
 the columns a diagram needs: the varied values, replicas, the count of each
 status (0 where a sweep saw none), n_mode_I, n_mode_II, judged, p_damage,
 p_stones_lost, p_collapse. Rows in increasing order of the varied values.
+A DIR ending in .csv is a pair X.csv, X_points.csv merged before (columns
+kept from an earlier merge are merged again with new ones).
 
 Uses only the Python standard library.
 """
@@ -72,18 +74,22 @@ def merge(args):
     bands_header, bands = None, []
     keys, points, statuses = None, [], set()
     for d in args.dirs:
-        header, rows = read_rows(os.path.join(d, "bands.csv"))
+        # A sweep's directory, or a pair X.csv, X_points.csv merged before.
+        merged = d.endswith(".csv")
+        bands_csv = d if merged else os.path.join(d, "bands.csv")
+        points_csv = os.path.splitext(d)[0] + "_points.csv" if merged else os.path.join(d, "ensembles.csv")
+        header, rows = read_rows(bands_csv)
         if bands_header is None:
             bands_header = header
         elif header != bands_header:
-            sys.exit(f"{d}/bands.csv: its columns differ from the first directory's")
+            sys.exit(f"{bands_csv}: its columns differ from the first one's")
         bands += rows
-        header, rows = read_rows(os.path.join(d, "ensembles.csv"))
+        header, rows = read_rows(points_csv)
         these = header[: header.index("replicas")]
         if keys is None:
             keys = these
         elif these != keys:
-            sys.exit(f"{d}/ensembles.csv: its varied keys differ from the first directory's")
+            sys.exit(f"{points_csv}: its varied keys differ from the first one's")
         statuses |= {h for h in header if h.startswith("n_") and not h.startswith("n_mode")}
         points += rows
     order = lambda r, names: [float(r[k]) for k in names]  # noqa: E731

@@ -509,6 +509,63 @@ def table_spire_walking():
     return markdown(header, table)
 
 
+def table_spire_bands():
+    """docs/analytical.md's whole spire under one-sine pulses as ensembles at
+    the default settings, from docs/data/spire_bands_default.csv and its
+    _points.csv (scripts/bands_refine.py merge of the sweeps' columns): per
+    T_p the 50 % boundary of damage, stones lost and collapse (fitted: 50 %
+    [16-84 %]; otherwise the bracket the replicas observed), then per point
+    how the replicas ended."""
+    base = os.path.join(ROOT, "docs", "data", "spire_bands_default")
+    with open(base + ".csv", encoding="utf-8") as f:
+        bands = list(csv.DictReader(f))
+    with open(base + "_points.csv", encoding="utf-8") as f:
+        points = list(csv.DictReader(f))
+    axis, column = "ground_motion.acceleration_g", "ground_motion.period"
+
+    def boundary(r):
+        g = lambda k: float(r[f"{axis}_{k}"])  # noqa: E731
+        status = r["status"]
+        if status == "fitted":
+            cell = f"{g(50):.3f} [{g(16):.3f}, {g(84):.3f}]"
+        elif status == "not_identified":
+            cell = f"{g('below'):g}-{g('above'):g} (a step between points)"
+        elif status == "all_reached":
+            cell = f"below {g('above'):g} (every point)"
+        elif status == "none_reached":
+            cell = f"above {g('below'):g} (no point)"
+        else:
+            cell = status.replace("_", " ")
+        if r.get(f"{axis}_falls_back"):
+            cell += f"; fewer again from {g('falls_back'):g}"
+        return cell
+
+    columns = sorted({float(r[column]) for r in bands})
+    by = {(float(r[column]), r["outcome"]): r for r in bands}
+    runs = {c: sum(int(p["replicas"]) for p in points if float(p[column]) == c) for c in columns}
+    top = markdown(["T_p (s)", "damage (g)", "stones lost (g)", "collapse (g)", "runs"],
+                   [[f"{c:g}"] + [boundary(by[(c, o)]) if (c, o) in by else "-"
+                                  for o in ("damage", "stones_lost", "collapse")] + [runs[c]]
+                    for c in columns])
+
+    def outcomes(p):
+        judged = int(p["judged"])
+        collapsed = int(p.get("n_collapsed") or 0)
+        lost = round(float(p["p_stones_lost"] or 0) * judged) - collapsed
+        damaged = int(p.get("n_damaged") or 0) - lost
+        modes = [f"{int(p[k])} Mode {k[7:]}" for k in ("n_mode_I", "n_mode_II") if int(p[k] or 0)]
+        cells = [p.get("n_intact") or "0", str(damaged), str(lost),
+                 f"{collapsed}" + (f" ({', '.join(modes)})" if modes else "")]
+        other = int(p["replicas"]) - judged
+        return cells + [str(other)]
+
+    rows = [[f"{float(p[column]):g}", f"{float(p[axis]):g}"] + outcomes(p)
+            for p in sorted(points, key=lambda p: (float(p[column]), float(p[axis])))]
+    low = markdown(["T_p (s)", "a_p (g)", "intact", "damaged, no stone lost", "stones lost, standing", "collapsed",
+                    "no verdict"], rows)
+    return top + "\n" + low
+
+
 TABLES = {
     "two_commands": table_two_commands,
     "checks": table_checks,
@@ -523,6 +580,7 @@ TABLES = {
     "convergence": table_convergence,
     "distributions": table_distributions,
     "spire_walking": table_spire_walking,
+    "spire_bands": table_spire_bands,
     "ledger": table_ledger,
     "deck_example": table_deck_example,
     "python_example": table_python_example,

@@ -325,7 +325,10 @@ def plot_bands(args, doc):
     no_return = analytic(args, no_return=True) if args.no_return else None
     restituted = analytic(args, args.restitution) if args.restitution is not None else None
     n = len(args.bands)
-    fig, axes = plt.subplots(1, n, figsize=(6.2 * n + 2.6, 5.6), sharey=True, squeeze=False)
+    # The legend and colour bar keep 3.1 in on the right whatever the panels.
+    width = 6.2 * n + 3.1
+    right = 1 - 2.95 / width
+    fig, axes = plt.subplots(1, n, figsize=(width, 5.6), sharey=True, squeeze=False)
     ymax = args.y_max or args.a_max
     sq = None
     for ax, (directory, label) in zip(axes[0], args.bands):
@@ -339,6 +342,8 @@ def plot_bands(args, doc):
             draw_analytic(ax, restituted, f"|θ| > α (c = {args.restitution:.2f})", "--", False, None)
         ax.axhline(prop["uplift_g"], color="0.4", ls=":", lw=1,
                    label=f"uplift, tan α = {prop['uplift_g']:.3f} g")
+        for k, (g, text) in enumerate(args.hline or []):
+            ax.axhline(float(g), color=f"C{k + 4}", ls="--", lw=1, label=text)
         ax.set_xlim(args.Tp_min, args.Tp_max)
         ax.set_ylim(0, ymax)
         ax.set_xlabel("pulse period T_p [s]")
@@ -346,14 +351,14 @@ def plot_bands(args, doc):
         ax.grid(alpha=0.3)
     axes[0][0].set_ylabel("pulse amplitude a_p / g")
     handles, labels = axes[0][-1].get_legend_handles_labels()
-    fig.legend(handles, labels, fontsize=7.5, loc="upper left", bbox_to_anchor=(0.79, 0.93))
-    cbar = fig.colorbar(sq, cax=fig.add_axes([0.80, 0.12, 0.012, 0.28]))
+    fig.legend(handles, labels, fontsize=7.5, loc="upper left", bbox_to_anchor=(right + 0.01, 0.93))
+    cbar = fig.colorbar(sq, cax=fig.add_axes([right + 0.02, 0.12, 0.012, 0.28]))
     cbar.set_label("DEM: observed P(collapse) of the point", fontsize=8)
     cbar.set_ticks([0, 0.5, 1])
     cbar.ax.set_ylim(0, 1)
     if args.title:
         fig.suptitle(args.title, fontsize=10)
-    fig.subplots_adjust(left=0.1, right=0.78, bottom=0.1, top=0.88, wspace=0.06)
+    fig.subplots_adjust(left=0.6 / width, right=right, bottom=0.1, top=0.88, wspace=0.06)
     fig.savefig(args.out, dpi=args.dpi)
     print(args.out)
 
