@@ -3,6 +3,7 @@
 // (The deck must ask for checkpoints: output.checkpoint_interval.)
 #pragma once
 
+#include "io/deck.hpp"
 #include "run/run_scene.hpp"
 
 #include <gtest/gtest.h>
@@ -11,6 +12,16 @@
 #include <string>
 
 namespace polydem {
+
+// The 52-stone dry-stone wall under a 0.5 g, 0.05 s one-sine pulse for
+// 0.03 s with a checkpoint every 0.01 s, and `setting` (a deck key=value):
+// joints slip and are re-sampled between checkpoints.
+inline SceneSpec pulsed_wall_with_checkpoints(const std::string& setting) {
+  const std::string path = std::string(POLYDEM_SOURCE_DIR) + "/examples/verification/dry_stone_wall.toml";
+  return read_deck(path, {setting, "simulation.end_time=0.03", "output.checkpoint_interval=0.01",
+                          "ground_motion.kind=\"sine_pulse\"", "ground_motion.acceleration_g=0.5",
+                          "ground_motion.period=0.05", "ground_motion.direction=[1.0, 0.0, 0.0]"});
+}
 
 inline RunReport expect_restart_continues_bitwise(const SceneSpec& spec) {
   std::string first;

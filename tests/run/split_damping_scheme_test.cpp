@@ -54,12 +54,7 @@ namespace {
 // restored) ends bit for bit as the run that was not stopped: the 52-stone
 // dry-stone wall under a pulse.
 TEST(SplitDampingScheme, ARestartContinuesBitwise) {
-  const std::string path = std::string(POLYDEM_SOURCE_DIR) + "/examples/verification/dry_stone_wall.toml";
-  const SceneSpec spec =
-      read_deck(path, {"simulation.damping_scheme=\"split\"", "simulation.end_time=0.03",
-                       "output.checkpoint_interval=0.01", "ground_motion.kind=\"sine_pulse\"",
-                       "ground_motion.acceleration_g=0.5", "ground_motion.period=0.05",
-                       "ground_motion.direction=[1.0, 0.0, 0.0]"});
+  const SceneSpec spec = pulsed_wall_with_checkpoints("simulation.damping_scheme=\"split\"");
   const RunReport whole = expect_restart_continues_bitwise(spec);
   ASSERT_GT(whole.damping_split_fraction, 0.0);
   EXPECT_GT(whole.energy.damping, 0.0);
