@@ -51,8 +51,9 @@ enum class JointModel { subcontacts, overlap };
 // the detection travel; `pair`, each pair on its own once its two blocks
 // have moved relative to each other by the travel since the pair was
 // sampled, and the whole scene (for new pairs) once any two blocks may have
-// closed by half the margin.
-enum class DetectionTrigger { scene, pair };
+// closed by half the margin. `automatic`: `pair` under the subcontact
+// model, `scene` under the overlap model (which samples nothing).
+enum class DetectionTrigger { automatic, scene, pair };
 
 // [simulation]
 struct SimulationSpec {
@@ -65,10 +66,11 @@ struct SimulationSpec {
   Vec3 gravity{0.0, 0.0, -kGravity};  // m/s²
   double contact_margin = 0.0;    // m; 0 = automatic (2 % of the smallest block's size)
   // m; how far blocks may move relative to each other between two contact
-  // detections, at most half the margin; 0 = automatic (subcontacts: 0.25 %
-  // of the smallest block's size; overlap model: half the margin)
+  // detections, at most half the margin; 0 = automatic (subcontacts pair by
+  // pair: 0.016 % of the smallest block's size, scene-wide 0.25 %; overlap
+  // model: half the margin)
   double detection_travel = 0.0;
-  DetectionTrigger detection_trigger = DetectionTrigger::scene;
+  DetectionTrigger detection_trigger = DetectionTrigger::automatic;
   int threads = 0;                // 0 = OpenMP default
   // Let the run drop to one thread while more are slower (a competing
   // process on a core; integrators/thread_governor.hpp). Same bits either way.
@@ -82,6 +84,12 @@ struct SimulationSpec {
   // in full at t = 0 (core/loads.hpp gravity_at).
   double gravity_rise_time = 0.0;
 };
+
+// Whether the run re-samples its joints pair by pair (DetectionTrigger).
+inline bool pair_by_pair(const SimulationSpec& s) {
+  return s.detection_trigger == DetectionTrigger::pair ||
+         (s.detection_trigger == DetectionTrigger::automatic && s.joint_model == JointModel::subcontacts);
+}
 
 // [equilibrium] : a static stage before the dynamic one, as 3DEC's
 // `model solve` (run/equilibrium.hpp): gravity only, Cundall's local damping

@@ -26,7 +26,7 @@ double seconds(Clock::time_point from, Clock::time_point to) {
 double deck_detection_travel(const SimulationSpec& sim, const Blocks& blocks) {
   if (sim.detection_travel > 0) return sim.detection_travel;
   if (sim.joint_model == JointModel::overlap) return 0.0;
-  return automatic_detection_travel(blocks, sim.detection_trigger == DetectionTrigger::pair);
+  return automatic_detection_travel(blocks, pair_by_pair(sim));
 }
 
 }  // namespace
@@ -48,7 +48,7 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, JointLaws laws,
   overlap_joints_ = sim.joint_model == JointModel::overlap;
   if (overlap_joints_) overlap_scratch_.resize(static_cast<std::size_t>(std::max(1, omp_get_max_threads())));
   detector_.set_pair_joints(overlap_joints_);
-  detector_.set_pair_trigger(sim.detection_trigger == DetectionTrigger::pair);
+  detector_.set_pair_trigger(pair_by_pair(sim));
   ledger_.start(blocks_.state);
   // The first detection on the governor's threads: one, when it governs
   // (beside a competitor the first region on two threads waits ~15 ms for

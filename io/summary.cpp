@@ -214,7 +214,7 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   s.set("damping_split_fraction", r.damping_split_fraction);
   s.set("contact_margin_m", r.margin);
   s.set("detection_travel_m", r.detection_travel);
-  s.set("detection_trigger", spec.simulation.detection_trigger == DetectionTrigger::pair ? "pair" : "scene");
+  s.set("detection_trigger", pair_by_pair(spec.simulation) ? "pair" : "scene");
   s.set("blocks", r.blocks);
   s.set("free_blocks", r.free_blocks);
   const std::vector<GroupTotals> groups = group_totals(spec.blocks, r.assessment.dislodged_blocks);
@@ -235,7 +235,7 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
     s.set("groups", std::move(gs));
   }
   s.set("contact_detections", r.detections);
-  if (spec.simulation.detection_trigger == DetectionTrigger::pair) s.set("pairs_resampled", r.pairs_resampled);
+  if (pair_by_pair(spec.simulation)) s.set("pairs_resampled", r.pairs_resampled);
   s.set("subcontact_updates", r.subcontact_updates);
   if (r.checkpoints > 0) {
     Json c = Json::object();

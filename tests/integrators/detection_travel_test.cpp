@@ -36,9 +36,9 @@ struct Tipping {
 // x = −0.5; the base is drawn away along +x at 0.5 m/s under a joint
 // without friction, so the stone stays where it is and the base's edge
 // passes under its centre at t* = 0.5 s: from then on it tips over the edge.
-Tipping withdraw_support(double margin, double travel, bool pair_trigger = false) {
+Tipping withdraw_support(double margin, double travel, DetectionTrigger trigger = DetectionTrigger::scene) {
   SimulationSpec sim;
-  if (pair_trigger) sim.detection_trigger = DetectionTrigger::pair;
+  sim.detection_trigger = trigger;
   sim.gravity = Vec3(0, 0, -kG);
   sim.detection_travel = travel;
   JointSpec joint;
@@ -106,7 +106,8 @@ TEST(DetectionTravel, AStoneTipsWhenItsSupportIsWithdrawnWhateverTheMargin) {
 // at either margin.
 TEST(DetectionTravel, PairByPairTheStoneTipsAsWithTheSceneWideTrigger) {
   const Tipping scene = withdraw_support(0.01, 0);
-  const Tipping small = withdraw_support(0.01, 0, true), large = withdraw_support(0.04, 0, true);
+  const Tipping small = withdraw_support(0.01, 0, DetectionTrigger::pair),
+                large = withdraw_support(0.04, 0, DetectionTrigger::pair);
   std::printf("pair by pair, onset (tilt at 0.8 s, scene detections, pairs re-sampled): margin 10 mm %.4f s "
               "(%.4f rad, %d, %lld), 40 mm %.4f s (%.4f rad, %d, %lld); scene-wide %.4f s\n",
               small.onset, small.tilt, small.detections, small.pairs_resampled, large.onset, large.tilt,

@@ -105,6 +105,15 @@ TEST(Determinism, ThePairTriggerGivesTheSameBitsOnOneAndTwoThreads) {
   EXPECT_GT(a.energy.slip, 0.0);
 }
 
+// Joints re-sampled scene-wide (simulation.detection_trigger = "scene"):
+// the same bits on 1 and 2 threads.
+TEST(Determinism, TheSceneWideTriggerGivesTheSameBitsOnOneAndTwoThreads) {
+  RunReport b;
+  const RunReport a = one_and_two_threads("simulation.detection_trigger=\"scene\"", b);
+  EXPECT_EQ(a.pairs_resampled, 0);
+  EXPECT_GT(a.energy.slip, 0.0);
+}
+
 // The joint law's kernel in AVX2 lanes and in plain doubles
 // (contact/joint_law_kernels.hpp) give the same bits through a whole run: the wall under the pulse, on two
 // threads, every step's law on one path or the other.
