@@ -7,18 +7,19 @@ benchmarks/results/convergence.csv (table `convergence`, docs/contact.md):
 
 Each case is run once per setting, one setting changed at a time from the
 deck's own (safety factor 0.8, automatic contact margin and detection
-travel, explicit damping):
+travel, the joints re-sampled pair by pair, explicit damping):
 
   settings  default; safety factor 0.4 and 0.2 (`simulation.safety_factor`);
             margin x0.5 and x2 (`simulation.contact_margin`, the automatic
             margin a short run of the same deck reports in summary.json,
-            scaled); detection travel x0.125, x0.25, x0.5 and x2
-            (`simulation.detection_travel`, likewise); split damping
-            (`simulation.damping_scheme = "split"`); the joints re-sampled
-            pair by pair (`simulation.detection_trigger = "pair"`) at their
-            own automatic travel (a sixteenth of the scene-wide one) and at
-            the scene-wide automatic travel x1, x0.5, x0.25, x0.125, x0.0625
-            x0.03125 and x0.015625; the same settings and
+            scaled); split damping (`simulation.damping_scheme = "split"`);
+            detection travel x16, x8, x4, x2, x0.5 and x0.25
+            (`simulation.detection_travel`, the automatic travel likewise
+            scaled); the joints re-sampled scene-wide
+            (`simulation.detection_trigger = "scene"`, "scene trigger") at
+            its automatic travel (sixteen times the pair-by-pair one) with
+            the same settings and at x0.125, x0.25, x0.5 and x2 of that
+            travel; scene-wide, the same settings and
             the margin x0.125 and x0.25 with the detection travel at half the
             margin (`simulation.detection_travel = 1`, taken as half the
             margin: how often the subcontacts are re-sampled then follows the
@@ -68,49 +69,54 @@ PATH = os.path.join(ROOT, "benchmarks", "results", "convergence.csv")
 COLUMNS = ["machine", "cpu", "commit", "date", "case", "setting", "quantity", "value", "unit"]
 
 # setting name -> (overrides, (what is scaled, factor) or None); the order is
-# the table's. "travel half the margin": the detection travel at its largest,
-# the margin's half (the deck's 1 m is taken as that).
+# the table's. The default re-samples the joints pair by pair; "scene
+# trigger": scene-wide (`simulation.detection_trigger = "scene"`), its
+# travel factors of the scene-wide automatic travel, sixteen times the pair
+# by pair one the runs scale. "travel half the margin": the detection
+# travel at its largest, the margin's half (the deck's 1 m is taken as that).
 HALF = ["simulation.detection_travel=1"]
-# the joints re-sampled pair by pair (contact/detection.hpp)
-PAIR = ['simulation.detection_trigger="pair"']
+SCENE = ['simulation.detection_trigger="scene"']
 SETTINGS = {
     "default": ([], None),
     "safety factor 0.4": (["simulation.safety_factor=0.4"], None),
     "safety factor 0.2": (["simulation.safety_factor=0.2"], None),
     "margin x0.5": ([], ("margin", 0.5)),
     "margin x2": ([], ("margin", 2.0)),
-    "travel x0.125": ([], ("travel", 0.125)),
-    "travel x0.25": ([], ("travel", 0.25)),
-    "travel x0.5": ([], ("travel", 0.5)),
-    "travel x2": ([], ("travel", 2.0)),
     "split damping": (['simulation.damping_scheme="split"'], None),
-    "pair trigger": (PAIR, None),
-    "pair trigger, travel x1": (PAIR, ("travel", 1.0)),
-    "pair trigger, travel x0.5": (PAIR, ("travel", 0.5)),
-    "pair trigger, travel x0.25": (PAIR, ("travel", 0.25)),
-    "pair trigger, travel x0.125": (PAIR, ("travel", 0.125)),
-    "pair trigger, travel x0.0625": (PAIR, ("travel", 0.0625)),
-    "pair trigger, travel x0.03125": (PAIR, ("travel", 0.03125)),
-    "pair trigger, travel x0.015625": (PAIR, ("travel", 0.015625)),
-    "travel half the margin": (HALF, None),
-    "safety factor 0.4, travel half the margin": (["simulation.safety_factor=0.4"] + HALF, None),
-    "safety factor 0.2, travel half the margin": (["simulation.safety_factor=0.2"] + HALF, None),
-    "margin x0.125, travel half the margin": (HALF, ("margin", 0.125)),
-    "margin x0.25, travel half the margin": (HALF, ("margin", 0.25)),
-    "margin x0.5, travel half the margin": (HALF, ("margin", 0.5)),
-    "margin x2, travel half the margin": (HALF, ("margin", 2.0)),
-    "split damping, travel half the margin": (['simulation.damping_scheme="split"'] + HALF, None),
+    "travel x16": ([], ("travel", 16.0)),
+    "travel x8": ([], ("travel", 8.0)),
+    "travel x4": ([], ("travel", 4.0)),
+    "travel x2": ([], ("travel", 2.0)),
+    "travel x0.5": ([], ("travel", 0.5)),
+    "travel x0.25": ([], ("travel", 0.25)),
+    "scene trigger": (SCENE, None),
+    "scene trigger, safety factor 0.4": (SCENE + ["simulation.safety_factor=0.4"], None),
+    "scene trigger, safety factor 0.2": (SCENE + ["simulation.safety_factor=0.2"], None),
+    "scene trigger, margin x0.5": (SCENE, ("margin", 0.5)),
+    "scene trigger, margin x2": (SCENE, ("margin", 2.0)),
+    "scene trigger, travel x0.125": (SCENE, ("travel", 2.0)),
+    "scene trigger, travel x0.25": (SCENE, ("travel", 4.0)),
+    "scene trigger, travel x0.5": (SCENE, ("travel", 8.0)),
+    "scene trigger, travel x2": (SCENE, ("travel", 32.0)),
+    "scene trigger, split damping": (SCENE + ['simulation.damping_scheme="split"'], None),
+    "scene trigger, travel half the margin": (SCENE + HALF, None),
+    "scene trigger, safety factor 0.4, travel half the margin": (SCENE + ["simulation.safety_factor=0.4"] + HALF, None),
+    "scene trigger, safety factor 0.2, travel half the margin": (SCENE + ["simulation.safety_factor=0.2"] + HALF, None),
+    "scene trigger, margin x0.125, travel half the margin": (SCENE + HALF, ("margin", 0.125)),
+    "scene trigger, margin x0.25, travel half the margin": (SCENE + HALF, ("margin", 0.25)),
+    "scene trigger, margin x0.5, travel half the margin": (SCENE + HALF, ("margin", 0.5)),
+    "scene trigger, margin x2, travel half the margin": (SCENE + HALF, ("margin", 2.0)),
+    "scene trigger, split damping, travel half the margin": (SCENE + ['simulation.damping_scheme="split"'] + HALF,
+                                                             None),
     "overlap model": (['simulation.joint_model="overlap"'], None),
     "overlap model, margin x0.5": (['simulation.joint_model="overlap"'], ("margin", 0.5)),
     "overlap model, margin x2": (['simulation.joint_model="overlap"'], ("margin", 2.0)),
-    "merged corner stones": (['spire.corner_stones="merged"'], None),
     # the merged spire's automatic margin is 3.55 mm (its stones are larger):
-    # this row keeps the halves' 3.05 mm, to part the geometry from the margin
-    "merged corner stones, margin 3.05 mm": (['spire.corner_stones="merged"', "simulation.contact_margin=0.003046"],
-                                             None),
-    "merged corner stones, travel half the margin": (['spire.corner_stones="merged"'] + HALF, None),
-    "merged corner stones, margin 3.05 mm, travel half the margin": (
-        ['spire.corner_stones="merged"', "simulation.contact_margin=0.003046"] + HALF, None),
+    # the second row keeps the halves' 3.05 mm, to part the geometry from the margin
+    "scene trigger, merged corner stones, travel half the margin": (
+        SCENE + ['spire.corner_stones="merged"'] + HALF, None),
+    "scene trigger, merged corner stones, margin 3.05 mm, travel half the margin": (
+        SCENE + ['spire.corner_stones="merged"', "simulation.contact_margin=0.003046"] + HALF, None),
 }
 
 PULSE = "examples/spire/pulse.toml"
@@ -121,8 +127,8 @@ LAMBDA_ARGS = ["--direction", "90", "--method", "bisection", "--low", "0.155", "
 # settings whose lambda lies below the bracket's low end start lower: 4
 # halvings of [0.105, 0.205] g, 6 trials, the same 0.00625 g at the end
 LAMBDA_LOW = {s: "0.105" for s in SETTINGS if "half the margin" not in s and "merged" not in s}
-LAMBDA_LOW.update({s: "0.105" for s in ("margin x0.125, travel half the margin",
-                                        "margin x0.25, travel half the margin")})
+LAMBDA_LOW.update({s: "0.105" for s in ("scene trigger, margin x0.125, travel half the margin",
+                                        "scene trigger, margin x0.25, travel half the margin")})
 
 
 def pulse(a_g):

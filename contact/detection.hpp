@@ -22,12 +22,13 @@
 // block and push against the reference face's plane, also once the faces
 // have slid so that a point has left the reference face (a stone whose
 // support has moved away still stands on it). The detection travel bounds
-// that lag; under the subcontact model it is by default 0.25 % of the
-// smallest free block, far below half the margin (docs/contact.md, "The
-// detection travel"), under the overlap model (nothing sampled) half the
-// margin.
+// that lag; under the subcontact model it is by default 0.016 % of the
+// smallest free block pair by pair and 0.25 % scene-wide, far below half
+// the margin (docs/contact.md, "The detection travel"), under the overlap
+// model (nothing sampled) half the margin.
 //
-// Triggered pair by pair (simulation.detection_trigger = "pair"), the lag
+// Triggered pair by pair (the subcontact model's default; "scene" below
+// re-samples the whole scene at once), the lag
 // is bounded for each pair by its own blocks' motion: a pair is re-sampled
 // alone (resample()) once its two blocks have moved relative to each other
 // by the detection travel since it was sampled, and the whole scene is
@@ -61,7 +62,7 @@ namespace polydem {
 // (simulation.detection_travel = 0): 0.25 % of the smallest free block's size
 // (of any block when none is free), where the spire's answers lie within a
 // bisection bracket of those at smaller travels (docs/contact.md, "The
-// detection travel"). Pair by pair (`pair_trigger`) a sixteenth of it: a
+// detection travel"). Pair by pair (`pair_trigger`, the default) a sixteenth of it: a
 // pair is then re-sampled on its own blocks' motion, not at the cadence of
 // the fastest pair in the scene, and its travel must be that much smaller
 // for the same answers (docs/contact.md, "Detection pair by pair").

@@ -3,7 +3,9 @@
 //
 //   1. detection, only if some pair may have moved by the detection travel
 //      (contact/detection.hpp; settled at the last step's end where the
-//      threads' bound is clear, step_threads.hpp)
+//      threads' bound is clear, step_threads.hpp); pair by pair (the
+//      default) the scene only at half the margin, and between, the pairs
+//      whose own blocks moved by the travel re-sampled alone
 //   2. joint law: one force slot per subcontact       (contact/joint_law.hpp)
 //      or, under the overlap model, one wrench per pair (overlap_joint.hpp)
 //   3. gather and central-difference update            (block_update.hpp)
