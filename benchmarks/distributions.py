@@ -5,9 +5,10 @@ benchmarks/results/distributions.csv (table `distributions`, docs/ensembles.md):
     /usr/bin/python3 benchmarks/distributions.py build/polydem [--case C]...
         [--setting S]... [--jobs 2] [--force] [--out DIR]
 
-Every ensemble re-samples the joints scene-wide (`simulation.
-detection_trigger = "scene"`): so they were measured; pair by pair, the
-default, they are not yet run. The same ensembles at the deck's safety
+Every ensemble re-samples the joints pair by pair (the default) or, in
+the settings named "scene trigger, ...", scene-wide
+(`simulation.detection_trigger = "scene"`, as the first ensembles were
+measured). The same ensembles at the deck's safety
 factor (0.8) and at half of it
 (`simulation.safety_factor = 0.4`, half the time step); the walking also
 at the contact margin halved and doubled (`simulation.contact_margin`, the
@@ -42,8 +43,9 @@ case and setting is a `polydem sweep` in DIR/<case>_<setting> (default
 DIR out/distributions), resumable: an interrupted benchmark runs only what
 is missing. The walking sweep at the safety factor 0.8 varies the scale over
 2, 4 and 6 (--walking-scales; the scale 4 is compared, docs/spire.md draws
-all three). Every setting also runs with the detection travel at half the
-margin (", travel half the margin": `simulation.detection_travel = 1`). The
+all three). Every scene-wide setting also runs with the detection travel at
+half the margin (", travel half the margin": `simulation.detection_travel =
+1`). The
 CSV keeps one row per (case, setting, quantity) with the machine, CPU,
 commit and date; a (case, setting) already in it is skipped unless --force.
 """
@@ -64,26 +66,38 @@ import timings_csv  # noqa: E402
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 CSV = os.path.join(ROOT, "benchmarks", "results", "distributions.csv")
 FIELDS = ["machine", "cpu", "commit", "date", "case", "setting", "quantity", "value", "unit"]
-SETTINGS = {"safety factor 0.8": [], "safety factor 0.4": ["--set", "simulation.safety_factor=0.4"],
-            "friction on total": ["--set", "joint.friction_normal_force=total"],
-            "margin x0.5": None, "margin x2": None,  # the automatic margin scaled (margin_args)
-            "split damping": ["--set", "simulation.damping_scheme=split"],
-            "merged corner stones": ["--set", "spire.corner_stones=merged"],
-            "merged corner stones, margin 3.05 mm": ["--set", "spire.corner_stones=merged",
-                                                      "--set", "simulation.contact_margin=0.003046"]}
-# The same with the detection travel at half the margin (the deck's 1 m is
-# taken as that), where the margin also sets how often the joints are
-# re-sampled (docs/contact.md, "The detection travel").
-HALF = ", travel half the margin"
-SETTINGS.update({s + HALF: (None if v is None else v + ["--set", "simulation.detection_travel=1"])
-                 for s, v in list(SETTINGS.items())})
-WALKING_ONLY = tuple(s + h for s in ("friction on total", "margin x0.5", "margin x2", "split damping",
-                                     "merged corner stones", "merged corner stones, margin 3.05 mm")
-                     for h in ("", HALF))
-# Every ensemble here re-samples the joints scene-wide (`simulation.
-# detection_trigger = "scene"`, its automatic travel 0.25 % of the smallest
-# block): measured so, and not yet run pair by pair, the default.
+# Every setting is run pair by pair (the default trigger, docs/contact.md)
+# and, as measured before that became the default, scene-wide ("scene
+# trigger, ..."); scene-wide also with the detection travel at half the
+# margin (the deck's 1 m is taken as that), where the margin also sets how
+# often the joints are re-sampled (docs/contact.md, "The detection travel").
+BASE = {"safety factor 0.8": [], "safety factor 0.4": ["--set", "simulation.safety_factor=0.4"],
+        "friction on total": ["--set", "joint.friction_normal_force=total"],
+        "margin x0.5": None, "margin x2": None,  # the automatic margin scaled (margin_args)
+        "split damping": ["--set", "simulation.damping_scheme=split"],
+        "merged corner stones": ["--set", "spire.corner_stones=merged"],
+        "merged corner stones, margin 3.05 mm": ["--set", "spire.corner_stones=merged",
+                                                 "--set", "simulation.contact_margin=0.003046"]}
+SCENE_SETTING = "scene trigger, "
 SCENE = ["--set", "simulation.detection_trigger=scene"]
+HALF = ", travel half the margin"
+SETTINGS = dict(BASE)
+SETTINGS.update({SCENE_SETTING + s: v for s, v in BASE.items()})
+SETTINGS.update({SCENE_SETTING + s + HALF: (None if v is None else v + ["--set", "simulation.detection_travel=1"])
+                 for s, v in BASE.items()})
+
+
+def base_setting(setting):
+    """The setting's name without its trigger and travel."""
+    s = setting[len(SCENE_SETTING):] if setting.startswith(SCENE_SETTING) else setting
+    return s[:-len(HALF)] if s.endswith(HALF) else s
+
+
+def setting_args(setting):
+    return (SCENE if setting.startswith(SCENE_SETTING) else []) + SETTINGS[setting]
+
+
+WALKING_ONLY = tuple(s for s in SETTINGS if base_setting(s) not in ("safety factor 0.8", "safety factor 0.4"))
 TIP = os.path.join(ROOT, "examples", "spire", "tip_pulse.toml")
 EARTHQUAKE = os.path.join(ROOT, "examples", "spire", "earthquake.toml")
 TIP_RUN = ["--replicas", "20", "--quiet", "--band-axis", "ground_motion.acceleration_g",
@@ -120,7 +134,7 @@ def read(path):
 
 
 def tip_case(polydem, period, setting, out, jobs):
-    base = TIP_RUN + SCENE + SETTINGS[setting] + ["--vary", f"ground_motion.period={period}"]
+    base = TIP_RUN + setting_args(setting) + ["--vary", f"ground_motion.period={period}"]
     sweep(polydem, TIP, base + ["--vary", f"ground_motion.acceleration_g={grid(period)}"], out, jobs)
     refine = subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "bands_refine.py"), "grid", out,
                              "--outcomes", "collapse"], stdout=subprocess.PIPE, text=True, check=True).stdout.split()
@@ -154,15 +168,16 @@ def margin_args(setting, default_out):
     """The automatic contact margin of the deck as written (the default
     setting's runs report it in summary.json), scaled."""
     if SETTINGS[setting] is not None:
-        return SCENE + SETTINGS[setting]
+        return setting_args(setting)
     half = ["--set", "simulation.detection_travel=1"] if setting.endswith(HALF) else []
     points = os.path.join(default_out, "points")
     summary = next(os.path.join(points, d, "summary.json") for d in sorted(os.listdir(points))
                    if os.path.exists(os.path.join(points, d, "summary.json")))
     with open(summary) as f:
         margin = json.load(f)["contact_margin_m"]
-    factor = 0.5 if setting.startswith("margin x0.5") else 2.0
-    return SCENE + ["--set", f"simulation.contact_margin={margin * factor!r}"] + half
+    factor = 0.5 if base_setting(setting) == "margin x0.5" else 2.0
+    scene = SCENE if setting.startswith(SCENE_SETTING) else []
+    return scene + ["--set", f"simulation.contact_margin={margin * factor!r}"] + half
 
 
 def median_interval(values, draws=4000, seed=1):
@@ -175,7 +190,7 @@ def median_interval(values, draws=4000, seed=1):
 
 
 def walking_case(polydem, setting, out, jobs, default_out, scales_at_default, replicas):
-    scales = scales_at_default if setting.startswith("safety factor 0.8") else "4"
+    scales = scales_at_default if base_setting(setting) == "safety factor 0.8" else "4"
     sweep(polydem, EARTHQUAKE, ["--set", "output.snapshot_interval=0"] + margin_args(setting, default_out) + ["--quiet",
                                                     "--vary", f"ground_motion.scale={scales}", "--replicas",
                                                     str(replicas)],
@@ -231,7 +246,8 @@ def main():
                 continue
             out = os.path.join(args.out, f"{case}_{setting.replace(' ', '_')}")
             t0 = time.monotonic()
-            default = "walking4_" + ("safety factor 0.8" + (HALF if setting.endswith(HALF) else "")).replace(" ", "_")
+            default = "walking4_" + (setting[:setting.index(base_setting(setting))] + "safety factor 0.8" +
+                                     (HALF if setting.endswith(HALF) else "")).replace(" ", "_")
             got = (walking_case(polydem, setting, out, args.jobs, os.path.join(args.out, default), args.walking_scales,
                                  args.walking_replicas)
                    if case == "walking4"

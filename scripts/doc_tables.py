@@ -355,19 +355,19 @@ def table_distributions():
             lines.append(("spire, record ×4: the median's 5-95 % interval, replicas resampled (mm)", "walking4",
                           median_interval))
     lines.append(("spire, record ×4: replicas", "walking4", lambda q: q.get("replicas", "-")))
-    walking_only = tuple(s + h for s in ("friction on total", "margin x0.5", "margin x2", "split damping",
-                                         "merged corner stones", "merged corner stones, margin 3.05 mm")
-                         for h in ("", ", travel half the margin"))
+    # One row per setting (pair by pair first, then scene-wide), one column per figure.
     table = []
-    for label, case, show in lines:
-        table.append([label] + [show(got[(case, s)]) if (case, s) in got else
-                                "–" if case.startswith("tip") and s in walking_only else "not run" for s in settings])
+    for s in settings:
+        table.append([s.replace(" x", " ×")] + [
+            show(got[(case, s)]) if (case, s) in got else
+            "–" if case.startswith("tip") and s in distributions.WALKING_ONLY else "not run"
+            for _, case, show in lines])
     commits = sorted({r["commit"] for r in rows})
-    return (markdown(["figure"] + [s.replace(" x", " ×") for s in settings], table) +
+    return (markdown(["setting"] + [label for label, _, _ in lines], table) +
             f"\nFrom `benchmarks/distributions.py build/polydem` at {', '.join(commits)}: the tip 20 replicas a "
-            f"point (at the two safety factors only), the spire's replicas as the row says; every ensemble with "
-            "the joints re-sampled scene-wide (`simulation.detection_trigger = \"scene\"`, its automatic travel "
-            "0.38 mm on the spire; not yet run pair by pair, the default); \"travel half "
+            f"point (at the two safety factors only), the spire's replicas as the column says; the joints re-sampled "
+            "pair by pair (the default) or, \"scene trigger\", scene-wide (`simulation.detection_trigger = "
+            "\"scene\"`, its automatic travel 0.38 mm on the spire); \"travel half "
             "the margin\": the detection travel at half the contact margin (`simulation.detection_travel = 1`); "
             "\"a step\": every replica "
             "survives at the first amplitude and collapses at the second (0.01 g apart). Run times in "
