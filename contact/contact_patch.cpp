@@ -263,11 +263,34 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
     return keep_without_points;
   }
 
-  // Patch area and tributary areas, on the common plane.
+  // Patch area and tributary areas, on the common plane: each vertex takes
+  // half of the two fan triangles at it, the fan about the polygon's area
+  // centroid. A vertex appears where a corner of the incident face crosses
+  // a side plane of the reference face (one corner becomes two crossings a
+  // hair apart): the area centroid does not move when it does, so the
+  // vertices' areas and the pair's force and moment change with the
+  // polygon's shape, not with its vertex count (the mean of the vertices
+  // jumps towards the doubled corner).
   const std::size_t np = s.poly.size();
+  const double face_area_min = std::min(face_area(rp, ref_face), face_area(ip, inc_face));
   Vec3 centre = Vec3::Zero();
   for (const Vec3& p : s.poly) centre += p - (n.dot(p) - offset) * n;
   centre /= static_cast<double>(np);
+  if (np >= 3) {
+    Vec3 moment = Vec3::Zero();
+    double signed_area = 0;
+    const Vec3 q0 = s.poly[0] - (n.dot(s.poly[0]) - offset) * n;
+    for (std::size_t j = 1; j + 1 < np; ++j) {
+      const Vec3 q1 = s.poly[j] - (n.dot(s.poly[j]) - offset) * n;
+      const Vec3 q2 = s.poly[j + 1] - (n.dot(s.poly[j + 1]) - offset) * n;
+      const double a = 0.5 * (q1 - q0).cross(q2 - q0).dot(n);
+      moment += (a / 3.0) * (q0 + q1 + q2);
+      signed_area += a;
+    }
+    // A polygon without area keeps the vertices' mean (its areas are the
+    // nominal ones below).
+    if (std::abs(signed_area) > 1e-9 * face_area_min) centre = moment / signed_area;
+  }
   out.points.resize(np);
   double total = 0;
   for (std::size_t j = 0; j < np; ++j) {
@@ -286,7 +309,6 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
       total += tri;
     }
   }
-  const double face_area_min = std::min(face_area(rp, ref_face), face_area(ip, inc_face));
   if (total <= 1e-9 * face_area_min) {
     // A polygon without area: the two faces touch only along their
     // boundary (side-by-side stones whose faces meet at an edge line, or a

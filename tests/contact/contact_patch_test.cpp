@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <random>
 
 namespace polydem {
@@ -134,6 +135,39 @@ TEST(FindPatch, CubeHalfOverTheEdgeIsClippedToTheBase) {
   }
   EXPECT_EQ(on_edge, 2);
   EXPECT_EQ(corners, 2);
+}
+
+// A cube turned 30° about z with a corner over the base's side plane
+// x = 1.5 and then a hair beyond it: four vertices (the cube's corners)
+// become five (the corner replaced by two crossings 2e-9 m apart). The
+// vertices' areas and their first moment about the origin (what the
+// pair's force and moment are made of at a uniform overlap) change by
+// O(1e-9), as the polygon does; a fan about the vertices' mean moved its
+// centre a fifth of the way to the doubled corner and the first moment by
+// 0.07 m³.
+TEST(FindPatch, AVertexAppearingAtASidePlaneMovesNoArea) {
+  auto patch_at = [](double beyond) {
+    Pair p;
+    const double phi = std::numbers::pi / 6;
+    p.b.R = Eigen::AngleAxisd(phi, Vec3::UnitZ()).toRotationMatrix();
+    p.b.x.x() = 1.5 - 0.5 * (std::cos(phi) + std::sin(phi)) + beyond;
+    p.b.x.y() = 0.2;
+    Patch patch;
+    PatchScratch scratch;
+    EXPECT_TRUE(find_patch(p.a, p.b, 0.02, -1, -1, patch, scratch));
+    return patch;
+  };
+  const Patch inside = patch_at(-1e-9), beyond = patch_at(1e-9);
+  ASSERT_EQ(inside.points.size(), 4u);
+  ASSERT_EQ(beyond.points.size(), 5u);
+  auto first_moment = [](const Patch& p) {
+    Vec3 m = Vec3::Zero();
+    for (const PatchPoint& q : p.points) m += q.area * q.point;
+    return m;
+  };
+  EXPECT_NEAR(area_sum(inside), 1.0, kTol);
+  EXPECT_NEAR(area_sum(beyond), area_sum(inside), 1e-8);
+  EXPECT_LT((first_moment(beyond) - first_moment(inside)).norm(), 1e-8);
 }
 
 // A cube tipped by θ about one bottom edge (the pivot, kept on z = 0): the
