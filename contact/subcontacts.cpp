@@ -469,8 +469,15 @@ void carry_history(const Blocks& blocks, const ContactSet& old, ContactSet& cont
     double radius2 = 0;
     for (int o = op->first; o < op->first + op->count; ++o)
       radius2 = std::max(radius2, (scratch.old_point[o] - pp.centroid).squaredNorm());
-    pp.tolerance = by_pair ? (1.0 + 1e-9) * scratch.reach[static_cast<std::size_t>(q)]
-                           : pair_reach(scratch, cp.a, cp.b);
+    // The reach, and at least a billionth of the patch's size or of its
+    // lever arm on the incident block (a patch of one point): a point of
+    // the previous patch found again where it was (the blocks not moved)
+    // lies on it to round-off, not beyond it.
+    const int c0 = os.inc_block[op->first];
+    const double lever = (scratch.old_point[op->first] - st.position[c0]).norm();
+    pp.tolerance = std::max(by_pair ? (1.0 + 1e-9) * scratch.reach[static_cast<std::size_t>(q)]
+                                    : pair_reach(scratch, cp.a, cp.b),
+                            1e-9 * std::max(std::sqrt(radius2), lever));
     const double tiny_area = 1e-12 * radius2;
     const Vec3 n = st.rotation[cp.ref_block] * sc.ref_normal_local[cp.first];
     // The previous forces were on the previous incident block; if the
