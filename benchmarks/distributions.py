@@ -246,8 +246,9 @@ def main():
                 continue
             out = os.path.join(args.out, f"{case}_{setting.replace(' ', '_')}")
             t0 = time.monotonic()
-            default = "walking4_" + (setting[:setting.index(base_setting(setting))] + "safety factor 0.8" +
-                                     (HALF if setting.endswith(HALF) else "")).replace(" ", "_")
+            trigger = SCENE_SETTING if setting.startswith(SCENE_SETTING) else ""
+            half = HALF if setting.endswith(HALF) else ""
+            default = "walking4_" + (trigger + "safety factor 0.8" + half).replace(" ", "_")
             got = (walking_case(polydem, setting, out, args.jobs, os.path.join(args.out, default), args.walking_scales,
                                  args.walking_replicas)
                    if case == "walking4"

@@ -58,19 +58,8 @@ Scene spire_scene(double move) {
 }
 
 Scene cube_scene(bool corner, double move) {
-  Scene s{build_blocks({test::block_spec("below", make_box(Vec3(1, 1, 1), Vec3(0, 0, -0.5)), BlockMotion::free),
-                        test::block_spec("above", make_box(Vec3(1, 1, 1), Vec3(0, 0, 0)), BlockMotion::free)}),
-          {},
-          0.01,
-          move,
-          0.0};
+  Scene s{test::cube_into_cube(corner, 0.002), {}, 0.01, move, 0.0};
   s.laws = uniform_joint_laws(test::round_law(0.5), 2);
-  Blocks& b = s.blocks;
-  test::turn(b, 1, std::numbers::pi / 4, Vec3::UnitX());
-  if (corner) test::turn(b, 1, std::atan(1 / std::sqrt(2.0)), Vec3::UnitY());
-  double lowest = 1e9;
-  for (const Vec3& v : b.props.local_shape[1].vertices) lowest = std::min(lowest, (b.state.rotation[1] * v).z());
-  b.state.position[1].z() = -lowest - 0.002;
   return s;
 }
 

@@ -273,36 +273,37 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
   // jumps towards the doubled corner).
   const std::size_t np = s.poly.size();
   const double face_area_min = std::min(face_area(rp, ref_face), face_area(ip, inc_face));
+  out.points.resize(np);
+  std::vector<Vec3>& on_plane = s.next;  // the vertices projected on the common plane
+  on_plane.resize(np);
   Vec3 centre = Vec3::Zero();
-  for (const Vec3& p : s.poly) centre += p - (n.dot(p) - offset) * n;
+  for (std::size_t j = 0; j < np; ++j) {
+    out.points[j].point = s.poly[j];
+    out.points[j].separation = n.dot(s.poly[j]) - offset;
+    out.points[j].feature = s.poly_id[j];
+    out.points[j].area = 0;
+    on_plane[j] = s.poly[j] - out.points[j].separation * n;
+    centre += on_plane[j];
+  }
   centre /= static_cast<double>(np);
   if (np >= 3) {
     Vec3 moment = Vec3::Zero();
     double signed_area = 0;
-    const Vec3 q0 = s.poly[0] - (n.dot(s.poly[0]) - offset) * n;
+    const Vec3& q0 = on_plane[0];
     for (std::size_t j = 1; j + 1 < np; ++j) {
-      const Vec3 q1 = s.poly[j] - (n.dot(s.poly[j]) - offset) * n;
-      const Vec3 q2 = s.poly[j + 1] - (n.dot(s.poly[j + 1]) - offset) * n;
-      const double a = 0.5 * (q1 - q0).cross(q2 - q0).dot(n);
-      moment += (a / 3.0) * (q0 + q1 + q2);
+      const double a = 0.5 * (on_plane[j] - q0).cross(on_plane[j + 1] - q0).dot(n);
+      moment += (a / 3.0) * (q0 + on_plane[j] + on_plane[j + 1]);
       signed_area += a;
     }
     // A polygon without area keeps the vertices' mean (its areas are the
     // nominal ones below).
     if (std::abs(signed_area) > 1e-9 * face_area_min) centre = moment / signed_area;
   }
-  out.points.resize(np);
   double total = 0;
-  for (std::size_t j = 0; j < np; ++j) {
-    out.points[j].point = s.poly[j];
-    out.points[j].separation = n.dot(s.poly[j]) - offset;
-    out.points[j].feature = s.poly_id[j];
-    out.points[j].area = 0;
-  }
   if (np >= 3) {
     for (std::size_t j = 0; j < np; ++j) {
-      const Vec3 pj = s.poly[j] - out.points[j].separation * n - centre;
-      const Vec3 pk = s.poly[(j + 1) % np] - out.points[(j + 1) % np].separation * n - centre;
+      const Vec3 pj = on_plane[j] - centre;
+      const Vec3 pk = on_plane[(j + 1) % np] - centre;
       const double tri = 0.5 * std::abs(pj.cross(pk).dot(n));
       out.points[j].area += 0.5 * tri;
       out.points[(j + 1) % np].area += 0.5 * tri;

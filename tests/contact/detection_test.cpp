@@ -492,13 +492,7 @@ TEST(Redetection, ADetectionRightAfterADetectionChangesNoForceOrMoment) {
   }
   for (const bool corner : {false, true}) {
     for (std::uint64_t seed : {7u, 8u, 9u}) {
-      Blocks b = build_blocks({block_spec("below", make_box(Vec3(1, 1, 1), Vec3(0, 0, -0.5)), BlockMotion::free),
-                               block_spec("above", make_box(Vec3(1, 1, 1), Vec3(0, 0, 0)), BlockMotion::free)});
-      test::turn(b, 1, std::numbers::pi / 4, Vec3::UnitX());
-      if (corner) test::turn(b, 1, std::atan(1 / std::sqrt(2.0)), Vec3::UnitY());
-      double lowest = 1e9;
-      for (const Vec3& v : b.props.local_shape[1].vertices) lowest = std::min(lowest, (b.state.rotation[1] * v).z());
-      b.state.position[1].z() = -lowest - 0.002;
+      Blocks b = test::cube_into_cube(corner, 0.002);
       const test::RedetectionJump j = test::redetection_jump(
           test::JointModelKind::subcontacts, b, uniform_joint_laws(test::round_law(0.5), 2), 0.01, seed, 0.0);
       EXPECT_EQ(j.pairs, 1u);

@@ -232,17 +232,7 @@ TEST(OverlapJoint, ForcesDoNotJumpAtARedetectionOnTheSpire) {
 
 TEST(OverlapJoint, ForcesDoNotJumpAtARedetectionEdgeOnAndCornerOn) {
   for (const bool corner : {false, true}) {
-    std::vector<BlockSpec> specs = {
-        block_spec("below", make_box(Vec3(1, 1, 1), Vec3(0, 0, -0.5)), BlockMotion::free),
-        block_spec("above", make_box(Vec3(1, 1, 1), Vec3(0, 0, 0)), BlockMotion::free)};
-    Blocks b = build_blocks(specs);
-    // Above: an edge (about x by 45°) or a corner (then about y by 35.26°)
-    // down, 2 mm into the block below.
-    turn(b, 1, std::numbers::pi / 4, Vec3::UnitX());
-    if (corner) turn(b, 1, std::atan(1 / std::sqrt(2.0)), Vec3::UnitY());
-    double lowest = 1e9;
-    for (const Vec3& v : b.props.local_shape[1].vertices) lowest = std::min(lowest, (b.state.rotation[1] * v).z());
-    b.state.position[1].z() = -lowest - 0.002;
+    Blocks b = test::cube_into_cube(corner, 0.002);
     const double worst = redetection_jump(b, uniform_joint_laws(law_for_test(), 2), 0.01, corner ? 7 : 9, 0.02);
     std::printf("%s-on: worst jump at a re-detection %.3g\n", corner ? "corner" : "edge", worst);
     EXPECT_LT(worst, 1e-9);

@@ -27,6 +27,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <random>
 #include <utility>
 #include <vector>
@@ -64,6 +65,20 @@ inline Blocks default_spire_blocks() {
   for (const GeneratedBlock& g : model.blocks)
     specs.push_back(block_spec(g.name, g.shape, g.kind == BlockKind::base ? BlockMotion::fixed : BlockMotion::free));
   return build_blocks(specs);
+}
+
+// Two free 1 m cubes, the upper one turned to come down on the lower one's
+// top face edge-on (about x by 45°) or corner-on (then about y by 35.26°),
+// its lowest point `depth` into it.
+inline Blocks cube_into_cube(bool corner, double depth) {
+  Blocks b = build_blocks({block_spec("below", make_box(Vec3(1, 1, 1), Vec3(0, 0, -0.5)), BlockMotion::free),
+                           block_spec("above", make_box(Vec3(1, 1, 1), Vec3(0, 0, 0)), BlockMotion::free)});
+  turn(b, 1, std::numbers::pi / 4, Vec3::UnitX());
+  if (corner) turn(b, 1, std::atan(1 / std::sqrt(2.0)), Vec3::UnitY());
+  double lowest = 1e9;
+  for (const Vec3& v : b.props.local_shape[1].vertices) lowest = std::min(lowest, (b.state.rotation[1] * v).z());
+  b.state.position[1].z() = -lowest - depth;
+  return b;
 }
 
 enum class JointModelKind { subcontacts, overlap };
