@@ -25,7 +25,10 @@ travel, the joints re-sampled pair by pair, explicit damping):
             margin: how often the subcontacts are re-sampled then follows the
             margin); the overlap joint model (`simulation.joint_model =
             "overlap"`, whose automatic travel is half the margin) at the
-            margin x1, x0.5 and x2; and, a geometry rather than a numerical
+            margin x1, x0.5 and x2; the joints' points following the blocks
+            (`simulation.joint_sampling = "step"`, "points following the
+            blocks") at the default settings, safety factor 0.4, margin x0.5
+            and x2, and travel x4 and x16; and, a geometry rather than a numerical
             setting, the spire's corner halves merged (`spire.corner_stones =
             "merged"`, issue 31's stagger artefacts), at its own automatic
             margin and at the halves' (3.05 mm)
@@ -76,6 +79,8 @@ COLUMNS = ["machine", "cpu", "commit", "date", "case", "setting", "quantity", "v
 # travel at its largest, the margin's half (the deck's 1 m is taken as that).
 HALF = ["simulation.detection_travel=1"]
 SCENE = ['simulation.detection_trigger="scene"']
+# the joints' points following the blocks between detections (simulation.joint_sampling)
+STEP = ['simulation.joint_sampling="step"']
 SETTINGS = {
     "default": ([], None),
     "safety factor 0.4": (["simulation.safety_factor=0.4"], None),
@@ -108,6 +113,12 @@ SETTINGS = {
     "scene trigger, margin x2, travel half the margin": (SCENE + HALF, ("margin", 2.0)),
     "scene trigger, split damping, travel half the margin": (SCENE + ['simulation.damping_scheme="split"'] + HALF,
                                                              None),
+    "points following the blocks": (STEP, None),
+    "points following the blocks, safety factor 0.4": (STEP + ["simulation.safety_factor=0.4"], None),
+    "points following the blocks, margin x0.5": (STEP, ("margin", 0.5)),
+    "points following the blocks, margin x2": (STEP, ("margin", 2.0)),
+    "points following the blocks, travel x4": (STEP, ("travel", 4.0)),
+    "points following the blocks, travel x16": (STEP, ("travel", 16.0)),
     "overlap model": (['simulation.joint_model="overlap"'], None),
     "overlap model, margin x0.5": (['simulation.joint_model="overlap"'], ("margin", 0.5)),
     "overlap model, margin x2": (['simulation.joint_model="overlap"'], ("margin", 2.0)),

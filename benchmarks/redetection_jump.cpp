@@ -41,7 +41,14 @@ namespace {
 
 using test::JointModelKind;
 
-const char* name(JointModelKind m) { return m == JointModelKind::subcontacts ? "subcontacts" : "overlap"; }
+const char* name(JointModelKind m) {
+  switch (m) {
+    case JointModelKind::subcontacts: return "subcontacts";
+    case JointModelKind::subcontacts_step: return "subcontacts, points following the blocks";
+    case JointModelKind::overlap: return "overlap";
+  }
+  return "";
+}
 
 struct Scene {
   Blocks blocks;
@@ -91,7 +98,8 @@ int main(int argc, char** argv) {
       {"1 m cube corner-on 2 mm into a cube, not moved", [] { return cube_scene(true, 0.0); }},
       {"1 m cube corner-on 2 mm into a cube, moved 0.02 x the 10 mm margin", [] { return cube_scene(true, 0.02); }}};
   Table table({"joint model", "scene", "seeds", "pairs", "worst jump"});
-  for (const JointModelKind m : {JointModelKind::subcontacts, JointModelKind::overlap}) {
+  for (const JointModelKind m :
+       {JointModelKind::subcontacts, JointModelKind::subcontacts_step, JointModelKind::overlap}) {
     for (const Case& k : cases) {
       test::RedetectionJump worst;
       for (int seed = 0; seed < seeds; ++seed) {

@@ -103,7 +103,75 @@ EdgeAxis best_edge_axis(const PosedBlock& a, const std::vector<Vec3>& wa, const 
 
 }  // namespace
 
+double corner_areas(const Vec3* q, std::size_t np, const Vec3& n, double floor, double* area) {
+  for (std::size_t j = 0; j < np; ++j) area[j] = 0;
+  if (np < 3) return 0;
+  double signed_area = 0;
+  double extent = 0;
+  for (std::size_t j = 1; j + 1 < np; ++j) signed_area += 0.5 * (q[j] - q[0]).cross(q[j + 1] - q[0]).dot(n);
+  for (std::size_t j = 0; j < np; ++j) extent = std::max(extent, (q[(j + 1) % np] - q[j]).squaredNorm());
+  const double total = std::abs(signed_area);
+  if (total <= floor) return total;
+  // An edge shorter than this joins two vertices at one place.
+  const double same = 1e-24 * extent;
+  const double orientation = signed_area > 0 ? 1.0 : -1.0;
+  double turns = 0;
+  for (std::size_t j = 0; j < np; ++j) {
+    const Vec3 in = q[j] - q[(j + np - 1) % np];
+    if (in.squaredNorm() <= same) continue;  // the vertex before has its corner
+    Vec3 out = Vec3::Zero();
+    for (std::size_t k = 0; k + 1 < np; ++k) {
+      out = q[(j + k + 1) % np] - q[(j + k) % np];
+      if (out.squaredNorm() > same) break;
+    }
+    // The exterior angle, turning the polygon's way round n (a vertex
+    // turning back, as a polygon folded by round-off does, takes nothing).
+    area[j] = std::max(0.0, std::atan2(orientation * in.cross(out).dot(n), in.dot(out)));
+    turns += area[j];
+  }
+  // The turns add up to 2π for a convex polygon; dividing by their sum
+  // keeps the areas' sum the polygon's area to round-off.
+  if (turns == 0) return total;
+  for (std::size_t j = 0; j < np; ++j) area[j] = total * (area[j] / turns);
+  return total;
+}
+
 double corner_area_of_size(double size) { return 0.25 * size * size; }
+
+// A vertex appears where a corner of the incident face crosses a side plane
+// of the reference face (one corner becomes two crossings a hair apart): the
+// area centroid does not move when it does, so the vertices' areas and the
+// pair's force and moment change with the polygon's shape, not with its
+// vertex count (the mean of the vertices jumps towards the doubled corner).
+double fan_areas(const Vec3* on_plane, std::size_t np, const Vec3& n, double floor, double* area) {
+  Vec3 centre = Vec3::Zero();
+  for (std::size_t j = 0; j < np; ++j) {
+    area[j] = 0;
+    centre += on_plane[j];
+  }
+  centre /= static_cast<double>(np);
+  if (np < 3) return 0;
+  Vec3 moment = Vec3::Zero();
+  double signed_area = 0;
+  const Vec3& q0 = on_plane[0];
+  for (std::size_t j = 1; j + 1 < np; ++j) {
+    const double a = 0.5 * (on_plane[j] - q0).cross(on_plane[j + 1] - q0).dot(n);
+    moment += (a / 3.0) * (q0 + on_plane[j] + on_plane[j + 1]);
+    signed_area += a;
+  }
+  // A polygon without area keeps the vertices' mean.
+  if (std::abs(signed_area) > floor) centre = moment / signed_area;
+  double total = 0;
+  for (std::size_t j = 0; j < np; ++j) {
+    const Vec3 pj = on_plane[j] - centre;
+    const Vec3 pk = on_plane[(j + 1) % np] - centre;
+    const double tri = 0.5 * std::abs(pj.cross(pk).dot(n));
+    area[j] += 0.5 * tri;
+    area[(j + 1) % np] += 0.5 * tri;
+    total += tri;
+  }
+  return total;
+}
 
 double face_separation(const PosedBlock& self, int face, const std::vector<Vec3>& other) {
   const Vec3 n = self.R * self.shape->normals[face];
@@ -130,7 +198,8 @@ bool find_patch(const PosedBlock& a, const PosedBlock& b, double margin, int pre
 }
 
 bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const NarrowPhaseHit& hit,
-                 int prev_ref_side, int prev_ref_face, Patch& out, PatchScratch& s, bool keep_without_points) {
+                 int prev_ref_side, int prev_ref_face, Patch& out, PatchScratch& s, bool keep_without_points,
+                 PatchPoints points) {
   world_vertices(a, s.world_a);
   world_vertices(b, s.world_b);
   const double mpr_overlap = hit.overlap;  // of the real (uninflated) blocks
@@ -219,10 +288,14 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
   }
   s.poly.clear();
   s.poly_id.clear();
+  s.poly_def.clear();
+  s.poly_edge.clear();
   const auto& iface = ip.faces[inc_face];
   for (std::size_t j = 0; j < iface.size(); ++j) {
     s.poly.push_back(inc_w[iface[j]]);
     s.poly_id.push_back(static_cast<std::uint32_t>(j));
+    s.poly_def.push_back({PointKind::incident_vertex, iface[j], -1, -1, -1});
+    s.poly_edge.push_back({iface[j], iface[(j + 1) % iface.size()], -1});
   }
   const auto& rface = rp.faces[ref_face];
   for (std::size_t k = 0; k < rface.size() && !s.poly.empty(); ++k) {
@@ -235,25 +308,41 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
     const double c = m.dot(v0);
     s.next.clear();
     s.next_id.clear();
+    s.next_def.clear();
+    s.next_edge.clear();
+    const int side = static_cast<int>(k);
     const std::size_t np = s.poly.size();
     for (std::size_t j = 0; j < np; ++j) {
       const Vec3& P = s.poly[j];
       const Vec3& Q = s.poly[(j + 1) % np];
       const double dp = m.dot(P) - c, dq = m.dot(Q) - c;
+      const PatchScratch::EdgeLine& along = s.poly_edge[j];  // the line P–Q lies on
       if (dp <= 0) {
         s.next.push_back(P);
         s.next_id.push_back(s.poly_id[j]);
+        s.next_def.push_back(s.poly_def[j]);
+        s.next_edge.push_back(along);
       }
       if ((dp < 0 && dq > 0) || (dp > 0 && dq < 0)) {
         const double t = dp / (dp - dq);
         s.next.push_back(P + t * (Q - P));
         const std::uint32_t idp = s.poly_id[j] & 0x3FFu, idq = s.poly_id[(j + 1) % np] & 0x3FFu;
         s.next_id.push_back(0x80000000u | (static_cast<std::uint32_t>(k & 0x3FF) << 20) | (idp << 10) | idq);
+        // The crossing of P–Q's line with this side plane; leaving, the
+        // polygon goes on along the side plane, entering, along P–Q.
+        if (along.side < 0)
+          s.next_def.push_back({PointKind::incident_edge, along.v0, along.v1, side, -1});
+        else
+          s.next_def.push_back({PointKind::reference_corner, -1, -1, along.side, side});
+        s.next_edge.push_back(dp < 0 ? PatchScratch::EdgeLine{-1, -1, side} : along);
       }
     }
     std::swap(s.poly, s.next);
     std::swap(s.poly_id, s.next_id);
+    std::swap(s.poly_def, s.next_def);
+    std::swap(s.poly_edge, s.next_edge);
   }
+  const double face_area_min = std::min(face_area(rp, ref_face), face_area(ip, inc_face));
   if (s.poly.empty()) {  // the incident face misses the reference face
     out.ref_face = ref_face;
     out.inc_face = inc_face;
@@ -263,53 +352,29 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
     return keep_without_points;
   }
 
-  // Patch area and tributary areas, on the common plane: each vertex takes
-  // half of the two fan triangles at it, the fan about the polygon's area
-  // centroid. A vertex appears where a corner of the incident face crosses
-  // a side plane of the reference face (one corner becomes two crossings a
-  // hair apart): the area centroid does not move when it does, so the
-  // vertices' areas and the pair's force and moment change with the
-  // polygon's shape, not with its vertex count (the mean of the vertices
-  // jumps towards the doubled corner).
+  // Patch area and tributary areas, on the common plane (fan_areas).
   const std::size_t np = s.poly.size();
-  const double face_area_min = std::min(face_area(rp, ref_face), face_area(ip, inc_face));
   out.points.resize(np);
   std::vector<Vec3>& on_plane = s.next;  // the vertices projected on the common plane
   on_plane.resize(np);
-  Vec3 centre = Vec3::Zero();
   for (std::size_t j = 0; j < np; ++j) {
-    out.points[j].point = s.poly[j];
-    out.points[j].separation = n.dot(s.poly[j]) - offset;
-    out.points[j].feature = s.poly_id[j];
-    out.points[j].area = 0;
-    on_plane[j] = s.poly[j] - out.points[j].separation * n;
-    centre += on_plane[j];
+    PatchPoint& pt = out.points[j];
+    pt.point = s.poly[j];
+    pt.separation = n.dot(s.poly[j]) - offset;
+    pt.feature = s.poly_id[j];
+    pt.area = 0;
+    pt.kind = s.poly_def[j].kind;
+    pt.v0 = s.poly_def[j].v0;
+    pt.v1 = s.poly_def[j].v1;
+    pt.side = s.poly_def[j].side;
+    pt.side2 = s.poly_def[j].side2;
+    on_plane[j] = s.poly[j] - pt.separation * n;
   }
-  centre /= static_cast<double>(np);
-  if (np >= 3) {
-    Vec3 moment = Vec3::Zero();
-    double signed_area = 0;
-    const Vec3& q0 = on_plane[0];
-    for (std::size_t j = 1; j + 1 < np; ++j) {
-      const double a = 0.5 * (on_plane[j] - q0).cross(on_plane[j + 1] - q0).dot(n);
-      moment += (a / 3.0) * (q0 + on_plane[j] + on_plane[j + 1]);
-      signed_area += a;
-    }
-    // A polygon without area keeps the vertices' mean (its areas are the
-    // nominal ones below).
-    if (std::abs(signed_area) > 1e-9 * face_area_min) centre = moment / signed_area;
-  }
-  double total = 0;
-  if (np >= 3) {
-    for (std::size_t j = 0; j < np; ++j) {
-      const Vec3 pj = on_plane[j] - centre;
-      const Vec3 pk = on_plane[(j + 1) % np] - centre;
-      const double tri = 0.5 * std::abs(pj.cross(pk).dot(n));
-      out.points[j].area += 0.5 * tri;
-      out.points[(j + 1) % np].area += 0.5 * tri;
-      total += tri;
-    }
-  }
+  std::vector<double>& areas = s.areas;
+  areas.resize(np);
+  const double total = points == PatchPoints::following
+                           ? corner_areas(on_plane.data(), np, n, 1e-9 * face_area_min, areas.data())
+                           : fan_areas(on_plane.data(), np, n, 1e-9 * face_area_min, areas.data());
   if (total <= 1e-9 * face_area_min) {
     // A polygon without area: the two faces touch only along their
     // boundary (side-by-side stones whose faces meet at an edge line, or a
@@ -320,6 +385,8 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
     // tilted, so its face is clipped with area and takes the fan's areas.
     const double nominal = 1e-2 * face_area_min;
     for (auto& p : out.points) p.area = nominal / static_cast<double>(np);
+  } else {
+    for (std::size_t j = 0; j < np; ++j) out.points[j].area = areas[j];
   }
   out.ref_face = ref_face;
   out.inc_face = inc_face;

@@ -40,11 +40,28 @@ struct PosedBlock {
   double size = 0;  // cube root of the volume (m); 0: computed when needed
 };
 
+// What a vertex of the clipped polygon is in the two blocks' own geometry,
+// so that it can follow them between detections (joint_sampling "step",
+// contact/moving_points.hpp). Every vertex lies on the incident face:
+//   incident_vertex   a corner of the incident face (v0, a vertex of the
+//                     incident block);
+//   incident_edge     where the incident edge v0–v1 crosses the side plane
+//                     of the reference face's edge `side`;
+//   reference_corner  where the line along the normal through the meeting
+//                     point of the side planes of the reference face's edges
+//                     `side` and `side2` (a corner of the reference face when
+//                     they are neighbours) meets the incident face's plane;
+//   fixed             the edge-to-edge crossing: not a vertex of the clip.
+enum class PointKind : std::uint8_t { incident_vertex, incident_edge, reference_corner, fixed };
+
 struct PatchPoint {
   Vec3 point;         // on the incident block, world
   double separation;  // along the normal, > 0 open, < 0 overlapping (m)
   double area;        // tributary area, m²
   std::uint32_t feature;
+  PointKind kind = PointKind::fixed;
+  int v0 = -1, v1 = -1;       // incident block's vertices (incident_vertex, incident_edge)
+  int side = -1, side2 = -1;  // reference face's edges (incident_edge, reference_corner)
 };
 
 struct Patch {
@@ -62,7 +79,27 @@ struct PatchScratch {
   std::vector<Vec3> world_a, world_b;
   std::vector<Vec3> poly, next;
   std::vector<std::uint32_t> poly_id, next_id;
+  // Per clipped vertex, what it is (PatchPoint's kind and indices), and per
+  // polygon edge (from a vertex to the next) the line it lies on: an
+  // incident edge (its two vertices, side −1) or a side plane (side).
+  struct Definition {
+    PointKind kind = PointKind::fixed;
+    int v0 = -1, v1 = -1, side = -1, side2 = -1;
+  };
+  struct EdgeLine {
+    int v0 = -1, v1 = -1, side = -1;
+  };
+  std::vector<Definition> poly_def, next_def;
+  std::vector<EdgeLine> poly_edge, next_edge;
+  std::vector<double> areas;
 };
+
+// How a patch's points take their areas, for points fixed in the incident
+// block until the next detection (`detection`, the default: fan_areas) or
+// for points that follow the blocks (`following`,
+// contact/moving_points.hpp: corner_areas, which do not jump when the
+// polygon gains or loses a vertex).
+enum class PatchPoints { detection, following };
 
 // The area a corner subcontact carries in a face contact between blocks of
 // size l (cube root of volume): a face l × l over its four corners, l²/4.
@@ -85,7 +122,28 @@ void world_vertices(const PosedBlock& block, std::vector<Vec3>& world);
 // closest point: the overlap joint model integrates every face).
 bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const NarrowPhaseHit& hit,
                  int prev_ref_side, int prev_ref_face, Patch& out, PatchScratch& scratch,
-                 bool keep_without_points = false);
+                 bool keep_without_points = false, PatchPoints points = PatchPoints::detection);
+
+// The tributary areas of a convex polygon's vertices on the plane of unit
+// normal n: each takes half of the two fan triangles at it, the fan about
+// the polygon's area centroid (`on_plane`: the vertices projected on the
+// plane, in order). Returns the polygon's area (the sum of the areas
+// written). A polygon whose area is at most `floor` has no area centroid:
+// the fan is about the vertices' mean.
+double fan_areas(const Vec3* on_plane, std::size_t count, const Vec3& n, double floor, double* area);
+
+// The tributary areas of a convex polygon's vertices by their corners: each
+// takes the polygon's area times its exterior angle over the full turn
+// (2π), so a square's corners a quarter each, and a vertex where the
+// boundary goes straight on nothing. A vertex that appears on an edge (the
+// polygon cut by a plane through it) takes nothing at first, and a corner
+// cut into two vertices a hair apart hands its angle, and its area, on to
+// them: the areas are continuous in the polygon's shape whatever vertices
+// it is given, which the fan's are not (a vertex appearing mid-edge takes
+// half of two fan triangles at once). A vertex at the same place as the one
+// before it takes nothing. Returns the polygon's area; at most `floor`: no
+// area, and the areas written are zero.
+double corner_areas(const Vec3* on_plane, std::size_t count, const Vec3& n, double floor, double* area);
 
 // Narrow phase and patch in one call (steps 1-4).
 bool find_patch(const PosedBlock& a, const PosedBlock& b, double margin, int prev_ref_side, int prev_ref_face,

@@ -479,7 +479,8 @@ void ContactDetector::narrow_phase_and_patches(const Blocks& b, const ContactSet
       prev_face = op->ref_face;
     }
     im.found[k] = build_patch(posed(b, i), posed(b, j), margin_, im.hits[k], prev_side, prev_face, im.patches[k],
-                              im.scratch[omp_get_thread_num()], pair_joints_);
+                              im.scratch[omp_get_thread_num()], pair_joints_,
+                              points_follow_ ? PatchPoints::following : PatchPoints::detection);
   }
   const Clock::time_point t3 = Clock::now();
   times.narrow_phase = seconds(t1, t2);
@@ -499,6 +500,7 @@ void ContactDetector::sample(const Blocks& b, ContactSet& contacts, bool bond_ne
 
   // 4. Subcontacts in candidate order (sorted by block pair), with the
   // history of the detection before, carried by position on the joint.
+  contacts.sub.moving.on = points_follow_;
   build_subcontacts(b, im.candidates, im.patches, im.found, bond_new, contacts, &old,
                     pair_trigger_ ? &im.kept : nullptr);
   if (bond_new) {  // only the joints whose law has a strength start bonded

@@ -29,6 +29,7 @@ void Subcontacts::resize(std::size_t n) {
   slip_energy.resize(n);
   damping_energy.resize(n);
   damping_force.resize(n);
+  moving.resize(n);
 }
 
 void ContactSet::save(ByteWriter& w) const {
@@ -63,6 +64,16 @@ void ContactSet::save(ByteWriter& w) const {
   w.put(sub.slip_energy);
   w.put(sub.damping_energy);
   w.put(sub.damping_force);
+  w.put(static_cast<std::uint8_t>(sub.moving.on ? 1 : 0));
+  if (sub.moving.on) {
+    w.put(sub.moving.kind);
+    w.put(sub.moving.a);
+    w.put(sub.moving.b);
+    w.put(sub.moving.m);
+    w.put(sub.moving.c);
+    w.put(sub.moving.r0);
+    w.put(sub.moving.r1);
+  }
   w.put(gather_offset);
   w.put(gather_sub);
   w.put(gather_sign);
@@ -111,6 +122,21 @@ void ContactSet::load(ByteReader& r, int blocks) {
   r.get_sized(sub.slip_energy, n, "subcontacts.slip_energy");
   r.get_sized(sub.damping_energy, n, "subcontacts.damping_energy");
   r.get_sized(sub.damping_force, n, "subcontacts.damping_force");
+  std::uint8_t moving = 0;
+  r.get(moving);
+  sub.moving.on = moving != 0;
+  sub.moving.resize(0);
+  if (sub.moving.on) {
+    r.get_sized(sub.moving.kind, n, "subcontacts.moving.kind");
+    r.get_sized(sub.moving.a, n, "subcontacts.moving.a");
+    r.get_sized(sub.moving.b, n, "subcontacts.moving.b");
+    r.get_sized(sub.moving.m, n, "subcontacts.moving.m");
+    r.get_sized(sub.moving.c, n, "subcontacts.moving.c");
+    r.get_sized(sub.moving.r0, n, "subcontacts.moving.r0");
+    r.get_sized(sub.moving.r1, n, "subcontacts.moving.r1");
+    for (std::uint8_t k : sub.moving.kind)
+      if (k > static_cast<std::uint8_t>(PointKind::fixed)) throw StateFormatError("subcontact point kind out of range");
+  }
   r.get_sized(gather_offset, static_cast<std::size_t>(blocks) + 1, "contacts.gather_offset");
   r.get_sized(gather_sub, 2 * n, "contacts.gather_sub");
   r.get_sized(gather_sign, 2 * n, "contacts.gather_sign");
@@ -200,6 +226,15 @@ void copy_pairs(const ContactSet& from, int o1, int o2, int index, int first, Co
   copy_range(os.slip_energy, begin, end, sc.slip_energy, at);
   copy_range(os.damping_energy, begin, end, sc.damping_energy, at);
   copy_range(os.damping_force, begin, end, sc.damping_force, at);
+  if (sc.moving.on && os.moving.on) {
+    copy_range(os.moving.kind, begin, end, sc.moving.kind, at);
+    copy_range(os.moving.a, begin, end, sc.moving.a, at);
+    copy_range(os.moving.b, begin, end, sc.moving.b, at);
+    copy_range(os.moving.m, begin, end, sc.moving.m, at);
+    copy_range(os.moving.c, begin, end, sc.moving.c, at);
+    copy_range(os.moving.r0, begin, end, sc.moving.r0, at);
+    copy_range(os.moving.r1, begin, end, sc.moving.r1, at);
+  }
   const int shift = first - static_cast<int>(begin);
   for (int o = o1; o < o2; ++o) {
     ContactPair cp = from.pairs[static_cast<std::size_t>(o)];
@@ -249,6 +284,9 @@ void sample_pair(const Blocks& b, int i, int j, const Patch& patch, bool bond_ne
     sc.point[s] = pt.point;
     sc.overlap[s] = -pt.separation;
     sc.normal_force[s] = 0;
+    if (sc.moving.on)
+      define_moving_point(b.props.local_shape[static_cast<std::size_t>(cp.ref_block)], patch.ref_face,
+                          b.props.local_shape[static_cast<std::size_t>(inc)], patch.inc_face, pt, sc.moving, s);
     ++s;
   }
 }

@@ -30,6 +30,7 @@
 #pragma once
 
 #include "contact/contact_patch.hpp"
+#include "contact/moving_points.hpp"
 #include "contact/pair_joints.hpp"
 #include "core/blocks.hpp"
 #include "core/byte_stream.hpp"
@@ -86,6 +87,9 @@ struct Subcontacts {
   // The dashpot force of the last step (world, on the incident block, N):
   // half of its work is booked with the next step's velocity (joint_law.hpp).
   Vec3Array damping_force;
+  // What each point is in the blocks' geometry, when the points follow the
+  // blocks between detections (contact/moving_points.hpp); empty otherwise.
+  MovingPoints moving;
 
   std::size_t size() const { return key.size(); }
   // The blocks' overlap at s (the spring's plus its crush), m: what

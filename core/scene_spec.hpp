@@ -55,6 +55,14 @@ enum class JointModel { subcontacts, overlap };
 // model, `scene` under the overlap model (which samples nothing).
 enum class DetectionTrigger { automatic, scene, pair };
 
+// Where a subcontact's point is between detections (contact/moving_points.hpp):
+// `detection`, fixed in the incident block where the detection's clip put it,
+// with the area it gave; `step`, where its definition in the blocks'
+// geometry (a corner of the incident face, an incident edge's crossing with a
+// side plane, a reference corner's line on the incident face) puts it at
+// every step, with the area of the fan of the polygon the points make.
+enum class JointSampling { detection, step };
+
 // [simulation]
 struct SimulationSpec {
   double end_time = 1.0;          // s, > 0
@@ -71,6 +79,7 @@ struct SimulationSpec {
   // model: half the margin)
   double detection_travel = 0.0;
   DetectionTrigger detection_trigger = DetectionTrigger::automatic;
+  JointSampling joint_sampling = JointSampling::detection;
   int threads = 0;                // 0 = OpenMP default
   // Let the run drop to one thread while more are slower (a competing
   // process on a core; integrators/thread_governor.hpp). Same bits either way.

@@ -49,6 +49,7 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, JointLaws laws,
   if (overlap_joints_) overlap_scratch_.resize(static_cast<std::size_t>(std::max(1, omp_get_max_threads())));
   detector_.set_pair_joints(overlap_joints_);
   detector_.set_pair_trigger(pair_by_pair(sim));
+  detector_.set_points_follow(sim.joint_sampling == JointSampling::step);
   ledger_.start(blocks_.state);
   // The first detection on the governor's threads: one, when it governs
   // (beside a competitor the first region on two threads waits ~15 ms for
@@ -105,6 +106,8 @@ void Simulation::joint_forces(double dt, std::size_t begin, std::size_t end, Cod
                          contacts_.joints, dt, begin, end, overlap_scratch_[static_cast<std::size_t>(thread)]);
     return;
   }
+  if (contacts_.sub.moving.on)
+    move_points(blocks_.state, contacts_.pairs, contacts_.sub, begin, end);
   compute_pair_forces(laws_, blocks_.state, contacts_.pairs, contacts_.sub, dt, begin, end, path, part);
 }
 

@@ -47,7 +47,7 @@ constexpr std::string_view kSimulationKeys[] = {
     "end_time",          "time_step",       "safety_factor", "gravity",           "contact_margin",  "detection_travel",
     "threads",           "adaptive_threads", "overlap_tolerance", "settle_velocity", "settle_time",
     "gravity_rise_time", "time_step_bound", "damping_scheme",    "joint_model",
-    "detection_trigger"};
+    "detection_trigger", "joint_sampling"};
 constexpr std::string_view kJointKeys[] = {"normal_stiffness", "shear_stiffness",  "friction_angle",
                                            "cohesion",         "tensile_strength", "damping", "between",
                                            "friction_normal_force"};
@@ -130,6 +130,10 @@ SimulationSpec read_simulation(const Deck& deck) {
       "detection_trigger", {{"scene", DetectionTrigger::scene}, {"pair", DetectionTrigger::pair}}, s.detection_trigger);
   if (s.joint_model == JointModel::overlap && s.detection_trigger == DetectionTrigger::pair)
     r.fail("detection_trigger", "\"pair\" re-samples subcontacts: it needs joint_model = \"subcontacts\"");
+  s.joint_sampling = r.choice<JointSampling>(
+      "joint_sampling", {{"detection", JointSampling::detection}, {"step", JointSampling::step}}, s.joint_sampling);
+  if (s.joint_model == JointModel::overlap && s.joint_sampling == JointSampling::step)
+    r.fail("joint_sampling", "\"step\" moves subcontacts: it needs joint_model = \"subcontacts\"");
   if (const auto t = r.integer("threads")) {
     if (*t < 0 || *t > 4096) r.fail("threads", "must be in [0, 4096], 0 = OpenMP default (got " + std::to_string(*t) + ")");
     s.threads = static_cast<int>(*t);

@@ -454,6 +454,12 @@ TEST(DeckErrors, TheOverlapModelRefusesBondsAndTheSplitScheme) {
   expect_error("[joint]\ntensile_strength = 1e5\n[[block]]\n" + kBox, 1, "joint",
                "cohesion or tensile strength is not modelled", {"simulation.joint_model=\"overlap\""});
   EXPECT_NO_THROW(parse_deck("[simulation]\njoint_model = \"overlap\"\n[[block]]\n" + kBox, kFile));
+  // Its joints have no points to move.
+  expect_error("[simulation]\njoint_model = \"overlap\"\njoint_sampling = \"step\"\n[[block]]\n" + kBox, 3,
+               "simulation.joint_sampling", "it needs joint_model = \"subcontacts\"");
+  expect_error("[simulation]\njoint_sampling = \"always\"\n[[block]]\n" + kBox, 2, "simulation.joint_sampling",
+               "must be one of \"detection\", \"step\" (got \"always\")");
+  EXPECT_NO_THROW(parse_deck("[simulation]\njoint_sampling = \"step\"\n[[block]]\n" + kBox, kFile));
 }
 
 TEST(DeckErrors, BadEnumsListTheAllowedValues) {

@@ -81,7 +81,10 @@ inline Blocks cube_into_cube(bool corner, double depth) {
   return b;
 }
 
-enum class JointModelKind { subcontacts, overlap };
+// The joint models compared: subcontacts held fixed in the incident block
+// between detections (the default), subcontacts whose points follow the
+// blocks (joint_sampling "step"), the overlap model.
+enum class JointModelKind { subcontacts, subcontacts_step, overlap };
 
 // A pair's wrench: the force on block b (the larger index) and the moment
 // on each block about its own centroid.
@@ -110,6 +113,7 @@ inline PairWrenches pair_wrenches(JointModelKind model, const JointLaws& laws, c
     }
     return w;
   }
+  if (c.sub.moving.on) move_points(st, c.pairs, c.sub, 0, c.pairs.size());
   compute_pair_forces(laws, st, c.pairs, c.sub, dt, 0, c.pairs.size());
   for (const ContactPair& p : c.pairs) {
     PairWrench& x = w[{p.a, p.b}];
@@ -159,6 +163,7 @@ inline RedetectionJump redetection_jump(JointModelKind model, Blocks& blocks, co
                                         std::uint64_t seed, double move) {
   ContactDetector det(blocks, margin);
   det.set_pair_joints(model == JointModelKind::overlap);
+  det.set_points_follow(model == JointModelKind::subcontacts_step);
   ContactSet c;
   OverlapScratch scratch;
   std::mt19937_64 rng(seed);

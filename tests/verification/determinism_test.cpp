@@ -105,6 +105,14 @@ TEST(Determinism, ThePairTriggerGivesTheSameBitsOnOneAndTwoThreads) {
   EXPECT_GT(a.energy.slip, 0.0);
 }
 
+// Points that follow the blocks (simulation.joint_sampling = "step"), moved
+// pair by pair in the step's threads: the same bits on 1 and 2 threads.
+TEST(Determinism, PointsFollowingTheBlocksGiveTheSameBitsOnOneAndTwoThreads) {
+  RunReport b;
+  const RunReport a = one_and_two_threads("simulation.joint_sampling=\"step\"", b);
+  EXPECT_GT(a.energy.slip, 0.0);
+}
+
 // Joints re-sampled scene-wide (simulation.detection_trigger = "scene"):
 // the same bits on 1 and 2 threads.
 TEST(Determinism, TheSceneWideTriggerGivesTheSameBitsOnOneAndTwoThreads) {

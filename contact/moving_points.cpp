@@ -1,0 +1,130 @@
+#include "contact/moving_points.hpp"
+
+#include "contact/subcontacts.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace polydem {
+
+void MovingPoints::resize(std::size_t n) {
+  const std::size_t k = on ? n : 0;
+  kind.resize(k);
+  a.resize(k);
+  b.resize(k);
+  m.resize(k);
+  c.resize(k);
+  r0.resize(k);
+  r1.resize(k);
+
+}
+
+namespace {
+
+// The side plane of the reference face's edge `side` (body frame): unit
+// normal out of the face and offset.
+void side_plane(const Polyhedron& p, int face, int side, Vec3& normal, double& offset) {
+  const auto& f = p.faces[static_cast<std::size_t>(face)];
+  const auto k = static_cast<std::size_t>(side);
+  const Vec3& v0 = p.vertices[static_cast<std::size_t>(f[k])];
+  const Vec3& v1 = p.vertices[static_cast<std::size_t>(f[(k + 1) % f.size()])];
+  normal = (v1 - v0).cross(p.normals[static_cast<std::size_t>(face)]).normalized();
+  offset = normal.dot(v0);
+}
+
+}  // namespace
+
+void define_moving_point(const Polyhedron& rp, int ref_face, const Polyhedron& ip, int inc_face,
+                         const PatchPoint& pt, MovingPoints& mp, std::size_t s) {
+  mp.kind[s] = static_cast<std::uint8_t>(pt.kind);
+  mp.a[s] = mp.b[s] = mp.m[s] = mp.r0[s] = mp.r1[s] = Vec3::Zero();
+  mp.c[s] = 0;
+  if (pt.kind == PointKind::incident_edge) {
+    mp.a[s] = ip.vertices[static_cast<std::size_t>(pt.v0)];
+    mp.b[s] = ip.vertices[static_cast<std::size_t>(pt.v1)];
+    side_plane(rp, ref_face, pt.side, mp.m[s], mp.c[s]);
+    const auto& f = rp.faces[static_cast<std::size_t>(ref_face)];
+    const auto k = static_cast<std::size_t>(pt.side);
+    mp.r0[s] = rp.vertices[static_cast<std::size_t>(f[k])];
+    mp.r1[s] = rp.vertices[static_cast<std::size_t>(f[(k + 1) % f.size()])];
+  } else if (pt.kind == PointKind::reference_corner) {
+    // The meeting line of the two side planes, on the reference plane.
+    Vec3 m1, m2;
+    double c1 = 0, c2 = 0;
+    side_plane(rp, ref_face, pt.side, m1, c1);
+    side_plane(rp, ref_face, pt.side2, m2, c2);
+    const Vec3& n = rp.normals[static_cast<std::size_t>(ref_face)];
+    Eigen::Matrix3d A;
+    A.row(0) = m1.transpose();
+    A.row(1) = m2.transpose();
+    A.row(2) = n.transpose();
+    const Vec3 rhs(c1, c2, rp.offsets[static_cast<std::size_t>(ref_face)]);
+    mp.a[s] = A.colPivHouseholderQr().solve(rhs);
+    mp.m[s] = ip.normals[static_cast<std::size_t>(inc_face)];
+    mp.c[s] = ip.offsets[static_cast<std::size_t>(inc_face)];
+  }
+}
+
+namespace {
+
+// One pair (see move_points).
+void move_pair(const BlockState& st, const ContactPair& cp, Subcontacts& sub) {
+  const std::size_t s0 = static_cast<std::size_t>(cp.first), count = static_cast<std::size_t>(cp.count);
+  const int r = cp.ref_block;
+  const int i = cp.ref_block == cp.a ? cp.b : cp.a;
+  const MovingPoints& mp = sub.moving;
+  if (cp.ref_face < 0) return;  // an edge-to-edge crossing: fixed
+  // The reference block's frame seen from the incident block's:
+  // y_inc = M·y_ref + d.
+  const Mat3 M = st.rotation[i].transpose() * st.rotation[r];
+  const Vec3 d = st.rotation[i].transpose() * (st.position[r] - st.position[i]);
+  const Vec3 n = M * sub.ref_normal_local[s0];  // the common plane's normal, incident frame
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t s = s0 + k;
+    Vec3 p = sub.inc_point_local[s];
+    const auto kind = static_cast<PointKind>(mp.kind[s]);
+    if (kind == PointKind::incident_edge) {
+      const Vec3 m = M * mp.m[s];
+      const double c = mp.c[s] + m.dot(d);
+      const Vec3 e = mp.b[s] - mp.a[s];
+      const double den = m.dot(e);
+      // An edge within a thousandth of a radian of its side plane (an edge
+      // lying in the plane of the face below) has no crossing to speak of:
+      // its point stays where the detection put it, fixed in the block.
+      if (std::abs(den) > 1e-3 * e.norm()) {
+        double t = std::clamp((c - m.dot(mp.a[s])) / den, 0.0, 1.0);
+        p = mp.a[s] + t * e;
+        // Past an end of the reference edge: on the common plane, the
+        // edge's point nearest to that end.
+        const Vec3 r0 = M * mp.r0[s] + d;
+        const Vec3 er = M * (mp.r1[s] - mp.r0[s]);
+        const double u = (p - r0).dot(er) / er.squaredNorm();
+        if (u < 0 || u > 1) {
+          const Vec3 end = r0 + std::clamp(u, 0.0, 1.0) * er;
+          const Vec3 ep = e - e.dot(n) * n, to_end = end - mp.a[s];
+          t = std::clamp((to_end - to_end.dot(n) * n).dot(ep) / ep.squaredNorm(), 0.0, 1.0);
+          p = mp.a[s] + t * e;
+        }
+      }
+    } else if (kind == PointKind::reference_corner) {
+      const Vec3 x = M * mp.a[s] + d;
+      const double den = mp.m[s].dot(n);
+      if (std::abs(den) > 1e-9) p = x + ((mp.c[s] - mp.m[s].dot(x)) / den) * n;
+    }
+    sub.inc_point_local.set(s, p);
+  }
+}
+
+}  // namespace
+
+void move_points(const BlockState& st, const std::vector<ContactPair>& pairs, Subcontacts& sub, std::size_t begin,
+                 std::size_t end) {
+  for (std::size_t q = begin; q < end; ++q) {
+    const ContactPair& cp = pairs[q];
+    if (cp.count > 0) move_pair(st, cp, sub);
+  }
+}
+
+}  // namespace polydem
