@@ -86,26 +86,29 @@ void move_pair(const BlockState& st, const ContactPair& cp, Subcontacts& sub) {
     Vec3 p = sub.inc_point_local[s];
     const auto kind = static_cast<PointKind>(mp.kind[s]);
     if (kind == PointKind::incident_edge) {
-      const Vec3 m = M * mp.m[s];
-      const double c = mp.c[s] + m.dot(d);
-      const Vec3 e = mp.b[s] - mp.a[s];
-      const double den = m.dot(e);
+      // In the incident frame the side plane is w·y = c + w·d, w = M·m.
+      const Vec3 w = M * mp.m[s];
+      const Vec3& a = mp.a[s];
+      const Vec3 e = mp.b[s] - a;
+      const double den = w.dot(e);
       // An edge within a thousandth of a radian of its side plane (an edge
       // lying in the plane of the face below) has no crossing to speak of:
       // its point stays where the detection put it, fixed in the block.
-      if (std::abs(den) > 1e-3 * e.norm()) {
-        double t = std::clamp((c - m.dot(mp.a[s])) / den, 0.0, 1.0);
-        p = mp.a[s] + t * e;
-        // Past an end of the reference edge: on the common plane, the
+      if (den * den > 1e-6 * e.squaredNorm()) {
+        double t = std::clamp((mp.c[s] + w.dot(d - a)) / den, 0.0, 1.0);
+        p = a + t * e;
+        // Where along the reference edge r0 + u·er it lies: u·|er|² =
+        // (p − d)·M·er − r0·er. Past an end, on the common plane, the
         // edge's point nearest to that end.
-        const Vec3 r0 = M * mp.r0[s] + d;
-        const Vec3 er = M * (mp.r1[s] - mp.r0[s]);
-        const double u = (p - r0).dot(er) / er.squaredNorm();
-        if (u < 0 || u > 1) {
-          const Vec3 end = r0 + std::clamp(u, 0.0, 1.0) * er;
-          const Vec3 ep = e - e.dot(n) * n, to_end = end - mp.a[s];
+        const Vec3 er_ref = mp.r1[s] - mp.r0[s];
+        const double er2 = er_ref.squaredNorm();
+        const Vec3 er = M * er_ref;
+        const double u_er2 = (p - d).dot(er) - mp.r0[s].dot(er_ref);
+        if (u_er2 < 0 || u_er2 > er2) {
+          const Vec3 end = M * mp.r0[s] + d + std::clamp(u_er2 / er2, 0.0, 1.0) * er;
+          const Vec3 ep = e - e.dot(n) * n, to_end = end - a;
           t = std::clamp((to_end - to_end.dot(n) * n).dot(ep) / ep.squaredNorm(), 0.0, 1.0);
-          p = mp.a[s] + t * e;
+          p = a + t * e;
         }
       }
     } else if (kind == PointKind::reference_corner) {

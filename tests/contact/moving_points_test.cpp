@@ -126,7 +126,7 @@ TEST(MovingPoints, APairSlidOverItsBaseHasThePointsADetectionFinds) {
 // turned by up to 6 µrad (a pair's travel of the order of the 24 µm after
 // which a pair is sampled again): a detection then changes a pair's force
 // or moment by under 1e-4 of the largest with the points following the
-// blocks (the benchmark's seeds: 5.4e-5), against over 5e-4 with points
+// blocks (the benchmark's 20 seeds: 6.1e-5), against over 5e-4 with points
 // fixed in the incident block (7.6e-4 and 8.9e-4 for these seeds).
 TEST(MovingPoints, TheSpiresJointsHardlyJumpAtADetection) {
   for (std::uint64_t seed : {11u, 12u}) {
