@@ -167,10 +167,10 @@ class Restart : public ::testing::Test {
   // `kill_at` (tests/apps/killed_run.cpp); returns its wait status.
   int run_killed(long kill_at, const fs::path& out) const {
     std::vector<std::string> args = {std::to_string(kill_at), deck_.string(), out.string(), "2"};
-    args.insert(args.end(), kOverrides.begin(), kOverrides.end());
+    args.insert(args.end(), overrides_.begin(), overrides_.end());
     return run_binary(args, POLYDEM_KILLED_RUN);
   }
-  std::uint64_t fingerprint() const { return deck_fingerprint(kDeck, kOverrides, "", POLYDEM_VERSION); }
+  std::uint64_t fingerprint() const { return deck_fingerprint(kDeck, overrides_, "", POLYDEM_VERSION); }
 
   // run_command in-process with stderr captured.
   int run_in_process(const RunOptions& o) {
@@ -190,6 +190,7 @@ class Restart : public ::testing::Test {
 
   fs::path dir_, deck_;
   std::string err_;
+  std::vector<std::string> overrides_ = kOverrides;  // what run_killed and fingerprint use
 };
 
 void expect_identical(const RunReport& a, const RunReport& b) {
@@ -260,6 +261,25 @@ TEST_F(Restart, KilledRunContinuesBitwiseIdentical) {
     const RunReport again = run_scene(spec, control);
     expect_identical(ref, again);
   }
+}
+
+// With the joints' points following the blocks (their definitions in the
+// checkpoint), a killed run continues bit for bit too.
+TEST_F(Restart, PointsFollowingTheBlocksContinueBitwiseIdentical) {
+  overrides_.push_back("simulation.joint_sampling=\"step\"");
+  const SceneSpec spec = read_deck(deck_.string(), overrides_);
+  const RunReport ref = run_scene(spec);
+  ASSERT_GT(ref.detections, 2);
+  const long first_checkpoint_step = static_cast<long>(0.05 / ref.time_step) + 2;
+  const long kill_at = first_checkpoint_step + (ref.steps - first_checkpoint_step) / 2;
+  const fs::path out = dir_ / "killed_step";
+  const int status = run_killed(kill_at, out);
+  ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << "status " << status;
+  const std::string state =
+      decode_checkpoint(read_text(out / kCheckpointFile), fingerprint(), (out / kCheckpointFile).string());
+  RunControl control;
+  control.restart = &state;
+  expect_identical(ref, run_scene(spec, control));
 }
 
 TEST_F(Restart, BinaryRestartWritesTheSameResults) {
