@@ -18,6 +18,10 @@ void MovingPoints::resize(std::size_t n) {
   c.resize(k);
   r0.resize(k);
   r1.resize(k);
+  h1.resize(k);
+  h2.resize(k);
+  o1.resize(k);
+  o2.resize(k);
 
 }
 
@@ -34,14 +38,38 @@ void side_plane(const Polyhedron& p, int face, int side, Vec3& normal, double& o
   offset = normal.dot(v0);
 }
 
+// The two side planes of `face` nearest to body-frame point y (by its
+// signed distance from each, largest first).
+void nearest_sides(const Polyhedron& p, int face, const Vec3& y, Vec3& h1, double& o1, Vec3& h2, double& o2) {
+  const auto& f = p.faces[static_cast<std::size_t>(face)];
+  double d1 = -1e300, d2 = -1e300;
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    Vec3 m;
+    double c = 0;
+    side_plane(p, face, static_cast<int>(k), m, c);
+    const double dist = m.dot(y) - c;
+    if (dist > d1) {
+      d2 = d1, h2 = h1, o2 = o1;
+      d1 = dist, h1 = m, o1 = c;
+    } else if (dist > d2) {
+      d2 = dist, h2 = m, o2 = c;
+    }
+  }
+}
+
 }  // namespace
 
 void define_moving_point(const Polyhedron& rp, int ref_face, const Polyhedron& ip, int inc_face,
-                         const PatchPoint& pt, MovingPoints& mp, std::size_t s) {
+                         const PatchPoint& pt, const Vec3& point_ref, const Vec3& point_inc, MovingPoints& mp,
+                         std::size_t s) {
   mp.kind[s] = static_cast<std::uint8_t>(pt.kind);
-  mp.a[s] = mp.b[s] = mp.m[s] = mp.r0[s] = mp.r1[s] = Vec3::Zero();
-  mp.c[s] = 0;
-  if (pt.kind == PointKind::incident_edge) {
+  mp.a[s] = mp.b[s] = mp.m[s] = mp.r0[s] = mp.r1[s] = mp.h1[s] = mp.h2[s] = Vec3::Zero();
+  mp.c[s] = mp.o1[s] = mp.o2[s] = 0;
+  if (pt.kind == PointKind::incident_vertex) {
+    mp.a[s] = ip.vertices[static_cast<std::size_t>(pt.v0)];
+    mp.b[s] = ip.normals[static_cast<std::size_t>(inc_face)];
+    nearest_sides(rp, ref_face, point_ref, mp.h1[s], mp.o1[s], mp.h2[s], mp.o2[s]);
+  } else if (pt.kind == PointKind::incident_edge) {
     mp.a[s] = ip.vertices[static_cast<std::size_t>(pt.v0)];
     mp.b[s] = ip.vertices[static_cast<std::size_t>(pt.v1)];
     side_plane(rp, ref_face, pt.side, mp.m[s], mp.c[s]);
@@ -64,6 +92,7 @@ void define_moving_point(const Polyhedron& rp, int ref_face, const Polyhedron& i
     mp.a[s] = A.colPivHouseholderQr().solve(rhs);
     mp.m[s] = ip.normals[static_cast<std::size_t>(inc_face)];
     mp.c[s] = ip.offsets[static_cast<std::size_t>(inc_face)];
+    nearest_sides(ip, inc_face, point_inc, mp.h1[s], mp.o1[s], mp.h2[s], mp.o2[s]);
   }
 }
 
@@ -85,7 +114,22 @@ void move_pair(const BlockState& st, const ContactPair& cp, Subcontacts& sub) {
     const std::size_t s = s0 + k;
     Vec3 p = sub.inc_point_local[s];
     const auto kind = static_cast<PointKind>(mp.kind[s]);
-    if (kind == PointKind::incident_edge) {
+    if (kind == PointKind::incident_vertex) {
+      // Past a side of the reference face (it has slid off its edge since
+      // the detection): held on that side, moved along the incident face,
+      // where the crossings the next detection finds will be.
+      p = mp.a[s];
+      const Vec3& g = mp.b[s];
+      for (int side = 0; side < 2; ++side) {
+        const Vec3& h = side == 0 ? mp.h1[s] : mp.h2[s];
+        const Vec3 w = M * h;  // the side plane w·y = o + w·d, incident frame
+        const double past = w.dot(p - d) - (side == 0 ? mp.o1[s] : mp.o2[s]);
+        if (past <= 0) continue;
+        const Vec3 dir = w - w.dot(g) * g;  // along the incident face
+        const double along = w.dot(dir);
+        if (along > 1e-6) p -= (past / along) * dir;
+      }
+    } else if (kind == PointKind::incident_edge) {
       // In the incident frame the side plane is w·y = c + w·d, w = M·m.
       const Vec3 w = M * mp.m[s];
       const Vec3& a = mp.a[s];
@@ -115,6 +159,12 @@ void move_pair(const BlockState& st, const ContactPair& cp, Subcontacts& sub) {
       const Vec3 x = M * mp.a[s] + d;
       const double den = mp.m[s].dot(n);
       if (std::abs(den) > 1e-9) p = x + ((mp.c[s] - mp.m[s].dot(x)) / den) * n;
+      // Past a side of the incident face: held on it, within the face.
+      for (int side = 0; side < 2; ++side) {
+        const Vec3& h = side == 0 ? mp.h1[s] : mp.h2[s];
+        const double past = h.dot(p) - (side == 0 ? mp.o1[s] : mp.o2[s]);
+        if (past > 0) p -= past * h;
+      }
     }
     sub.inc_point_local.set(s, p);
   }

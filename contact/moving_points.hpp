@@ -25,6 +25,10 @@
 // (faces of equal stones one on the other), the crossing runs off the end
 // of one of them after a small relative motion, and the polygon's vertex is
 // then that end (the other face's corner), where the held crossing stays.
+// A corner of the incident face past a side of the reference face (slid
+// off its support's edge) is held on that side, moved along the incident
+// face, and a reference corner past a side of the incident face likewise:
+// the two sides nearest at the detection are watched.
 // An edge within a thousandth of a radian of its side plane (an edge lying
 // in the plane of the face below) has no crossing to speak of, and a corner
 // line nearly parallel to the incident face no meeting point: those points
@@ -69,14 +73,23 @@ struct MovingPoints {
   // incident_edge: the reference face's edge whose side plane it crosses
   // (reference frame): the crossing is held within both edges.
   std::vector<Vec3> r0, r1;
+  // incident_vertex: the vertex and the incident face's unit normal
+  // (incident frame) in `a` and `b`, and the two side planes of the
+  // reference face nearest to it (reference frame); reference_corner: the
+  // two side planes of the incident face nearest to it (incident frame).
+  // A point past one is held on it, moved along the incident face.
+  std::vector<Vec3> h1, h2;
+  std::vector<double> o1, o2;
 
   void resize(std::size_t n);
 };
 
 // Subcontact s's definition from the patch point that made it (the pair's
 // reference face `ref_face` on `ref`, incident face `inc_face` on `inc`).
+// `point_ref`, `point_inc`: the point in the reference and incident frames.
 void define_moving_point(const Polyhedron& ref_shape, int ref_face, const Polyhedron& inc_shape, int inc_face,
-                         const PatchPoint& pt, MovingPoints& mp, std::size_t s);
+                         const PatchPoint& pt, const Vec3& point_ref, const Vec3& point_inc, MovingPoints& mp,
+                         std::size_t s);
 
 // Pairs [begin, end)'s points put where their definitions say at the
 // blocks' poses in `st` (written to inc_point_local). The step's stage

@@ -73,6 +73,10 @@ void ContactSet::save(ByteWriter& w) const {
     w.put(sub.moving.c);
     w.put(sub.moving.r0);
     w.put(sub.moving.r1);
+    w.put(sub.moving.h1);
+    w.put(sub.moving.h2);
+    w.put(sub.moving.o1);
+    w.put(sub.moving.o2);
   }
   w.put(gather_offset);
   w.put(gather_sub);
@@ -134,6 +138,10 @@ void ContactSet::load(ByteReader& r, int blocks) {
     r.get_sized(sub.moving.c, n, "subcontacts.moving.c");
     r.get_sized(sub.moving.r0, n, "subcontacts.moving.r0");
     r.get_sized(sub.moving.r1, n, "subcontacts.moving.r1");
+    r.get_sized(sub.moving.h1, n, "subcontacts.moving.h1");
+    r.get_sized(sub.moving.h2, n, "subcontacts.moving.h2");
+    r.get_sized(sub.moving.o1, n, "subcontacts.moving.o1");
+    r.get_sized(sub.moving.o2, n, "subcontacts.moving.o2");
     for (std::uint8_t k : sub.moving.kind)
       if (k > static_cast<std::uint8_t>(PointKind::fixed)) throw StateFormatError("subcontact point kind out of range");
   }
@@ -234,6 +242,10 @@ void copy_pairs(const ContactSet& from, int o1, int o2, int index, int first, Co
     copy_range(os.moving.c, begin, end, sc.moving.c, at);
     copy_range(os.moving.r0, begin, end, sc.moving.r0, at);
     copy_range(os.moving.r1, begin, end, sc.moving.r1, at);
+    copy_range(os.moving.h1, begin, end, sc.moving.h1, at);
+    copy_range(os.moving.h2, begin, end, sc.moving.h2, at);
+    copy_range(os.moving.o1, begin, end, sc.moving.o1, at);
+    copy_range(os.moving.o2, begin, end, sc.moving.o2, at);
   }
   const int shift = first - static_cast<int>(begin);
   for (int o = o1; o < o2; ++o) {
@@ -286,7 +298,9 @@ void sample_pair(const Blocks& b, int i, int j, const Patch& patch, bool bond_ne
     sc.normal_force[s] = 0;
     if (sc.moving.on)
       define_moving_point(b.props.local_shape[static_cast<std::size_t>(cp.ref_block)], patch.ref_face,
-                          b.props.local_shape[static_cast<std::size_t>(inc)], patch.inc_face, pt, sc.moving, s);
+                          b.props.local_shape[static_cast<std::size_t>(inc)], patch.inc_face, pt,
+                          Rr.transpose() * (pt.point - b.state.position[cp.ref_block]), sc.inc_point_local[s], sc.moving,
+                          s);
     ++s;
   }
 }

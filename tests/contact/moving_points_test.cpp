@@ -122,6 +122,28 @@ TEST(MovingPoints, APairSlidOverItsBaseHasThePointsADetectionFinds) {
   }
 }
 
+// A stone slid past the edge of the one below: the corners of its bed
+// that have left the support since the detection are held on the
+// support's edge, moved along the bed (where the next detection's
+// crossings will be), rather than pushing from beyond it.
+TEST(MovingPoints, ACornerSlidPastItsSupportsEdgeIsHeldOnIt) {
+  Blocks b = build_blocks(
+      {test::block_spec("below", make_box(Vec3(1, 1, 0.5), Vec3(0, 0, -0.25)), BlockMotion::fixed),
+       test::block_spec("above", make_box(Vec3(0.8, 0.8, 0.5), Vec3(0.05, 0, 0.25 - 0.001)), BlockMotion::free)});
+  const JointLaws laws = uniform_joint_laws(test::round_law(0.5), 2);
+  ContactDetector det(b, 0.003);
+  det.set_points_follow(true);
+  ContactSet c;
+  det.detect(b, c, false, laws);
+  ASSERT_EQ(c.sub.size(), 4u);  // the stone's four corners, all on the base
+  b.state.position[1].x() += 0.08;  // its corners at x = 0.53, past the base's edge at 0.5
+  move_points(b.state, c.pairs, c.sub, 0, c.pairs.size());
+  double farthest = -1;
+  for (std::size_t s = 0; s < c.sub.size(); ++s)
+    farthest = std::max(farthest, (b.state.position[1] + b.state.rotation[1] * c.sub.inc_point_local[s]).x());
+  EXPECT_NEAR(farthest, 0.5, 1e-12);
+}
+
 // The spire pressed into itself and every stone moved by up to 6 µm and
 // turned by up to 6 µrad (a pair's travel of the order of the 24 µm after
 // which a pair is sampled again): a detection then changes a pair's force
