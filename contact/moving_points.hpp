@@ -34,10 +34,10 @@
 // line nearly parallel to the incident face no meeting point: those points
 // stay fixed in the incident block, as the default's do.
 //
-// The areas stay the detection's until the next one (a spring whose area
+// The areas stay the detection's until the next one: a spring whose area
 // changed with the pose would no longer be the gradient of its strain
-// energy, ½·kn·A·u²: on the main job's collapse, areas taken afresh at
-// every step made 310 J, 11 % of slip and damping). They are the points'
+// energy ½·kn·A·u² (the change of area would make or take ½·kn·u² a unit
+// of area, with no force doing that work). They are the points'
 // shares of the polygon by their corners (corner_areas): when the next
 // detection finds a vertex more or less (a corner of the incident face
 // that has crossed a side plane since becomes two crossings; a crossing
