@@ -368,7 +368,6 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
     pt.v1 = s.poly_def[j].v1;
     pt.side = s.poly_def[j].side;
     pt.side2 = s.poly_def[j].side2;
-    pt.next_on_reference = s.poly_edge[j].side >= 0;
     on_plane[j] = s.poly[j] - pt.separation * n;
   }
   std::vector<double>& areas = s.areas;
@@ -401,7 +400,7 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
   std::size_t kept = 0;
   double kept_area = 0;
   for (std::size_t j = 0; j < np; ++j)
-    if (out.points[j].separation <= margin || points == PatchPoints::following) {
+    if (out.points[j].separation <= margin) {
       kept_area += out.points[j].area;
       out.points[kept++] = out.points[j];
     }

@@ -62,9 +62,6 @@ struct PatchPoint {
   PointKind kind = PointKind::fixed;
   int v0 = -1, v1 = -1;       // incident block's vertices (incident_vertex, incident_edge)
   int side = -1, side2 = -1;  // reference face's edges (incident_edge, reference_corner)
-  // The polygon's edge from this point to the next lies on a side of the
-  // reference face (true) or on an edge of the incident face (false).
-  bool next_on_reference = false;
 };
 
 struct Patch {
@@ -101,8 +98,7 @@ struct PatchScratch {
 // block until the next detection (`detection`, the default: fan_areas) or
 // for points that follow the blocks (`following`,
 // contact/moving_points.hpp: corner_areas, which do not jump when the
-// polygon gains or loses a vertex; every vertex kept, also beyond the
-// margin, since the polygon's area is taken at every step).
+// polygon gains or loses a vertex).
 enum class PatchPoints { detection, following };
 
 // The area a corner subcontact carries in a face contact between blocks of

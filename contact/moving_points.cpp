@@ -1,6 +1,5 @@
 #include "contact/moving_points.hpp"
 
-#include "contact/joint_law.hpp"
 #include "contact/subcontacts.hpp"
 
 #include <Eigen/Dense>
@@ -23,10 +22,6 @@ void MovingPoints::resize(std::size_t n) {
   h2.resize(k);
   o1.resize(k);
   o2.resize(k);
-  share.resize(k);
-  floor.resize(k);
-  next_on_reference.resize(k);
-  held.resize(k);
 
 }
 
@@ -65,12 +60,9 @@ void nearest_sides(const Polyhedron& p, int face, const Vec3& y, Vec3& h1, doubl
 }  // namespace
 
 void define_moving_point(const Polyhedron& rp, int ref_face, const Polyhedron& ip, int inc_face,
-                         const PatchPoint& pt, const Vec3& point_ref, const Vec3& point_inc, double polygon_area,
-                         MovingPoints& mp, std::size_t s) {
+                         const PatchPoint& pt, const Vec3& point_ref, const Vec3& point_inc, MovingPoints& mp,
+                         std::size_t s) {
   mp.kind[s] = static_cast<std::uint8_t>(pt.kind);
-  mp.share[s] = polygon_area > 0 ? pt.area / polygon_area : 0.0;
-  mp.floor[s] = 1e-9 * std::min(face_area(rp, ref_face >= 0 ? ref_face : 0), face_area(ip, inc_face >= 0 ? inc_face : 0));
-  mp.next_on_reference[s] = pt.next_on_reference ? 1 : 0;
   mp.a[s] = mp.b[s] = mp.m[s] = mp.r0[s] = mp.r1[s] = mp.h1[s] = mp.h2[s] = Vec3::Zero();
   mp.c[s] = mp.o1[s] = mp.o2[s] = 0;
   if (pt.kind == PointKind::incident_vertex) {
@@ -122,14 +114,12 @@ void move_pair(const BlockState& st, const ContactPair& cp, Subcontacts& sub) {
     const std::size_t s = s0 + k;
     Vec3 p = sub.inc_point_local[s];
     const auto kind = static_cast<PointKind>(mp.kind[s]);
-    sub.moving.held[s] = 0;
     if (kind == PointKind::incident_vertex) {
       // Past a side of the reference face (it has slid off its edge since
       // the detection): held on that side, moved along the incident face,
       // where the crossings the next detection finds will be.
       p = mp.a[s];
       const Vec3& g = mp.b[s];
-      std::uint8_t held = 0;
       for (int side = 0; side < 2; ++side) {
         const Vec3& h = side == 0 ? mp.h1[s] : mp.h2[s];
         const Vec3 w = M * h;  // the side plane w·y = o + w·d, incident frame
@@ -137,12 +127,8 @@ void move_pair(const BlockState& st, const ContactPair& cp, Subcontacts& sub) {
         if (past <= 0) continue;
         const Vec3 dir = w - w.dot(g) * g;  // along the incident face
         const double along = w.dot(dir);
-        if (along > 1e-6) {
-          p -= (past / along) * dir;
-          held = static_cast<std::uint8_t>(side + 1);
-        }
+        if (along > 1e-6) p -= (past / along) * dir;
       }
-      sub.moving.held[s] = held;
     } else if (kind == PointKind::incident_edge) {
       // In the incident frame the side plane is w·y = c + w·d, w = M·m.
       const Vec3 w = M * mp.m[s];
@@ -182,27 +168,6 @@ void move_pair(const BlockState& st, const ContactPair& cp, Subcontacts& sub) {
     }
     sub.inc_point_local.set(s, p);
   }
-  // The polygon's area now, on the common plane; the points' areas their
-  // shares of it.
-  if (count < 3) return;
-  double twice = 0;
-  const Vec3 q0 = sub.inc_point_local[s0];
-  Vec3 prev = sub.inc_point_local[s0 + 1] - q0;
-  for (std::size_t k = 2; k < count; ++k) {
-    const Vec3 next = sub.inc_point_local[s0 + k] - q0;
-    twice += prev.cross(next).dot(n);
-    prev = next;
-  }
-  const double area = 0.5 * std::abs(twice);
-  if (!(area > mp.floor[s0])) return;  // no area: the last areas stay
-  // The shear spring keeps its elastic displacement: its force goes with
-  // the area, as a detection carries it.
-  for (std::size_t k = 0; k < count; ++k) {
-    const std::size_t s = s0 + k;
-    const double now = mp.share[s] * area, before = sub.area[s];
-    if (before > 0) sub.shear_force.set(s, (now / before) * sub.shear_force[s]);
-    sub.area[s] = now;
-  }
 }
 
 }  // namespace
@@ -212,63 +177,6 @@ void move_points(const BlockState& st, const std::vector<ContactPair>& pairs, Su
   for (std::size_t q = begin; q < end; ++q) {
     const ContactPair& cp = pairs[q];
     if (cp.count > 0) move_pair(st, cp, sub);
-  }
-}
-
-void add_area_loads(const JointLaws& laws, const std::vector<ContactPair>& pairs, Subcontacts& sub,
-                    std::size_t begin, std::size_t end) {
-  const MovingPoints& mp = sub.moving;
-  for (std::size_t q = begin; q < end; ++q) {
-    const ContactPair& cp = pairs[q];
-    if (cp.count < 3 || cp.ref_face < 0) continue;
-    const auto s0 = static_cast<std::size_t>(cp.first), count = static_cast<std::size_t>(cp.count);
-    // The springs' energy per unit of the polygon's area: Σ share_i·(kn·u_i²
-    // over the closed points + ks·d_i², d_i = |F_i|/(ks·A_i) the shear
-    // spring's elastic displacement), halved.
-    const int c = cp.ref_block == cp.a ? cp.b : cp.a;
-    const JointLaw& law = laws.between(cp.ref_block, c);
-    double strain = 0;
-    for (std::size_t k = 0; k < count; ++k) {
-      const std::size_t s = s0 + k;
-      const double u = sub.overlap[s];
-      if (u > 0) strain += mp.share[s] * law.kn * u * u;
-      if (law.ks > 0 && sub.area[s] > 0) {
-        const double ksA = law.ks * sub.area[s];
-        strain += mp.share[s] * sub.shear_force[s].squaredNorm() / (ksA * sub.area[s]);
-      }
-    }
-    if (strain == 0) continue;
-    const double half_kn = 0.5 * strain;
-    // The polygon's turning sense about the plane's normal (world).
-    const Vec3& p0 = sub.point[s0];
-    Vec3 normal_sum = Vec3::Zero();
-    for (std::size_t k = 1; k + 1 < count; ++k)
-      normal_sum += (sub.point[s0 + k] - p0).cross(sub.point[s0 + k + 1] - p0);
-    const double len = normal_sum.norm();
-    if (!(len > 0)) continue;
-    const Vec3 up = normal_sum / len;  // the polygon runs anticlockwise about `up`
-    for (std::size_t k = 0; k < count; ++k) {
-      const std::size_t s = s0 + k, t = s0 + (k + 1) % count;
-      const Vec3 edge = sub.point[t] - sub.point[s];
-      const Vec3 edge_in_plane = edge - edge.dot(up) * up;
-      // Outward normal times the edge's length: edge × up.
-      const Vec3 out_length = edge_in_plane.cross(up);
-      // On the block whose face bounds the edge, against the edge moving
-      // out; the subcontact force is the incident block's. Two incident
-      // corners held on one side of the reference face bound the polygon
-      // along that side.
-      bool on_reference = mp.next_on_reference[s] != 0;
-      if (mp.held[s] != 0 && mp.held[t] != 0) {
-        const Vec3& hs = mp.held[s] == 1 ? mp.h1[s] : mp.h2[s];
-        const Vec3& ht = mp.held[t] == 1 ? mp.h1[t] : mp.h2[t];
-        const double os = mp.held[s] == 1 ? mp.o1[s] : mp.o2[s];
-        const double ot = mp.held[t] == 1 ? mp.o1[t] : mp.o2[t];
-        on_reference = on_reference || (hs == ht && os == ot);
-      }
-      const Vec3 on_incident = (on_reference ? half_kn : -half_kn) * out_length;
-      sub.force[s] += 0.5 * on_incident;
-      sub.force[t] += 0.5 * on_incident;
-    }
   }
 }
 

@@ -34,19 +34,17 @@
 // line nearly parallel to the incident face no meeting point: those points
 // stay fixed in the incident block, as the default's do.
 //
-// The areas follow the polygon too: each point's share of the polygon's
-// area is the detection's (corner_areas: the area times the vertex's
-// exterior angle over the full turn, so when the next detection finds a
-// vertex more or less the shares move by what the polygon's shape changed,
-// not by the change of vertex count, which the fan's do not manage), and
-// the polygon's area is taken at every step. A joint whose polygon shrinks
-// as a stone slides off its support thus loses its area as it goes, not
-// at the next detection: with the areas the detection's, the spire's
-// strength grew with the detection travel, as the polygons' lag did. A
-// spring whose area changes with the pose is the gradient of its energy
-// ½·kn·A·u² only with the load of that change: add_area_loads. The shear
-// springs keep their elastic displacement (their force goes with the
-// area, as a detection carries it) and count in that load.
+// The areas stay the detection's until the next one: a spring whose area
+// changed with the pose would no longer be the gradient of its strain
+// energy ½·kn·A·u² (the change of area would make or take ½·kn·u² a unit
+// of area, with no force doing that work). They are the points'
+// shares of the polygon by their corners (corner_areas): when the next
+// detection finds a vertex more or less (a corner of the incident face
+// that has crossed a side plane since becomes two crossings; a crossing
+// that reached the end of its edge becomes that end), the areas move by
+// what the polygon's shape changed, not by the change of vertex count,
+// which the fan's areas do not manage (a vertex appearing mid-edge takes
+// half of two fan triangles at once).
 #pragma once
 
 #include "contact/contact_patch.hpp"
@@ -60,7 +58,6 @@ namespace polydem {
 
 struct ContactPair;
 struct Subcontacts;
-struct JointLaws;
 
 // Per subcontact, what its point is (PointKind) in the blocks' body frames.
 // Sized with the subcontacts only when the points follow the blocks (`on`).
@@ -83,41 +80,21 @@ struct MovingPoints {
   // A point past one is held on it, moved along the incident face.
   std::vector<Vec3> h1, h2;
   std::vector<double> o1, o2;
-  // The point's share of the polygon's area (from the detection's corner
-  // areas), the polygon's area below which it has none (on the pair's
-  // first point), and whether the polygon's edge to the next point lies on
-  // a side of the reference face.
-  std::vector<double> share, floor;
-  std::vector<std::uint8_t> next_on_reference;
-  // This step: the side (1 or 2: h1, h2) an incident corner is held on, 0
-  // if none. Two neighbours held on one side make an edge of that side.
-  std::vector<std::uint8_t> held;
 
   void resize(std::size_t n);
 };
 
 // Subcontact s's definition from the patch point that made it (the pair's
 // reference face `ref_face` on `ref`, incident face `inc_face` on `inc`).
-// `point_ref`, `point_inc`: the point in the reference and incident frames;
-// `polygon_area`: the patch's.
+// `point_ref`, `point_inc`: the point in the reference and incident frames.
 void define_moving_point(const Polyhedron& ref_shape, int ref_face, const Polyhedron& inc_shape, int inc_face,
-                         const PatchPoint& pt, const Vec3& point_ref, const Vec3& point_inc, double polygon_area,
-                         MovingPoints& mp, std::size_t s);
+                         const PatchPoint& pt, const Vec3& point_ref, const Vec3& point_inc, MovingPoints& mp,
+                         std::size_t s);
 
 // Pairs [begin, end)'s points put where their definitions say at the
 // blocks' poses in `st` (written to inc_point_local). The step's stage
 // before the joint law.
 void move_points(const BlockState& st, const std::vector<ContactPair>& pairs, Subcontacts& sub, std::size_t begin,
                  std::size_t end);
-
-// After the joint law: the load of each pair's area change. The springs'
-// energy ½·kn·Σ share_i·P·u_i² grows with the polygon's area P; an edge of
-// the polygon moving out by δ adds ½·kn·Σ share_i·u_i² · L·δ, so the block
-// whose face bounds that edge is pushed back by ½·kn·Σ share_i·u_i²·L (and
-// the other the opposite way), at the edge's middle: half to each end's
-// subcontact force. With it the normal springs are the gradient of their
-// energy although their areas follow the polygon.
-void add_area_loads(const JointLaws& laws, const std::vector<ContactPair>& pairs, Subcontacts& sub,
-                    std::size_t begin, std::size_t end);
 
 }  // namespace polydem

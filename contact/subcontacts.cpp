@@ -77,9 +77,6 @@ void ContactSet::save(ByteWriter& w) const {
     w.put(sub.moving.h2);
     w.put(sub.moving.o1);
     w.put(sub.moving.o2);
-    w.put(sub.moving.share);
-    w.put(sub.moving.floor);
-    w.put(sub.moving.next_on_reference);
   }
   w.put(gather_offset);
   w.put(gather_sub);
@@ -145,9 +142,6 @@ void ContactSet::load(ByteReader& r, int blocks) {
     r.get_sized(sub.moving.h2, n, "subcontacts.moving.h2");
     r.get_sized(sub.moving.o1, n, "subcontacts.moving.o1");
     r.get_sized(sub.moving.o2, n, "subcontacts.moving.o2");
-    r.get_sized(sub.moving.share, n, "subcontacts.moving.share");
-    r.get_sized(sub.moving.floor, n, "subcontacts.moving.floor");
-    r.get_sized(sub.moving.next_on_reference, n, "subcontacts.moving.next_on_reference");
     for (std::uint8_t k : sub.moving.kind)
       if (k > static_cast<std::uint8_t>(PointKind::fixed)) throw StateFormatError("subcontact point kind out of range");
   }
@@ -252,9 +246,6 @@ void copy_pairs(const ContactSet& from, int o1, int o2, int index, int first, Co
     copy_range(os.moving.h2, begin, end, sc.moving.h2, at);
     copy_range(os.moving.o1, begin, end, sc.moving.o1, at);
     copy_range(os.moving.o2, begin, end, sc.moving.o2, at);
-    copy_range(os.moving.share, begin, end, sc.moving.share, at);
-    copy_range(os.moving.floor, begin, end, sc.moving.floor, at);
-    copy_range(os.moving.next_on_reference, begin, end, sc.moving.next_on_reference, at);
   }
   const int shift = first - static_cast<int>(begin);
   for (int o = o1; o < o2; ++o) {
@@ -308,8 +299,8 @@ void sample_pair(const Blocks& b, int i, int j, const Patch& patch, bool bond_ne
     if (sc.moving.on)
       define_moving_point(b.props.local_shape[static_cast<std::size_t>(cp.ref_block)], patch.ref_face,
                           b.props.local_shape[static_cast<std::size_t>(inc)], patch.inc_face, pt,
-                          Rr.transpose() * (pt.point - b.state.position[cp.ref_block]), sc.inc_point_local[s],
-                          patch.area, sc.moving, s);
+                          Rr.transpose() * (pt.point - b.state.position[cp.ref_block]), sc.inc_point_local[s], sc.moving,
+                          s);
     ++s;
   }
 }

@@ -109,7 +109,6 @@ void Simulation::joint_forces(double dt, std::size_t begin, std::size_t end, Cod
   if (contacts_.sub.moving.on)
     move_points(blocks_.state, contacts_.pairs, contacts_.sub, begin, end);
   compute_pair_forces(laws_, blocks_.state, contacts_.pairs, contacts_.sub, dt, begin, end, path, part);
-  if (contacts_.sub.moving.on) add_area_loads(laws_, contacts_.pairs, contacts_.sub, begin, end);
 }
 
 // Before a detection replaces the subcontacts, each books the second half of
