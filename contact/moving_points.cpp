@@ -11,18 +11,7 @@ namespace polydem {
 
 void MovingPoints::resize(std::size_t n) {
   const std::size_t k = on ? n : 0;
-  kind.resize(k);
-  a.resize(k);
-  b.resize(k);
-  m.resize(k);
-  c.resize(k);
-  r0.resize(k);
-  r1.resize(k);
-  h1.resize(k);
-  h2.resize(k);
-  o1.resize(k);
-  o2.resize(k);
-
+  for_each_array(*this, *this, [k](auto& v, auto&, const char*) { v.resize(k); });
 }
 
 namespace {

@@ -82,6 +82,14 @@ struct MovingPoints {
   std::vector<double> o1, o2;
 
   void resize(std::size_t n);
+  // Calls f(array of this, array of `other`, name) for each array above,
+  // always in this order (resizing, checkpoints, copies).
+  template <class Self, class Other, class F>
+  static void for_each_array(Self& self, Other& other, F&& f) {
+    f(self.kind, other.kind, "kind"), f(self.a, other.a, "a"), f(self.b, other.b, "b"), f(self.m, other.m, "m");
+    f(self.c, other.c, "c"), f(self.r0, other.r0, "r0"), f(self.r1, other.r1, "r1"), f(self.h1, other.h1, "h1");
+    f(self.h2, other.h2, "h2"), f(self.o1, other.o1, "o1"), f(self.o2, other.o2, "o2");
+  }
 };
 
 // Subcontact s's definition from the patch point that made it (the pair's

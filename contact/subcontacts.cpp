@@ -65,19 +65,8 @@ void ContactSet::save(ByteWriter& w) const {
   w.put(sub.damping_energy);
   w.put(sub.damping_force);
   w.put(static_cast<std::uint8_t>(sub.moving.on ? 1 : 0));
-  if (sub.moving.on) {
-    w.put(sub.moving.kind);
-    w.put(sub.moving.a);
-    w.put(sub.moving.b);
-    w.put(sub.moving.m);
-    w.put(sub.moving.c);
-    w.put(sub.moving.r0);
-    w.put(sub.moving.r1);
-    w.put(sub.moving.h1);
-    w.put(sub.moving.h2);
-    w.put(sub.moving.o1);
-    w.put(sub.moving.o2);
-  }
+  if (sub.moving.on)
+    MovingPoints::for_each_array(sub.moving, sub.moving, [&w](const auto& v, const auto&, const char*) { w.put(v); });
   w.put(gather_offset);
   w.put(gather_sub);
   w.put(gather_sign);
@@ -131,17 +120,9 @@ void ContactSet::load(ByteReader& r, int blocks) {
   sub.moving.on = moving != 0;
   sub.moving.resize(0);
   if (sub.moving.on) {
-    r.get_sized(sub.moving.kind, n, "subcontacts.moving.kind");
-    r.get_sized(sub.moving.a, n, "subcontacts.moving.a");
-    r.get_sized(sub.moving.b, n, "subcontacts.moving.b");
-    r.get_sized(sub.moving.m, n, "subcontacts.moving.m");
-    r.get_sized(sub.moving.c, n, "subcontacts.moving.c");
-    r.get_sized(sub.moving.r0, n, "subcontacts.moving.r0");
-    r.get_sized(sub.moving.r1, n, "subcontacts.moving.r1");
-    r.get_sized(sub.moving.h1, n, "subcontacts.moving.h1");
-    r.get_sized(sub.moving.h2, n, "subcontacts.moving.h2");
-    r.get_sized(sub.moving.o1, n, "subcontacts.moving.o1");
-    r.get_sized(sub.moving.o2, n, "subcontacts.moving.o2");
+    MovingPoints::for_each_array(sub.moving, sub.moving, [&](auto& v, auto&, const char* name) {
+      r.get_sized(v, n, (std::string("subcontacts.moving.") + name).c_str());
+    });
     for (std::uint8_t k : sub.moving.kind)
       if (k > static_cast<std::uint8_t>(PointKind::fixed)) throw StateFormatError("subcontact point kind out of range");
   }
@@ -234,19 +215,10 @@ void copy_pairs(const ContactSet& from, int o1, int o2, int index, int first, Co
   copy_range(os.slip_energy, begin, end, sc.slip_energy, at);
   copy_range(os.damping_energy, begin, end, sc.damping_energy, at);
   copy_range(os.damping_force, begin, end, sc.damping_force, at);
-  if (sc.moving.on && os.moving.on) {
-    copy_range(os.moving.kind, begin, end, sc.moving.kind, at);
-    copy_range(os.moving.a, begin, end, sc.moving.a, at);
-    copy_range(os.moving.b, begin, end, sc.moving.b, at);
-    copy_range(os.moving.m, begin, end, sc.moving.m, at);
-    copy_range(os.moving.c, begin, end, sc.moving.c, at);
-    copy_range(os.moving.r0, begin, end, sc.moving.r0, at);
-    copy_range(os.moving.r1, begin, end, sc.moving.r1, at);
-    copy_range(os.moving.h1, begin, end, sc.moving.h1, at);
-    copy_range(os.moving.h2, begin, end, sc.moving.h2, at);
-    copy_range(os.moving.o1, begin, end, sc.moving.o1, at);
-    copy_range(os.moving.o2, begin, end, sc.moving.o2, at);
-  }
+  if (sc.moving.on && os.moving.on)
+    MovingPoints::for_each_array(sc.moving, os.moving, [&](auto& to_array, const auto& from_array, const char*) {
+      copy_range(from_array, begin, end, to_array, at);
+    });
   const int shift = first - static_cast<int>(begin);
   for (int o = o1; o < o2; ++o) {
     ContactPair cp = from.pairs[static_cast<std::size_t>(o)];
