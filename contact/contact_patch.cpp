@@ -258,7 +258,7 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
       const Vec3& on_inc = ref_side == 0 ? edge.on_b : edge.on_a;
       out.normal = n;
       out.offset = n.dot(on_ref);
-      out.points.push_back({on_inc, n.dot(on_inc) - out.offset, out.area, 0x40000000u});
+      out.points.push_back({on_inc, n.dot(on_inc) - out.offset, out.area, 0x40000000u, {}});
       return true;
     }
     // Otherwise MPR's contact point (the middle of the overlap), moved half
@@ -268,7 +268,7 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
     const Vec3 point = mpr_pos - (0.5 * mpr_overlap) * n;
     out.normal = n;
     out.offset = n.dot(point) + mpr_overlap;
-    out.points.push_back({point, -mpr_overlap, out.area, 0x40000000u});
+    out.points.push_back({point, -mpr_overlap, out.area, 0x40000000u, {}});
     return mpr_overlap >= -margin;
   }
 
@@ -363,11 +363,7 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
     pt.separation = n.dot(s.poly[j]) - offset;
     pt.feature = s.poly_id[j];
     pt.area = 0;
-    pt.kind = s.poly_def[j].kind;
-    pt.v0 = s.poly_def[j].v0;
-    pt.v1 = s.poly_def[j].v1;
-    pt.side = s.poly_def[j].side;
-    pt.side2 = s.poly_def[j].side2;
+    pt.def = s.poly_def[j];
     on_plane[j] = s.poly[j] - pt.separation * n;
   }
   std::vector<double>& areas = s.areas;

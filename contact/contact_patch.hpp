@@ -54,14 +54,18 @@ struct PosedBlock {
 //   fixed             the edge-to-edge crossing: not a vertex of the clip.
 enum class PointKind : std::uint8_t { incident_vertex, incident_edge, reference_corner, fixed };
 
+struct PointDefinition {
+  PointKind kind = PointKind::fixed;
+  int v0 = -1, v1 = -1;       // incident block's vertices (incident_vertex, incident_edge)
+  int side = -1, side2 = -1;  // reference face's edges (incident_edge, reference_corner)
+};
+
 struct PatchPoint {
   Vec3 point;         // on the incident block, world
   double separation;  // along the normal, > 0 open, < 0 overlapping (m)
   double area;        // tributary area, m²
   std::uint32_t feature;
-  PointKind kind = PointKind::fixed;
-  int v0 = -1, v1 = -1;       // incident block's vertices (incident_vertex, incident_edge)
-  int side = -1, side2 = -1;  // reference face's edges (incident_edge, reference_corner)
+  PointDefinition def;  // what it is in the blocks' geometry
 };
 
 struct Patch {
@@ -79,17 +83,13 @@ struct PatchScratch {
   std::vector<Vec3> world_a, world_b;
   std::vector<Vec3> poly, next;
   std::vector<std::uint32_t> poly_id, next_id;
-  // Per clipped vertex, what it is (PatchPoint's kind and indices), and per
-  // polygon edge (from a vertex to the next) the line it lies on: an
-  // incident edge (its two vertices, side −1) or a side plane (side).
-  struct Definition {
-    PointKind kind = PointKind::fixed;
-    int v0 = -1, v1 = -1, side = -1, side2 = -1;
-  };
+  // Per clipped vertex, what it is, and per polygon edge (from a vertex to
+  // the next) the line it lies on: an incident edge (its two vertices, side
+  // −1) or a side plane (side).
   struct EdgeLine {
     int v0 = -1, v1 = -1, side = -1;
   };
-  std::vector<Definition> poly_def, next_def;
+  std::vector<PointDefinition> poly_def, next_def;
   std::vector<EdgeLine> poly_edge, next_edge;
   std::vector<double> areas;
 };

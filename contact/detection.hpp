@@ -122,10 +122,9 @@ class ContactDetector {
   // detect().
   void set_pair_trigger(bool on) { pair_trigger_ = on; }
   // The joints' points follow the blocks between detections
-  // (contact/moving_points.hpp): every vertex of a clipped polygon is kept
+  // (contact/moving_points.hpp): each point of a clipped polygon is kept
   // with what it is in the blocks' geometry. Set before the first detection.
   void set_points_follow(bool on) { points_follow_ = on; }
-  bool points_follow() const { return points_follow_; }
   bool pair_trigger() const { return pair_trigger_; }
   // What the scene-wide test compares the two largest travels with: the
   // detection travel, or half the margin when pairs are re-sampled on their

@@ -51,27 +51,27 @@ void nearest_sides(const Polyhedron& p, int face, const Vec3& y, Vec3& h1, doubl
 void define_moving_point(const Polyhedron& rp, int ref_face, const Polyhedron& ip, int inc_face,
                          const PatchPoint& pt, const Vec3& point_ref, const Vec3& point_inc, MovingPoints& mp,
                          std::size_t s) {
-  mp.kind[s] = static_cast<std::uint8_t>(pt.kind);
+  mp.kind[s] = static_cast<std::uint8_t>(pt.def.kind);
   mp.a[s] = mp.b[s] = mp.m[s] = mp.r0[s] = mp.r1[s] = mp.h1[s] = mp.h2[s] = Vec3::Zero();
   mp.c[s] = mp.o1[s] = mp.o2[s] = 0;
-  if (pt.kind == PointKind::incident_vertex) {
-    mp.a[s] = ip.vertices[static_cast<std::size_t>(pt.v0)];
+  if (pt.def.kind == PointKind::incident_vertex) {
+    mp.a[s] = ip.vertices[static_cast<std::size_t>(pt.def.v0)];
     mp.b[s] = ip.normals[static_cast<std::size_t>(inc_face)];
     nearest_sides(rp, ref_face, point_ref, mp.h1[s], mp.o1[s], mp.h2[s], mp.o2[s]);
-  } else if (pt.kind == PointKind::incident_edge) {
-    mp.a[s] = ip.vertices[static_cast<std::size_t>(pt.v0)];
-    mp.b[s] = ip.vertices[static_cast<std::size_t>(pt.v1)];
-    side_plane(rp, ref_face, pt.side, mp.m[s], mp.c[s]);
+  } else if (pt.def.kind == PointKind::incident_edge) {
+    mp.a[s] = ip.vertices[static_cast<std::size_t>(pt.def.v0)];
+    mp.b[s] = ip.vertices[static_cast<std::size_t>(pt.def.v1)];
+    side_plane(rp, ref_face, pt.def.side, mp.m[s], mp.c[s]);
     const auto& f = rp.faces[static_cast<std::size_t>(ref_face)];
-    const auto k = static_cast<std::size_t>(pt.side);
+    const auto k = static_cast<std::size_t>(pt.def.side);
     mp.r0[s] = rp.vertices[static_cast<std::size_t>(f[k])];
     mp.r1[s] = rp.vertices[static_cast<std::size_t>(f[(k + 1) % f.size()])];
-  } else if (pt.kind == PointKind::reference_corner) {
+  } else if (pt.def.kind == PointKind::reference_corner) {
     // The meeting line of the two side planes, on the reference plane.
     Vec3 m1, m2;
     double c1 = 0, c2 = 0;
-    side_plane(rp, ref_face, pt.side, m1, c1);
-    side_plane(rp, ref_face, pt.side2, m2, c2);
+    side_plane(rp, ref_face, pt.def.side, m1, c1);
+    side_plane(rp, ref_face, pt.def.side2, m2, c2);
     const Vec3& n = rp.normals[static_cast<std::size_t>(ref_face)];
     Eigen::Matrix3d A;
     A.row(0) = m1.transpose();

@@ -60,7 +60,8 @@ enum class DetectionTrigger { automatic, scene, pair };
 // with the area it gave; `step`, where its definition in the blocks'
 // geometry (a corner of the incident face, an incident edge's crossing with a
 // side plane, a reference corner's line on the incident face) puts it at
-// every step, with the area of the fan of the polygon the points make.
+// every step, with its share of the polygon by its corner's angle, taken at
+// the detection.
 enum class JointSampling { detection, step };
 
 // [simulation]
