@@ -42,21 +42,35 @@ build_s=$((SECONDS - t0))
 export ASAN_OPTIONS="detect_leaks=1:strict_string_checks=1:check_initialization_order=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
 export OMP_NUM_THREADS=2
-# Left out (SANITIZE_FULL=1 keeps it): the dry-stone wall deck,
-# Decks/VerificationDeck.ChecksPass/dry_stone_wall. It is 10 s of simulated
-# time of 52 stones at rest, 533 k steps of the same code every step of the
-# suite's other scenes runs (detection, patches of boxes in running bond, the
-# joint law, the leapfrog); under ASan + UBSan it takes 240-330 s, half the
-# instrumented suite, and pushes it past 10 minutes on 2 cores. It adds no
-# code path of its own: the stack of ten and the coarse spires (hundreds of
-# stones in bond, windows, cracking and collapse) run the same code, with
-# more variety, under the sanitizers; the Release suite still runs the
-# wall's checks.
-exclude=(-E 'VerificationDeck\.ChecksPass/dry_stone_wall( |$)')
+# Left out (SANITIZE_FULL=1 keeps them): the tests whose instrumented run
+# is over a minute and whose code the sanitizers see in cheaper tests. The
+# Release suite still runs each of them. docs/robustness.md has their times.
+# - the dry-stone wall deck under every setting (VerificationDeck*
+#   .ChecksPass/dry_stone_wall): 10 s of 52 stones at rest, 533 k steps of
+#   detection, patches of boxes in running bond, the joint law and the
+#   leapfrog, which the stack of ten and the spire scenes run under the
+#   sanitizers with more variety;
+# - SpireCollapse.CoarseSpireCollapse...: the coarse spire standing and
+#   collapsing under a constant acceleration (2 x 2 s); the spire's stones,
+#   windows, cracking and collapse assessment run instrumented in the
+#   determinism tests' spire pulse, CriticalTimeStep on the spire, the
+#   ensemble and IDA commands' spire decks and Assessment.*;
+# - WallPushover.OutOfPlane...: the wall's limit-analysis LP (LimitAnalysis.*
+#   instrumented) and a DEM bisection of a running-bond wall (the collapse
+#   searches of CollapseSearch.* and StaticStageMasonry.*);
+# - Sweep.KilledAtAnyMomentItLosesNothing: a sweep killed and resumed five
+#   times; the resume and the table writes run instrumented in
+#   Sweep.GridTablesAndAResumeThatRunsNothingAgain;
+# - JointModes.TheSpiresStepBounds...: a dense eigen-solve of the spire's
+#   joint stiffness; the same assembly runs instrumented on the column
+#   (JointModes.TheColumnsJointBound...) and the cubes.
+skipped='dry_stone_wall( |$)|SpireCollapse\.CoarseSpireCollapse|WallPushover\.OutOfPlane'
+skipped+='|Sweep\.KilledAtAnyMoment|JointModes\.TheSpiresStepBounds'
+exclude=(-E "$skipped")
 [ -n "${SANITIZE_FULL:-}" ] && exclude=()
 t1=$SECONDS
 status=0
-ctest --test-dir "$build" -LE slow "${exclude[@]}" --output-on-failure -j 1 "$@" || status=$?
+ctest --test-dir "$build" -LE slow "${exclude[@]}" --output-on-failure -j "$(nproc)" "$@" || status=$?
 test_s=$((SECONDS - t1))
 echo "sanitize: build ${build_s} s, tests ${test_s} s (ctest -LE slow ${exclude[*]}, OMP_NUM_THREADS=2)"
 exit $status
