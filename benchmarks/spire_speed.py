@@ -9,9 +9,10 @@
   - the earthquake deck for 0.3 s of motion (`examples/spire/earthquake.toml
     --set simulation.end_time=0.3 --set output.snapshot_interval=0`) on 1 and
     2 threads, with each damping scheme and (--overlap) under the overlap
-    joint model and (--scene-trigger) with the joints re-sampled scene-wide
-    instead of pair by pair, the main job too: microseconds per step and subcontact updates per
-    second.
+    joint model, (--points-follow) with the joint points following the
+    blocks (`simulation.joint_sampling = "step"`) and (--scene-trigger)
+    with the joints re-sampled scene-wide instead of pair by pair, the main
+    job too: microseconds per step and subcontact updates per second.
 The cases alternate, REPEAT rounds; each figure is the median over the
 rounds. Run it on a quiet machine (`uptime`): the note column keeps the
 highest load average seen at the start of a run."""
@@ -35,6 +36,8 @@ def main():
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--no-main-job", action="store_true", help="only the earthquake deck")
     ap.add_argument("--overlap", action="store_true", help="also the earthquake deck under the overlap joint model")
+    ap.add_argument("--points-follow", action="store_true",
+                    help="also the earthquake deck with the joint points following the blocks")
     ap.add_argument("--scene-trigger", action="store_true",
                     help="also the main job and the earthquake deck with the joints re-sampled scene-wide")
     args = ap.parse_args()
@@ -48,6 +51,11 @@ def main():
         for threads in (1, 2):
             cases.append((f"earthquake 0.3 s, overlap model, {threads} thread{'s' if threads > 1 else ''}",
                           EQ + ["--set", 'simulation.joint_model="overlap"'], threads))
+    if args.points_follow:
+        for threads in (1, 2):
+            cases.append((f"earthquake 0.3 s, points following the blocks, explicit, "
+                          f"{threads} thread{'s' if threads > 1 else ''}",
+                          EQ + ["--set", 'simulation.joint_sampling="step"'], threads))
     if args.scene_trigger:
         scene = ["--set", 'simulation.detection_trigger="scene"']
         if not args.no_main_job:
