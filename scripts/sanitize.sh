@@ -3,7 +3,7 @@
 # UndefinedBehaviorSanitizer (POLYDEM_SANITIZE=ON) in build-asan/. Any
 # sanitizer report fails the test it happens in. .ci/run runs it after
 # scripts/test.sh.
-#   scripts/sanitize.sh             build and run the default suite but one test
+#   scripts/sanitize.sh             build and run the default suite but seven tests
 #   SANITIZE_FULL=1 scripts/sanitize.sh   the whole default suite
 #   scripts/sanitize.sh -R deck     extra arguments go to ctest (an -E there
 #                                   replaces the exclusion below)
