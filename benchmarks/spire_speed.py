@@ -30,6 +30,11 @@ import timings_csv  # noqa: E402
 EQ = ["examples/spire/earthquake.toml", "--set", "simulation.end_time=0.3", "--set", "output.snapshot_interval=0"]
 
 
+def on(threads):
+    """'1 thread', '2 threads': the end of a case's name."""
+    return f"{threads} thread{'s' if threads > 1 else ''}"
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default="build")
@@ -45,23 +50,22 @@ def main():
     cases = [] if args.no_main_job else [("main job", ["--default"], None)]
     for scheme in ("explicit", "split"):
         for threads in (1, 2):
-            cases.append((f"earthquake 0.3 s, {scheme}, {threads} thread{'s' if threads > 1 else ''}",
+            cases.append((f"earthquake 0.3 s, {scheme}, {on(threads)}",
                           EQ + ["--set", f'simulation.damping_scheme="{scheme}"'], threads))
     if args.overlap:
         for threads in (1, 2):
-            cases.append((f"earthquake 0.3 s, overlap model, {threads} thread{'s' if threads > 1 else ''}",
+            cases.append((f"earthquake 0.3 s, overlap model, {on(threads)}",
                           EQ + ["--set", 'simulation.joint_model="overlap"'], threads))
     if args.points_follow:
         for threads in (1, 2):
-            cases.append((f"earthquake 0.3 s, points following the blocks, explicit, "
-                          f"{threads} thread{'s' if threads > 1 else ''}",
+            cases.append((f"earthquake 0.3 s, points following the blocks, explicit, {on(threads)}",
                           EQ + ["--set", 'simulation.joint_sampling="step"'], threads))
     if args.scene_trigger:
         scene = ["--set", 'simulation.detection_trigger="scene"']
         if not args.no_main_job:
             cases.append(("main job, scene trigger", ["--default"] + scene, None))
         for threads in (1, 2):
-            cases.append((f"earthquake 0.3 s, scene trigger, explicit, {threads} thread{'s' if threads > 1 else ''}",
+            cases.append((f"earthquake 0.3 s, scene trigger, explicit, {on(threads)}",
                           EQ + scene, threads))
     samples = {name: [] for name, _, _ in cases}
     top_load = 0.0
