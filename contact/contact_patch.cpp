@@ -136,6 +136,64 @@ double corner_areas(const Vec3* q, std::size_t np, const Vec3& n, double floor, 
   return total;
 }
 
+void clip_incident_face(const std::vector<Vec3>& ref_w, const std::vector<int>& rface, const Vec3& n,
+                        const std::vector<Vec3>& inc_w, const std::vector<int>& iface, PatchScratch& s) {
+  s.poly.clear();
+  s.poly_id.clear();
+  s.poly_def.clear();
+  s.poly_edge.clear();
+  for (std::size_t j = 0; j < iface.size(); ++j) {
+    s.poly.push_back(inc_w[iface[j]]);
+    s.poly_id.push_back(static_cast<std::uint32_t>(j));
+    s.poly_def.push_back({PointKind::incident_vertex, iface[j], -1, -1, -1});
+    s.poly_edge.push_back({iface[j], iface[(j + 1) % iface.size()], -1});
+  }
+  for (std::size_t k = 0; k < rface.size() && !s.poly.empty(); ++k) {
+    const Vec3& v0 = ref_w[rface[k]];
+    const Vec3& v1 = ref_w[rface[(k + 1) % rface.size()]];
+    Vec3 m = (v1 - v0).cross(n);
+    const double len = m.norm();
+    if (len == 0) continue;
+    m /= len;
+    const double c = m.dot(v0);
+    s.next.clear();
+    s.next_id.clear();
+    s.next_def.clear();
+    s.next_edge.clear();
+    const int side = static_cast<int>(k);
+    const std::size_t np = s.poly.size();
+    for (std::size_t j = 0; j < np; ++j) {
+      const Vec3& P = s.poly[j];
+      const Vec3& Q = s.poly[(j + 1) % np];
+      const double dp = m.dot(P) - c, dq = m.dot(Q) - c;
+      const PatchScratch::EdgeLine& along = s.poly_edge[j];  // the line P–Q lies on
+      if (dp <= 0) {
+        s.next.push_back(P);
+        s.next_id.push_back(s.poly_id[j]);
+        s.next_def.push_back(s.poly_def[j]);
+        s.next_edge.push_back(along);
+      }
+      if ((dp < 0 && dq > 0) || (dp > 0 && dq < 0)) {
+        const double t = dp / (dp - dq);
+        s.next.push_back(P + t * (Q - P));
+        const std::uint32_t idp = s.poly_id[j] & 0x3FFu, idq = s.poly_id[(j + 1) % np] & 0x3FFu;
+        s.next_id.push_back(0x80000000u | (static_cast<std::uint32_t>(k & 0x3FF) << 20) | (idp << 10) | idq);
+        // The crossing of P–Q's line with this side plane; leaving, the
+        // polygon goes on along the side plane, entering, along P–Q.
+        if (along.side < 0)
+          s.next_def.push_back({PointKind::incident_edge, along.v0, along.v1, side, -1});
+        else
+          s.next_def.push_back({PointKind::reference_corner, -1, -1, along.side, side});
+        s.next_edge.push_back(dp < 0 ? PatchScratch::EdgeLine{-1, -1, side} : along);
+      }
+    }
+    std::swap(s.poly, s.next);
+    std::swap(s.poly_id, s.next_id);
+    std::swap(s.poly_def, s.next_def);
+    std::swap(s.poly_edge, s.next_edge);
+  }
+}
+
 double corner_area_of_size(double size) { return 0.25 * size * size; }
 
 // A vertex appears where a corner of the incident face crosses a side plane
@@ -286,62 +344,7 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
       inc_face = static_cast<int>(f);
     }
   }
-  s.poly.clear();
-  s.poly_id.clear();
-  s.poly_def.clear();
-  s.poly_edge.clear();
-  const auto& iface = ip.faces[inc_face];
-  for (std::size_t j = 0; j < iface.size(); ++j) {
-    s.poly.push_back(inc_w[iface[j]]);
-    s.poly_id.push_back(static_cast<std::uint32_t>(j));
-    s.poly_def.push_back({PointKind::incident_vertex, iface[j], -1, -1, -1});
-    s.poly_edge.push_back({iface[j], iface[(j + 1) % iface.size()], -1});
-  }
-  const auto& rface = rp.faces[ref_face];
-  for (std::size_t k = 0; k < rface.size() && !s.poly.empty(); ++k) {
-    const Vec3& v0 = ref_w[rface[k]];
-    const Vec3& v1 = ref_w[rface[(k + 1) % rface.size()]];
-    Vec3 m = (v1 - v0).cross(n);
-    const double len = m.norm();
-    if (len == 0) continue;
-    m /= len;
-    const double c = m.dot(v0);
-    s.next.clear();
-    s.next_id.clear();
-    s.next_def.clear();
-    s.next_edge.clear();
-    const int side = static_cast<int>(k);
-    const std::size_t np = s.poly.size();
-    for (std::size_t j = 0; j < np; ++j) {
-      const Vec3& P = s.poly[j];
-      const Vec3& Q = s.poly[(j + 1) % np];
-      const double dp = m.dot(P) - c, dq = m.dot(Q) - c;
-      const PatchScratch::EdgeLine& along = s.poly_edge[j];  // the line P–Q lies on
-      if (dp <= 0) {
-        s.next.push_back(P);
-        s.next_id.push_back(s.poly_id[j]);
-        s.next_def.push_back(s.poly_def[j]);
-        s.next_edge.push_back(along);
-      }
-      if ((dp < 0 && dq > 0) || (dp > 0 && dq < 0)) {
-        const double t = dp / (dp - dq);
-        s.next.push_back(P + t * (Q - P));
-        const std::uint32_t idp = s.poly_id[j] & 0x3FFu, idq = s.poly_id[(j + 1) % np] & 0x3FFu;
-        s.next_id.push_back(0x80000000u | (static_cast<std::uint32_t>(k & 0x3FF) << 20) | (idp << 10) | idq);
-        // The crossing of P–Q's line with this side plane; leaving, the
-        // polygon goes on along the side plane, entering, along P–Q.
-        if (along.side < 0)
-          s.next_def.push_back({PointKind::incident_edge, along.v0, along.v1, side, -1});
-        else
-          s.next_def.push_back({PointKind::reference_corner, -1, -1, along.side, side});
-        s.next_edge.push_back(dp < 0 ? PatchScratch::EdgeLine{-1, -1, side} : along);
-      }
-    }
-    std::swap(s.poly, s.next);
-    std::swap(s.poly_id, s.next_id);
-    std::swap(s.poly_def, s.next_def);
-    std::swap(s.poly_edge, s.next_edge);
-  }
+  clip_incident_face(ref_w, rp.faces[ref_face], n, inc_w, ip.faces[inc_face], s);
   const double face_area_min = std::min(face_area(rp, ref_face), face_area(ip, inc_face));
   if (s.poly.empty()) {  // the incident face misses the reference face
     out.ref_face = ref_face;

@@ -113,6 +113,16 @@ double face_separation(const PosedBlock& self, int face, const std::vector<Vec3>
 // The block's vertices in world coordinates: R·v + x.
 void world_vertices(const PosedBlock& block, std::vector<Vec3>& world);
 
+// Step 3's clip: the incident face `iface` (indices into `inc_w`, the
+// incident block's world vertices) clipped by the side planes of the
+// reference face `rface` (into `ref_w`) of outward normal `n`, by
+// Sutherland–Hodgman. Into s.poly (points on the incident face, world),
+// s.poly_id (the feature ids that name the subcontacts), s.poly_def (what
+// each vertex is) and s.poly_edge (the line each edge lies on). Only the
+// entries of the two faces' vertices are read.
+void clip_incident_face(const std::vector<Vec3>& ref_w, const std::vector<int>& rface, const Vec3& n,
+                        const std::vector<Vec3>& inc_w, const std::vector<int>& iface, PatchScratch& s);
+
 // Steps 2-4 for a pair the narrow phase found within the margin (`hit`).
 // Returns false if the pair is farther apart than `margin` after all.
 // prev_ref_side / prev_ref_face: the previous detection's choice for this

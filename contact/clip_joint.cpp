@@ -1,0 +1,178 @@
+#include "contact/clip_joint.hpp"
+
+#include "contact/joint_law.hpp"
+#include "contact/moving_points.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace polydem {
+
+namespace {
+
+// The unit normal of the reference face's side plane `side` (out of the
+// face), from the world vertices, as the clip computes it.
+Vec3 side_normal(const std::vector<Vec3>& ref_w, const std::vector<int>& rface, int side, const Vec3& n) {
+  const auto k = static_cast<std::size_t>(side);
+  const Vec3 m = (ref_w[static_cast<std::size_t>(rface[(k + 1) % rface.size()])] -
+                  ref_w[static_cast<std::size_t>(rface[k])])
+                     .cross(n);
+  const double len = m.norm();
+  return len > 0 ? Vec3(m / len) : Vec3(Vec3::Zero());
+}
+
+}  // namespace
+
+ClipLoad clip_normal_load(const PosedBlock& ref, int ref_face, const PosedBlock& inc, int inc_face, const Vec3& n,
+                          double c, double kn, double face_area_min, ClipScratch& s) {
+  const Polyhedron& rp = *ref.shape;
+  const Polyhedron& ip = *inc.shape;
+  const auto& rface = rp.faces[static_cast<std::size_t>(ref_face)];
+  const auto& iface = ip.faces[static_cast<std::size_t>(inc_face)];
+  if (s.ref_w.size() < rp.vertices.size()) s.ref_w.resize(rp.vertices.size());
+  if (s.inc_w.size() < ip.vertices.size()) s.inc_w.resize(ip.vertices.size());
+  for (int v : rface) s.ref_w[static_cast<std::size_t>(v)] = ref.R * rp.vertices[static_cast<std::size_t>(v)] + ref.x;
+  for (int v : iface) s.inc_w[static_cast<std::size_t>(v)] = inc.R * ip.vertices[static_cast<std::size_t>(v)] + inc.x;
+  PatchScratch& ps = s.patch;
+  clip_incident_face(s.ref_w, rface, n, s.inc_w, iface, ps);
+  ClipLoad load;
+  const std::size_t np = ps.poly.size();
+  s.area.assign(np, 0.0);
+  s.u.resize(np);
+  s.on_plane.resize(np);
+  for (std::size_t j = 0; j < np; ++j) {
+    s.u[j] = c - n.dot(ps.poly[j]);
+    s.on_plane[j] = ps.poly[j] + s.u[j] * n;
+  }
+  if (np < 3) return load;
+  const double total = corner_areas(s.on_plane.data(), np, n, 1e-9 * face_area_min, s.area.data());
+  if (total <= 1e-9 * face_area_min) {
+    std::fill(s.area.begin(), s.area.end(), 0.0);
+    return load;
+  }
+  load.area = total;
+  double signed_area = 0;
+  for (std::size_t j = 1; j + 1 < np; ++j)
+    signed_area += (s.on_plane[j] - s.on_plane[0]).cross(s.on_plane[j + 1] - s.on_plane[0]).dot(n);
+  const double orientation = signed_area > 0 ? 1.0 : -1.0;
+  const Vec3 m_inc = inc.R * ip.normals[static_cast<std::size_t>(inc_face)];
+  const double mn = m_inc.dot(n);
+  Vec3 F = Vec3::Zero(), M = Vec3::Zero();  // the rest, on the incident block about its centroid
+  Vec3 F_springs = Vec3::Zero(), M_springs = Vec3::Zero();
+  for (std::size_t j = 0; j < np; ++j) {
+    const double u = s.u[j];
+    if (!(u > 0)) continue;
+    const double A = s.area[j];
+    load.energy += 0.5 * kn * A * u * u;
+    const Vec3 arm = ps.poly[j] - inc.x;
+    const Vec3 f_n = (kn * A * u) * n;
+    F_springs += f_n;
+    M_springs += arm.cross(f_n);
+    const PointDefinition& def = ps.poly_def[j];
+    Vec3 f = Vec3::Zero();
+    if (def.kind == PointKind::incident_edge) {
+      // The crossing slides along e as the side plane s cuts it:
+      // δu = −(n − ((n·e)/(s·e))·s)·δx of the edge's material point.
+      const Vec3 e = s.inc_w[static_cast<std::size_t>(def.v1)] - s.inc_w[static_cast<std::size_t>(def.v0)];
+      const Vec3 sn = side_normal(s.ref_w, rface, def.side, n);
+      const double se = sn.dot(e);
+      if (se * se > 1e-6 * e.squaredNorm()) f = (-kn * A * u * n.dot(e) / se) * sn;
+    } else if (def.kind == PointKind::reference_corner) {
+      // The incident face's plane moving under a fixed ray along n:
+      // δu = −(m·δx)/(m·n).
+      if (std::abs(mn) > 1e-9) f = (kn * A * u) * (m_inc / mn - n);
+    }
+    F += f;
+    M += arm.cross(f);
+  }
+  // The areas' part. E = (E/|P|)·|P| with the shares θ_i/2π: the polygon's
+  // area moves with each incident edge's line (C1 = E/|P| a unit of area),
+  // and the corners' angles with the lines' turns (C2 = ½·kn·|P|/2π a unit
+  // of angle and of u²).
+  if (load.energy > 0) {
+    const double C1 = load.energy / total;
+    const double C2 = 0.5 * kn * total / (2.0 * 3.14159265358979323846);
+    for (std::size_t j = 0; j < np; ++j) {
+      const PatchScratch::EdgeLine& line = ps.poly_edge[j];
+      if (line.side >= 0) continue;  // a side plane of the reference face: fixed in the reference block
+      const std::size_t k = (j + 1) % np;
+      const Vec3 d = s.on_plane[k] - s.on_plane[j];
+      const Vec3 Lnu = orientation * d.cross(n);  // length × outward normal
+      const Vec3 mid = 0.5 * (ps.poly[j] + ps.poly[k]);
+      F -= C1 * Lnu;
+      M -= C1 * (mid - inc.x).cross(Lnu);
+      const double uj = std::max(s.u[j], 0.0), uk = std::max(s.u[k], 0.0);
+      const double w = uj * uj - uk * uk;
+      if (w == 0) continue;
+      const Vec3 e = s.inc_w[static_cast<std::size_t>(line.v1)] - s.inc_w[static_cast<std::size_t>(line.v0)];
+      const Vec3 p = e - e.dot(n) * n;
+      const double p2 = p.squaredNorm();
+      if (p2 > 0) M -= (C2 * w * orientation / p2) * e.cross(n.cross(p));
+    }
+  }
+  load.rest_force = F;
+  load.rest_moment = M;
+  load.force = F + F_springs;
+  load.moment = M + M_springs;
+  return load;
+}
+
+void clip_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, const JointLaws& laws,
+                const std::vector<ContactPair>& pairs, double margin, Subcontacts& sub,
+                std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale, std::size_t begin,
+                std::size_t end, ClipScratch& s) {
+  for (std::size_t q = begin; q < end; ++q) {
+    const ContactPair& cp = pairs[q];
+    lanes::PairRest& w = rest[q];
+    w = lanes::PairRest{};
+    stale[q] = 0;
+    if (cp.count == 0 || cp.ref_face < 0) continue;
+    const int r = cp.ref_block;
+    const int i = cp.ref_block == cp.a ? cp.b : cp.a;
+    const auto s0 = static_cast<std::size_t>(cp.first);
+    const Polyhedron& rp = shapes[static_cast<std::size_t>(r)];
+    const Polyhedron& ip = shapes[static_cast<std::size_t>(i)];
+    const PosedBlock ref{&rp, st.rotation[r], st.position[r]};
+    const PosedBlock inc{&ip, st.rotation[i], st.position[i]};
+    const Vec3 n = st.rotation[r] * sub.ref_normal_local[s0];
+    const double c = sub.ref_offset_local[s0] + n.dot(st.position[r]);
+    const double c_geometric = cp.offset_local + n.dot(st.position[r]);
+    const double face_area_min = std::min(face_area(rp, cp.ref_face), face_area(ip, cp.inc_face));
+    const ClipLoad load =
+        clip_normal_load(ref, cp.ref_face, inc, cp.inc_face, n, c, laws.between(r, i).kn, face_area_min, s);
+    // The vertices a detection would keep (within the margin), in order,
+    // must be the pair's subcontacts.
+    const PatchScratch& ps = s.patch;
+    const int ref_side = cp.ref_block == cp.a ? 0 : 1;
+    std::size_t k = 0;
+    bool same = true;
+    for (std::size_t j = 0; j < ps.poly.size() && same; ++j) {
+      if (n.dot(ps.poly[j]) - c_geometric > margin) continue;
+      same = k < static_cast<std::size_t>(cp.count) &&
+             sub.key[s0 + k] == subcontact_key(ref_side, cp.ref_face, cp.inc_face, ps.poly_id[j]);
+      ++k;
+    }
+    if (!same || k != static_cast<std::size_t>(cp.count)) {
+      stale[q] = 1;
+      move_points(st, pairs, sub, q, q + 1);
+      continue;
+    }
+    const Mat3 RiT = st.rotation[i].transpose();
+    k = 0;
+    for (std::size_t j = 0; j < ps.poly.size(); ++j) {
+      if (n.dot(ps.poly[j]) - c_geometric > margin) continue;
+      sub.inc_point_local.set(s0 + k, RiT * (ps.poly[j] - st.position[i]));
+      sub.area[s0 + k] = s.area[j];
+      ++k;
+    }
+    const Vec3 xcr = st.position[i] - st.position[r];
+    const Vec3 moment_ref = -(load.rest_moment + xcr.cross(load.rest_force));
+    for (int d = 0; d < 3; ++d) {
+      w.force[d] = load.rest_force[d];
+      w.moment[d] = load.rest_moment[d];
+      w.moment_ref[d] = moment_ref[d];
+    }
+  }
+}
+
+}  // namespace polydem
