@@ -45,6 +45,7 @@ const char* name(JointModelKind m) {
   switch (m) {
     case JointModelKind::subcontacts: return "subcontacts";
     case JointModelKind::subcontacts_step: return "subcontacts, points following the blocks";
+    case JointModelKind::subcontacts_clip: return "subcontacts, joints clipped every step";
     case JointModelKind::overlap: return "overlap";
   }
   return "";
@@ -99,7 +100,8 @@ int main(int argc, char** argv) {
       {"1 m cube corner-on 2 mm into a cube, moved 0.02 x the 10 mm margin", [] { return cube_scene(true, 0.02); }}};
   Table table({"joint model", "scene", "seeds", "pairs", "worst jump"});
   for (const JointModelKind m :
-       {JointModelKind::subcontacts, JointModelKind::subcontacts_step, JointModelKind::overlap}) {
+       {JointModelKind::subcontacts, JointModelKind::subcontacts_step, JointModelKind::subcontacts_clip,
+        JointModelKind::overlap}) {
     for (const Case& k : cases) {
       test::RedetectionJump worst;
       for (int seed = 0; seed < seeds; ++seed) {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace polydem {
 
@@ -35,6 +36,7 @@ ClipLoad clip_normal_load(const PosedBlock& ref, int ref_face, const PosedBlock&
   for (int v : iface) s.inc_w[static_cast<std::size_t>(v)] = inc.R * ip.vertices[static_cast<std::size_t>(v)] + inc.x;
   PatchScratch& ps = s.patch;
   clip_incident_face(s.ref_w, rface, n, s.inc_w, iface, ps);
+  merge_coincident_vertices(ps);
   ClipLoad load;
   const std::size_t np = ps.poly.size();
   s.area.assign(np, 0.0);
@@ -45,8 +47,8 @@ ClipLoad clip_normal_load(const PosedBlock& ref, int ref_face, const PosedBlock&
     s.on_plane[j] = ps.poly[j] + s.u[j] * n;
   }
   if (np < 3) return load;
-  const double total = corner_areas(s.on_plane.data(), np, n, 1e-9 * face_area_min, s.area.data());
-  if (total <= 1e-9 * face_area_min) {
+  const double total = corner_areas(s.on_plane.data(), np, n, kClipNoArea * face_area_min, s.area.data());
+  if (total <= kClipNoArea * face_area_min) {
     std::fill(s.area.begin(), s.area.end(), 0.0);
     return load;
   }
@@ -140,36 +142,68 @@ void clip_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, con
     const double face_area_min = std::min(face_area(rp, cp.ref_face), face_area(ip, cp.inc_face));
     const ClipLoad load =
         clip_normal_load(ref, cp.ref_face, inc, cp.inc_face, n, c, laws.between(r, i).kn, face_area_min, s);
-    // The vertices a detection would keep (within the margin), in order,
-    // must be the pair's subcontacts.
+    // Each subcontact takes the vertex nearest to where it was put at the
+    // last step (it has moved since by a step's sliding), unambiguously:
+    // nearer than a quarter of that vertex's distance to any other, and no
+    // vertex taken twice. Every vertex that turns the boundary by more than
+    // kClipCornerAngle must be taken; one turning less (a corner of two
+    // nearly aligned faces, whose vertices come and go as the stones
+    // vibrate) may be left without a subcontact, its spring's load then in
+    // the pair's wrench (no shear spring, no dashpot: it has at most
+    // kClipCornerAngle/2π of the area). Otherwise the pair is re-sampled.
     const PatchScratch& ps = s.patch;
-    const int ref_side = cp.ref_block == cp.a ? 0 : 1;
-    std::size_t k = 0;
-    bool same = true;
-    for (std::size_t j = 0; j < ps.poly.size() && same; ++j) {
-      if (n.dot(ps.poly[j]) - c_geometric > margin) continue;
-      same = k < static_cast<std::size_t>(cp.count) &&
-             sub.key[s0 + k] == subcontact_key(ref_side, cp.ref_face, cp.inc_face, ps.poly_id[j]);
-      ++k;
+    const std::size_t np = ps.poly.size();
+    const auto count = static_cast<std::size_t>(cp.count);
+    if (s.taken.size() < np) s.taken.resize(np);
+    if (s.vertex_of.size() < count) s.vertex_of.resize(count);
+    // A pair without area carries nothing (no springs to match) until it
+    // has some.
+    bool none = load.area == 0;
+    for (std::size_t t = 0; t < count && none; ++t) none = sub.area[s0 + t] == 0;
+    if (none) continue;
+    bool same = load.area > 0;
+    std::fill(s.taken.begin(), s.taken.begin() + static_cast<std::ptrdiff_t>(np), 0);
+    for (std::size_t t = 0; t < count && same; ++t) {
+      const Vec3 last = st.rotation[i] * sub.inc_point_local[s0 + t] + st.position[i];
+      std::size_t nearest = np;
+      double d2 = std::numeric_limits<double>::infinity();
+      for (std::size_t j = 0; j < np; ++j) {
+        const double e2 = (ps.poly[j] - last).squaredNorm();
+        if (e2 < d2) d2 = e2, nearest = j;
+      }
+      double apart2 = std::numeric_limits<double>::infinity();
+      for (std::size_t j = 0; j < np; ++j)
+        if (j != nearest) apart2 = std::min(apart2, (ps.poly[j] - ps.poly[nearest]).squaredNorm());
+      same = nearest < np && !s.taken[nearest] && d2 <= 0.0625 * apart2 &&
+             n.dot(ps.poly[nearest]) - c_geometric <= margin;
+      if (same) s.taken[nearest] = 1, s.vertex_of[t] = nearest;
     }
-    if (!same || k != static_cast<std::size_t>(cp.count)) {
+    for (std::size_t j = 0; j < np && same; ++j)
+      same = s.taken[j] || n.dot(ps.poly[j]) - c_geometric > margin ||
+             s.area[j] < kClipCornerAngle / (2.0 * 3.14159265358979323846) * load.area;
+    if (!same) {
       stale[q] = 1;
       move_points(st, pairs, sub, q, q + 1);
       continue;
     }
     const Mat3 RiT = st.rotation[i].transpose();
-    k = 0;
-    for (std::size_t j = 0; j < ps.poly.size(); ++j) {
-      if (n.dot(ps.poly[j]) - c_geometric > margin) continue;
-      sub.inc_point_local.set(s0 + k, RiT * (ps.poly[j] - st.position[i]));
-      sub.area[s0 + k] = s.area[j];
-      ++k;
+    for (std::size_t t = 0; t < count; ++t) {
+      sub.inc_point_local.set(s0 + t, RiT * (ps.poly[s.vertex_of[t]] - st.position[i]));
+      sub.area[s0 + t] = s.area[s.vertex_of[t]];
+    }
+    Vec3 force = load.rest_force, moment = load.rest_moment;
+    const double kn = laws.between(r, i).kn;
+    for (std::size_t j = 0; j < np; ++j) {
+      if (s.taken[j] || !(s.u[j] > 0)) continue;
+      const Vec3 f = (kn * s.area[j] * s.u[j]) * n;
+      force += f;
+      moment += (ps.poly[j] - st.position[i]).cross(f);
     }
     const Vec3 xcr = st.position[i] - st.position[r];
-    const Vec3 moment_ref = -(load.rest_moment + xcr.cross(load.rest_force));
+    const Vec3 moment_ref = -(moment + xcr.cross(force));
     for (int d = 0; d < 3; ++d) {
-      w.force[d] = load.rest_force[d];
-      w.moment[d] = load.rest_moment[d];
+      w.force[d] = force[d];
+      w.moment[d] = moment[d];
       w.moment_ref[d] = moment_ref[d];
     }
   }

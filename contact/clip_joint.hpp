@@ -62,7 +62,13 @@ struct ClipScratch {
   std::vector<Vec3> ref_w, inc_w;  // world vertices: only the two faces' entries are set
   std::vector<Vec3> on_plane;
   std::vector<double> area, u;
+  std::vector<std::uint8_t> taken;     // per vertex: a subcontact's
+  std::vector<std::size_t> vertex_of;  // per subcontact: its vertex
 };
+
+// A vertex of the clipped polygon turning its boundary by less than this
+// (rad) need not have a subcontact (clip_pairs).
+inline constexpr double kClipCornerAngle = 1e-3;
 
 // One face pair's normal layer at the blocks' current poses.
 struct ClipLoad {
@@ -82,8 +88,8 @@ struct ClipLoad {
 // normal `n` (the reference face's, out of it) and offset `c` (n·x = c; the
 // overlap at x is c − n·x). After it, `s.patch.poly` etc. hold the polygon,
 // s.area the vertices' corner areas and s.u their overlaps. `face_area_min`:
-// the smaller of the two faces' areas; a polygon of at most 1e-9 of it has
-// no area.
+// the smaller of the two faces' areas; a polygon of at most kClipNoArea of
+// it has no area (contact_patch.hpp).
 ClipLoad clip_normal_load(const PosedBlock& ref, int ref_face, const PosedBlock& inc, int inc_face, const Vec3& n,
                           double c, double kn, double face_area_min, ClipScratch& s);
 

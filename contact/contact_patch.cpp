@@ -194,6 +194,51 @@ void clip_incident_face(const std::vector<Vec3>& ref_w, const std::vector<int>& 
   }
 }
 
+void merge_coincident_vertices(PatchScratch& s) {
+  const std::size_t np = s.poly.size();
+  if (np < 2) return;
+  double extent = 0;
+  for (std::size_t j = 0; j < np; ++j) extent = std::max(extent, (s.poly[(j + 1) % np] - s.poly[j]).squaredNorm());
+  const double same = 1e-18 * extent;
+  std::size_t kept = 1;
+  for (std::size_t j = 1; j < np; ++j) {
+    if ((s.poly[j] - s.poly[kept - 1]).squaredNorm() <= same) {
+      s.poly_edge[kept - 1] = s.poly_edge[j];
+      continue;
+    }
+    s.poly[kept] = s.poly[j];
+    s.poly_id[kept] = s.poly_id[j];
+    s.poly_def[kept] = s.poly_def[j];
+    s.poly_edge[kept] = s.poly_edge[j];
+    ++kept;
+  }
+  // The last at the first's place: the first is the one kept.
+  while (kept > 1 && (s.poly[kept - 1] - s.poly[0]).squaredNorm() <= same) --kept;
+  // A vertex where the boundary runs straight on (within 1e-9 rad): the
+  // edge before it goes on along its line.
+  for (bool removed = true; removed && kept > 3;) {
+    removed = false;
+    for (std::size_t j = 0; j < kept && kept > 3; ++j) {
+      const Vec3 in = s.poly[j] - s.poly[(j + kept - 1) % kept];
+      const Vec3 out = s.poly[(j + 1) % kept] - s.poly[j];
+      if (in.dot(out) <= 0 || in.cross(out).squaredNorm() > 1e-18 * in.squaredNorm() * out.squaredNorm()) continue;
+      for (std::size_t k = j; k + 1 < kept; ++k) {
+        s.poly[k] = s.poly[k + 1];
+        s.poly_id[k] = s.poly_id[k + 1];
+        s.poly_def[k] = s.poly_def[k + 1];
+        s.poly_edge[k] = s.poly_edge[k + 1];
+      }
+      --kept;
+      removed = true;
+      --j;  // the vertex now at j (j wraps to the end at j = 0: the loop's next pass sees it)
+    }
+  }
+  s.poly.resize(kept);
+  s.poly_id.resize(kept);
+  s.poly_def.resize(kept);
+  s.poly_edge.resize(kept);
+}
+
 double corner_area_of_size(double size) { return 0.25 * size * size; }
 
 // A vertex appears where a corner of the incident face crosses a side plane
@@ -345,6 +390,7 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
     }
   }
   clip_incident_face(ref_w, rp.faces[ref_face], n, inc_w, ip.faces[inc_face], s);
+  if (points == PatchPoints::clipped) merge_coincident_vertices(s);
   const double face_area_min = std::min(face_area(rp, ref_face), face_area(ip, inc_face));
   if (s.poly.empty()) {  // the incident face misses the reference face
     out.ref_face = ref_face;
@@ -371,10 +417,13 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
   }
   std::vector<double>& areas = s.areas;
   areas.resize(np);
-  const double total = points == PatchPoints::following
+  const double total = points != PatchPoints::detection
                            ? corner_areas(on_plane.data(), np, n, 1e-9 * face_area_min, areas.data())
                            : fan_areas(on_plane.data(), np, n, 1e-9 * face_area_min, areas.data());
-  if (total <= 1e-9 * face_area_min) {
+  if (points == PatchPoints::clipped && total <= kClipNoArea * face_area_min) {
+    // No area: the clipped joint's springs have none either (clip_joint.hpp).
+    for (auto& p : out.points) p.area = 0;
+  } else if (total <= 1e-9 * face_area_min) {
     // A polygon without area: the two faces touch only along their
     // boundary (side-by-side stones whose faces meet at an edge line, or a
     // face exactly edge-on). A nominal area, 1 % of the smaller face, shared

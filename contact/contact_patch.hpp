@@ -99,7 +99,29 @@ struct PatchScratch {
 // for points that follow the blocks (`following`,
 // contact/moving_points.hpp: corner_areas, which do not jump when the
 // polygon gains or loses a vertex).
-enum class PatchPoints { detection, following };
+// `clipped` (joint_sampling "clip", contact/clip_joint.hpp): corner_areas
+// over the polygon with its coincident vertices merged
+// (merge_coincident_vertices), and a polygon without area has none.
+enum class PatchPoints { detection, following, clipped };
+
+// Under `clipped`, a polygon of at most this fraction of the smaller face's
+// area has none: the two faces touch along a line (side-by-side stones), or
+// a sliver a round-off wide whose vertices come and go from one step to the
+// next. Its springs would have at most a millionth of a face contact's
+// stiffness.
+inline constexpr double kClipNoArea = 1e-6;
+
+// The clipped polygon in `s` with each vertex at the same place as the one
+// before it (within 1e-9 of the longest edge) removed, the edge on from
+// the vertex kept taking the removed one's line, and each vertex where the
+// boundary runs straight on (within 1e-9 rad) removed, the edge before it
+// going on along its line. Masonry is full of faces whose corners lie
+// exactly on a neighbour's side plane or edge line: whether the clip then
+// gives the corner, a crossing or two at the same place, or a vertex
+// mid-edge is round-off's choice, which would otherwise change the
+// polygon's vertex count from one step to the next. The corners' areas do
+// not change (corner_areas gives such a vertex nothing).
+void merge_coincident_vertices(PatchScratch& s);
 
 // The area a corner subcontact carries in a face contact between blocks of
 // size l (cube root of volume): a face l × l over its four corners, l²/4.

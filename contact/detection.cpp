@@ -326,7 +326,7 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
 }
 
 bool ContactDetector::moved_pairs(const Blocks& b, const ContactSet& contacts, double dt, std::vector<int>& moved,
-                                  bool bound_first) const {
+                                  bool bound_first, const std::vector<std::uint8_t>* stale) const {
   auto& im = *impl_;
   moved.clear();
   const std::size_t np = contacts.pairs.size();
@@ -341,6 +341,10 @@ bool ContactDetector::moved_pairs(const Blocks& b, const ContactSet& contacts, d
   auto test = [&](std::size_t begin, std::size_t end, std::vector<int>& out) {
     for (std::size_t q = begin; q < end; ++q) {
       const ContactPair& p = contacts.pairs[q];
+      if (stale && q < stale->size() && (*stale)[q]) {
+        out.push_back(static_cast<int>(q));
+        continue;
+      }
       if (bound_first && pair_travel_bound(b, p.a, p.b, im.pose[q], dt) < clear) continue;
       if (!(pair_travel(b, p.a, p.b, im.pose[q], dt) <= travel_))
         out.push_back(static_cast<int>(q));  // NaN too: sampled again, the guard judges the state
@@ -480,7 +484,9 @@ void ContactDetector::narrow_phase_and_patches(const Blocks& b, const ContactSet
     }
     im.found[k] = build_patch(posed(b, i), posed(b, j), margin_, im.hits[k], prev_side, prev_face, im.patches[k],
                               im.scratch[omp_get_thread_num()], pair_joints_,
-                              points_follow_ ? PatchPoints::following : PatchPoints::detection);
+                              clipped_         ? PatchPoints::clipped
+                              : points_follow_ ? PatchPoints::following
+                                               : PatchPoints::detection);
   }
   const Clock::time_point t3 = Clock::now();
   times.narrow_phase = seconds(t1, t2);

@@ -125,6 +125,10 @@ class ContactDetector {
   // (contact/moving_points.hpp): each point of a clipped polygon is kept
   // with what it is in the blocks' geometry. Set before the first detection.
   void set_points_follow(bool on) { points_follow_ = on; }
+  // The joints clipped again at every step (contact/clip_joint.hpp): the
+  // patches' polygons with coincident vertices merged and no nominal areas
+  // (PatchPoints::clipped). Set with set_points_follow(true).
+  void set_clipped(bool on) { clipped_ = on; }
   bool pair_trigger() const { return pair_trigger_; }
   // What the scene-wide test compares the two largest travels with: the
   // detection travel, or half the margin when pairs are re-sampled on their
@@ -161,8 +165,10 @@ class ContactDetector {
   // `moved` (ascending). Returns whether there are any. `bound_first`: a
   // cheap bound settles the clear cases (the same answer; false only for
   // tests comparing the two).
+  // `stale` (per pair, or null): pairs to re-sample whatever their motion
+  // (joint_sampling = "clip": their polygon's vertices have changed).
   bool moved_pairs(const Blocks& blocks, const ContactSet& contacts, double dt, std::vector<int>& moved,
-                   bool bound_first = true) const;
+                   bool bound_first = true, const std::vector<std::uint8_t>* stale = nullptr) const;
   // Re-samples the pairs `moved` of `contacts` (ascending), each as detect()
   // would, carrying its history by position, and takes the others over
   // whole. A moved pair no longer within the margin would leave the scene's
@@ -210,6 +216,7 @@ class ContactDetector {
   bool pair_joints_ = false;
   bool pair_trigger_ = false;
   bool points_follow_ = false;
+  bool clipped_ = false;
   long long pairs_resampled_ = 0;
 };
 

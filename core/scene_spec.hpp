@@ -61,8 +61,10 @@ enum class DetectionTrigger { automatic, scene, pair };
 // geometry (a corner of the incident face, an incident edge's crossing with a
 // side plane, a reference corner's line on the incident face) puts it at
 // every step, with its share of the polygon by its corner's angle, taken at
-// the detection.
-enum class JointSampling { detection, step };
+// the detection; `clip`, the pair's face polygon clipped again at every step,
+// each point its vertex now with its corner's share of the polygon now, and
+// the load the exact gradient of the springs' energy (contact/clip_joint.hpp).
+enum class JointSampling { detection, step, clip };
 
 // [simulation]
 struct SimulationSpec {

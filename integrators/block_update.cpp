@@ -9,6 +9,15 @@ namespace polydem {
 
 namespace {
 
+// Block k's share of the pairs' clip rest (joint_sampling = "clip") added
+// to its gathered force and moment.
+void add_clip_rest(const BlockUpdate& u, int k) {
+  Vec3 f, m;
+  u.clip_gather->sum(k, *u.clip_rest, f, m);
+  u.blocks.state.contact_force[k] += f;
+  u.blocks.state.contact_torque[k] += m;
+}
+
 // Blocks i and i + 1 (when below end) gathered, two sums in flight.
 void gather_two_blocks(const BlockUpdate& u, int i, int end) {
   auto& st = u.blocks.state;
@@ -22,6 +31,8 @@ void gather_two_blocks(const BlockUpdate& u, int i, int end) {
     u.gather.two(a, i, i + 1);
   else
     u.gather.block(a, i);
+  if (u.clip_gather)
+    for (int k = i; k < std::min(i + 2, end); ++k) add_clip_rest(u, k);
 }
 
 // Free block i's force and moment at the step's time, and the inverse mass
@@ -242,7 +253,10 @@ void gather_all_blocks(const BlockUpdate& u) {
     return;
   }
   const gather_lanes::GatherArrays a = gather_lane_arrays(u.contacts, st.position, st.contact_force, st.contact_torque);
-  for (int i = 0; i < u.blocks.count; ++i) u.gather.block(a, i);
+  for (int i = 0; i < u.blocks.count; ++i) {
+    u.gather.block(a, i);
+    if (u.clip_gather) add_clip_rest(u, i);
+  }
 }
 
 }  // namespace polydem

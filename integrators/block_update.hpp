@@ -52,6 +52,10 @@ struct BlockUpdate {
   // (contact/pair_gather.hpp) in place of the subcontacts' forces.
   const PairGather* pair_gather = nullptr;
   const std::vector<lanes::PairRest>* pair_wrench = nullptr;
+  // Under joint_sampling = "clip": the rest of each pair's gradient
+  // (contact/clip_joint.hpp), gathered by pair onto the subcontacts' forces.
+  const PairGather* clip_gather = nullptr;
+  const std::vector<lanes::PairRest>* clip_rest = nullptr;
 };
 
 // Gathers and advances the free blocks [begin, end) (the calling thread's).

@@ -49,7 +49,10 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, JointLaws laws,
   if (overlap_joints_) overlap_scratch_.resize(static_cast<std::size_t>(std::max(1, omp_get_max_threads())));
   detector_.set_pair_joints(overlap_joints_);
   detector_.set_pair_trigger(pair_by_pair(sim));
-  detector_.set_points_follow(sim.joint_sampling == JointSampling::step);
+  clip_ = sim.joint_sampling == JointSampling::clip;
+  if (clip_) clip_scratch_.resize(static_cast<std::size_t>(std::max(1, omp_get_max_threads())));
+  detector_.set_points_follow(sim.joint_sampling == JointSampling::step || clip_);
+  detector_.set_clipped(clip_);
   ledger_.start(blocks_.state);
   // The first detection on the governor's threads: one, when it governs
   // (beside a competitor the first region on two threads waits ~15 ms for
@@ -59,6 +62,7 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, JointLaws laws,
   // The first detection samples the joints; it re-samples nothing (its
   // counters would hold the strain of blocks built overlapping).
   contacts_.dropped_shear_energy = contacts_.resampled_normal_energy = 0;
+  if (clip_) clip_all(threads_.governor.now);
   clock_.dt_prev = clock_.dt;
   if (sim_.damping_scheme == DampingScheme::split)
     rest_.set_step(clock_.dt, step_law_.beta, sim_.safety_factor, blocks_.count);
@@ -106,7 +110,9 @@ void Simulation::joint_forces(double dt, std::size_t begin, std::size_t end, Cod
                          contacts_.joints, dt, begin, end, overlap_scratch_[static_cast<std::size_t>(thread)]);
     return;
   }
-  if (contacts_.sub.moving.on)
+  if (clip_) {
+    // The joints were clipped at this pose before the detection (clip_all).
+  } else if (contacts_.sub.moving.on)
     move_points(blocks_.state, contacts_.pairs, contacts_.sub, begin, end);
   compute_pair_forces(laws_, blocks_.state, contacts_.pairs, contacts_.sub, dt, begin, end, path, part);
 }
@@ -142,6 +148,7 @@ DetectionTimes Simulation::detect_contacts(const std::vector<int>* moved) {
   // alone (unless it became a scene-wide detection).
   const std::vector<int>* only = moved && contacts_.detections == detections ? &moved_blocks_ : nullptr;
   if (overlap_joints_) pair_gather_.build(contacts_.pairs, blocks_.count, &contacts_.joints.ref_block);
+  if (clip_) size_clip_lists();
   if (sim_.damping_scheme == DampingScheme::split) rest_.size_for(contacts_, blocks_.count);
   if (!control_.adaptive) return times;
   const CriticalStep c =
@@ -157,6 +164,31 @@ DetectionTimes Simulation::detect_contacts(const std::vector<int>* moved) {
   return times;
 }
 
+// The clip's per-pair lists for the pairs now (their contents are
+// clip_all's to write).
+void Simulation::size_clip_lists() {
+  clip_gather_.build(contacts_.pairs, blocks_.count);
+  clip_rest_.assign(contacts_.pairs.size(), lanes::PairRest{});
+  clip_stale_.assign(contacts_.pairs.size(), 0);
+}
+
+// Under joint_sampling = "clip", every pair's face polygon clipped at the
+// blocks' poses now (contact/clip_joint.hpp), in parallel over pairs (each
+// writes its own), on `threads` threads.
+void Simulation::clip_all(int threads) {
+  const std::size_t np = contacts_.pairs.size();
+  if (clip_scratch_.size() < static_cast<std::size_t>(threads))
+    clip_scratch_.resize(static_cast<std::size_t>(threads));
+  const bool parallel = threads > 1 && large_enough_for_threads();
+#pragma omp parallel if (parallel) num_threads(threads)
+  {
+    const int nt = omp_get_num_threads(), t = omp_get_thread_num();
+    const auto [pb, pe] = thread_range(np, static_cast<std::size_t>(nt), static_cast<std::size_t>(t));
+    clip_pairs(blocks_.props.local_shape, blocks_.state, laws_, contacts_.pairs, detector_.margin(), contacts_.sub,
+               clip_rest_, clip_stale_, pb, pe, clip_scratch_[static_cast<std::size_t>(t)]);
+  }
+}
+
 bool Simulation::large_enough_for_threads() const {
   return polydem::large_enough_for_threads(threads_, contacts_.sub.size(), blocks_.free_blocks.size());
 }
@@ -167,10 +199,19 @@ void Simulation::step() {
   const int threads = threads_for_this_step(threads_, big);
   detector_.set_threads(threads);
   double patch = 0;  // 1. detection, where the half-margin test asks for it
-  if (!detection_known_unneeded(threads_, clock_.dt) && detector_.needs_detection(blocks_, clock_.dt))
+  // Under "clip" the joints clipped at this pose first: a pair whose
+  // polygon's vertices have changed is re-sampled now, at the same pose.
+  if (clip_) clip_all(threads);
+  bool detected = false;
+  if (!detection_known_unneeded(threads_, clock_.dt) && detector_.needs_detection(blocks_, clock_.dt)) {
     patch = detect_contacts().patch;
-  else if (detector_.pair_trigger() && detector_.moved_pairs(blocks_, contacts_, clock_.dt, moved_pairs_))
+    detected = true;
+  } else if (detector_.pair_trigger() && detector_.moved_pairs(blocks_, contacts_, clock_.dt, moved_pairs_, true,
+                                                                 clip_ ? &clip_stale_ : nullptr)) {
     patch = detect_contacts(&moved_pairs_).patch;  // pair by pair: the moved pairs alone
+    detected = true;
+  }
+  if (clip_ && detected) clip_all(threads);  // the pairs re-sampled (and the set's new order)
   const Clock::time_point t1 = Clock::now();
   const StepLoads loads = step_loads();  // the loads once, before the threads
   if (!loads_.loaded.empty() && !stage_.active) evaluate_point_loads(loads_, blocks_.state, clock_.time);
@@ -229,6 +270,10 @@ BlockUpdate Simulation::block_update(const StepLoads& loads) {
   if (overlap_joints_) {
     u.pair_gather = &pair_gather_;
     u.pair_wrench = &contacts_.joints.wrench;
+  }
+  if (clip_) {
+    u.clip_gather = &clip_gather_;
+    u.clip_rest = &clip_rest_;
   }
   return u;
 }
@@ -382,6 +427,7 @@ void Simulation::load_state(ByteReader& r) {
     r.get_sized(rest_.work, n, "rest_work");
     r.get_sized(rest_.pending, n, "rest_pending");
   }
+  if (clip_) size_clip_lists();  // clip_all fills them at the next step
 }
 
 double Simulation::largest_opening(int i) const {

@@ -19,6 +19,7 @@
 // written by one iteration, and 1 and 2 threads give the same bits.
 #pragma once
 
+#include "contact/clip_joint.hpp"
 #include "contact/detection.hpp"
 #include "contact/overlap_joint.hpp"
 #include "contact/pair_gather.hpp"
@@ -118,6 +119,8 @@ class Simulation {
   void set_code_path(CodePath path) { code_path_ = path; }
   void set_thread_governor(ThreadGovernor settings);
   const ThreadGovernor& thread_governor() const { return threads_.governor; }
+  void size_clip_lists();
+  void clip_all(int threads);
   bool large_enough_for_threads() const;
 
  private:
@@ -159,6 +162,14 @@ class Simulation {
   bool overlap_joints_ = false;
   std::vector<OverlapScratch> overlap_scratch_;
   PairGather pair_gather_;
+  // joint_sampling = "clip" (contact/clip_joint.hpp): per-thread scratch,
+  // each pair's gradient rest and each block's pairs, and the pairs whose
+  // polygon's vertices have changed (re-sampled before the law).
+  bool clip_ = false;
+  std::vector<ClipScratch> clip_scratch_;
+  std::vector<lanes::PairRest> clip_rest_;
+  std::vector<std::uint8_t> clip_stale_;
+  PairGather clip_gather_;
   std::vector<int> moved_pairs_;   // pair by pair: the pairs to re-sample (scratch)
   std::vector<int> moved_blocks_;  // and their blocks
   StepProfile profile_;

@@ -131,9 +131,15 @@ SimulationSpec read_simulation(const Deck& deck) {
   if (s.joint_model == JointModel::overlap && s.detection_trigger == DetectionTrigger::pair)
     r.fail("detection_trigger", "\"pair\" re-samples subcontacts: it needs joint_model = \"subcontacts\"");
   s.joint_sampling = r.choice<JointSampling>(
-      "joint_sampling", {{"detection", JointSampling::detection}, {"step", JointSampling::step}}, s.joint_sampling);
-  if (s.joint_model == JointModel::overlap && s.joint_sampling == JointSampling::step)
-    r.fail("joint_sampling", "\"step\" moves subcontacts: it needs joint_model = \"subcontacts\"");
+      "joint_sampling",
+      {{"detection", JointSampling::detection}, {"step", JointSampling::step}, {"clip", JointSampling::clip}},
+      s.joint_sampling);
+  if (s.joint_model == JointModel::overlap && s.joint_sampling != JointSampling::detection)
+    r.fail("joint_sampling", std::string(s.joint_sampling == JointSampling::step ? "\"step\"" : "\"clip\"") +
+                                 " moves subcontacts: it needs joint_model = \"subcontacts\"");
+  if (s.joint_sampling == JointSampling::clip && s.detection_trigger == DetectionTrigger::scene)
+    r.fail("joint_sampling", "\"clip\" re-samples a pair when its polygon's vertices change: it needs "
+                             "detection_trigger = \"pair\" (the default)");
   if (const auto t = r.integer("threads")) {
     if (*t < 0 || *t > 4096) r.fail("threads", "must be in [0, 4096], 0 = OpenMP default (got " + std::to_string(*t) + ")");
     s.threads = static_cast<int>(*t);

@@ -215,7 +215,9 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   s.set("contact_margin_m", r.margin);
   s.set("detection_travel_m", r.detection_travel);
   s.set("detection_trigger", pair_by_pair(spec.simulation) ? "pair" : "scene");
-  s.set("joint_sampling", spec.simulation.joint_sampling == JointSampling::step ? "step" : "detection");
+  s.set("joint_sampling", spec.simulation.joint_sampling == JointSampling::step   ? "step"
+                                     : spec.simulation.joint_sampling == JointSampling::clip ? "clip"
+                                                                                             : "detection");
   s.set("blocks", r.blocks);
   s.set("free_blocks", r.free_blocks);
   const std::vector<GroupTotals> groups = group_totals(spec.blocks, r.assessment.dislodged_blocks);

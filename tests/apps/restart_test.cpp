@@ -282,6 +282,25 @@ TEST_F(Restart, PointsFollowingTheBlocksContinueBitwiseIdentical) {
   expect_identical(ref, run_scene(spec, control));
 }
 
+// With the joints clipped at every step (their points and areas in the
+// checkpoint, the clip's rest made again from the pose), likewise.
+TEST_F(Restart, ClippedJointsContinueBitwiseIdentical) {
+  overrides_.push_back("simulation.joint_sampling=\"clip\"");
+  const SceneSpec spec = read_deck(deck_.string(), overrides_);
+  const RunReport ref = run_scene(spec);
+  ASSERT_GT(ref.detections, 2);
+  const long first_checkpoint_step = static_cast<long>(0.05 / ref.time_step) + 2;
+  const long kill_at = first_checkpoint_step + (ref.steps - first_checkpoint_step) / 2;
+  const fs::path out = dir_ / "killed_clip";
+  const int status = run_killed(kill_at, out);
+  ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << "status " << status;
+  const std::string state =
+      decode_checkpoint(read_text(out / kCheckpointFile), fingerprint(), (out / kCheckpointFile).string());
+  RunControl control;
+  control.restart = &state;
+  expect_identical(ref, run_scene(spec, control));
+}
+
 TEST_F(Restart, BinaryRestartWritesTheSameResults) {
   // Uninterrupted binary run with checkpoints.
   const fs::path whole = dir_ / "whole", killed = dir_ / "killed";

@@ -457,9 +457,15 @@ TEST(DeckErrors, TheOverlapModelRefusesBondsAndTheSplitScheme) {
   // Its joints have no points to move.
   expect_error("[simulation]\njoint_model = \"overlap\"\njoint_sampling = \"step\"\n[[block]]\n" + kBox, 3,
                "simulation.joint_sampling", "it needs joint_model = \"subcontacts\"");
+  expect_error("[simulation]\njoint_model = \"overlap\"\njoint_sampling = \"clip\"\n[[block]]\n" + kBox, 3,
+               "simulation.joint_sampling", "\"clip\" moves subcontacts: it needs joint_model = \"subcontacts\"");
   expect_error("[simulation]\njoint_sampling = \"always\"\n[[block]]\n" + kBox, 2, "simulation.joint_sampling",
-               "must be one of \"detection\", \"step\" (got \"always\")");
+               "must be one of \"detection\", \"step\", \"clip\" (got \"always\")");
   EXPECT_NO_THROW(parse_deck("[simulation]\njoint_sampling = \"step\"\n[[block]]\n" + kBox, kFile));
+  // The clipped joints are re-sampled pair by pair when their vertices change.
+  expect_error("[simulation]\ndetection_trigger = \"scene\"\njoint_sampling = \"clip\"\n[[block]]\n" + kBox, 3,
+               "simulation.joint_sampling", "it needs detection_trigger = \"pair\"");
+  EXPECT_NO_THROW(parse_deck("[simulation]\njoint_sampling = \"clip\"\n[[block]]\n" + kBox, kFile));
 }
 
 TEST(DeckErrors, BadEnumsListTheAllowedValues) {

@@ -15,6 +15,7 @@
 // whole force.
 #pragma once
 
+#include "contact/clip_joint.hpp"
 #include "contact/detection.hpp"
 #include "contact/joint_law.hpp"
 #include "contact/overlap_joint.hpp"
@@ -83,8 +84,9 @@ inline Blocks cube_into_cube(bool corner, double depth) {
 
 // The joint models compared: subcontacts held fixed in the incident block
 // between detections (the default), subcontacts whose points follow the
-// blocks (joint_sampling "step"), the overlap model.
-enum class JointModelKind { subcontacts, subcontacts_step, overlap };
+// blocks (joint_sampling "step"), the joints clipped at every step
+// (joint_sampling "clip"), the overlap model.
+enum class JointModelKind { subcontacts, subcontacts_step, subcontacts_clip, overlap };
 
 // A pair's wrench: the force on block b (the larger index) and the moment
 // on each block about its own centroid.
@@ -94,9 +96,29 @@ struct PairWrench {
 };
 using PairWrenches = std::map<std::pair<int, int>, PairWrench>;
 
-// Evaluates the law over dt and returns every pair's wrench.
+// Under "clip", the joints clipped at the blocks' poses as a step does
+// (Simulation::clip_all): a pair whose polygon's vertices have changed
+// re-sampled at this pose by `det`, and clipped again.
+inline void clip_joints(const JointLaws& laws, const Blocks& b, ContactSet& c, ContactDetector& det,
+                        std::vector<lanes::PairRest>& rest) {
+  ClipScratch s;
+  std::vector<std::uint8_t> stale;
+  for (int pass = 0; pass < 2; ++pass) {
+    rest.assign(c.pairs.size(), lanes::PairRest{});
+    stale.assign(c.pairs.size(), 0);
+    clip_pairs(b.props.local_shape, b.state, laws, c.pairs, det.margin(), c.sub, rest, stale, 0, c.pairs.size(), s);
+    std::vector<int> moved;
+    for (std::size_t q = 0; q < stale.size(); ++q)
+      if (stale[q]) moved.push_back(static_cast<int>(q));
+    if (moved.empty() || pass == 1) return;
+    det.resample(b, c, moved, laws);
+  }
+}
+
+// Evaluates the law over dt and returns every pair's wrench (`det`: the
+// detector, which "clip" re-samples with).
 inline PairWrenches pair_wrenches(JointModelKind model, const JointLaws& laws, const Blocks& b, ContactSet& c,
-                                  OverlapScratch& scratch, double dt) {
+                                  OverlapScratch& scratch, double dt, ContactDetector* det = nullptr) {
   const BlockState& st = b.state;
   PairWrenches w;
   auto v3 = [](const double(&a)[3]) { return Vec3(a[0], a[1], a[2]); };
@@ -113,10 +135,22 @@ inline PairWrenches pair_wrenches(JointModelKind model, const JointLaws& laws, c
     }
     return w;
   }
-  if (c.sub.moving.on) move_points(st, c.pairs, c.sub, 0, c.pairs.size());
+  std::vector<lanes::PairRest> rest;
+  if (model == JointModelKind::subcontacts_clip)
+    clip_joints(laws, b, c, *det, rest);
+  else if (c.sub.moving.on)
+    move_points(st, c.pairs, c.sub, 0, c.pairs.size());
   compute_pair_forces(laws, st, c.pairs, c.sub, dt, 0, c.pairs.size());
-  for (const ContactPair& p : c.pairs) {
+  for (std::size_t q = 0; q < c.pairs.size(); ++q) {
+    const ContactPair& p = c.pairs[q];
     PairWrench& x = w[{p.a, p.b}];
+    if (!rest.empty()) {  // the clip's rest: force on the incident block, moments about each centroid
+      const lanes::PairRest& r = rest[q];
+      const bool ref_is_b = p.ref_block == p.b;
+      x.force_b += ref_is_b ? Vec3(-v3(r.force)) : v3(r.force);
+      x.moment_b += ref_is_b ? v3(r.moment_ref) : v3(r.moment);
+      x.moment_a += ref_is_b ? v3(r.moment) : v3(r.moment_ref);
+    }
     for (int k = p.first; k < p.first + p.count; ++k) {
       const Vec3 f_b = c.sub.inc_block[k] == p.b ? c.sub.force[k] : Vec3(-c.sub.force[k]);
       const Vec3& at = c.sub.point[k];
@@ -163,17 +197,18 @@ inline RedetectionJump redetection_jump(JointModelKind model, Blocks& blocks, co
                                         std::uint64_t seed, double move) {
   ContactDetector det(blocks, margin);
   det.set_pair_joints(model == JointModelKind::overlap);
-  det.set_points_follow(model == JointModelKind::subcontacts_step);
+  det.set_points_follow(model == JointModelKind::subcontacts_step || model == JointModelKind::subcontacts_clip);
+  det.set_clipped(model == JointModelKind::subcontacts_clip);
   ContactSet c;
   OverlapScratch scratch;
   std::mt19937_64 rng(seed);
   det.detect(blocks, c, false, laws);
   set_velocities(blocks, rng, 1e-2);
-  pair_wrenches(model, laws, blocks, c, scratch, 1e-4);  // shear and twist stored
+  pair_wrenches(model, laws, blocks, c, scratch, 1e-4, &det);  // shear and twist stored
   perturb(blocks, rng, move * margin);
-  const PairWrenches before = pair_wrenches(model, laws, blocks, c, scratch, 0.0);
+  const PairWrenches before = pair_wrenches(model, laws, blocks, c, scratch, 0.0, &det);
   det.detect(blocks, c, false, laws);
-  const PairWrenches after = pair_wrenches(model, laws, blocks, c, scratch, 0.0);
+  const PairWrenches after = pair_wrenches(model, laws, blocks, c, scratch, 0.0, &det);
   return {worst_jump(before, after), std::max(before.size(), after.size())};
 }
 

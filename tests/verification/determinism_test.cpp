@@ -113,6 +113,16 @@ TEST(Determinism, PointsFollowingTheBlocksGiveTheSameBitsOnOneAndTwoThreads) {
   EXPECT_GT(a.energy.slip, 0.0);
 }
 
+// Joints clipped at every step (simulation.joint_sampling = "clip"), in
+// parallel over pairs, their rest gathered by pair: the same bits on 1 and
+// 2 threads.
+TEST(Determinism, ClippedJointsGiveTheSameBitsOnOneAndTwoThreads) {
+  RunReport b;
+  const RunReport a = one_and_two_threads("simulation.joint_sampling=\"clip\"", b);
+  EXPECT_EQ(a.pairs_resampled, b.pairs_resampled);
+  EXPECT_GT(a.energy.slip, 0.0);
+}
+
 // Joints re-sampled scene-wide (simulation.detection_trigger = "scene"):
 // the same bits on 1 and 2 threads.
 TEST(Determinism, TheSceneWideTriggerGivesTheSameBitsOnOneAndTwoThreads) {
