@@ -10,7 +10,9 @@
     --set simulation.end_time=0.3 --set output.snapshot_interval=0`) on 1 and
     2 threads, with each damping scheme and (--overlap) under the overlap
     joint model, (--points-follow) with the joint points following the
-    blocks (`simulation.joint_sampling = "step"`) and (--scene-trigger)
+    blocks (`simulation.joint_sampling = "step"`), (--clip) with the
+    joints clipped every step (`simulation.joint_sampling = "clip"`) and
+    (--scene-trigger)
     with the joints re-sampled scene-wide instead of pair by pair, the main
     job too: microseconds per step and subcontact updates per second.
 The cases alternate, REPEAT rounds; each figure is the median over the
@@ -43,6 +45,8 @@ def main():
     ap.add_argument("--overlap", action="store_true", help="also the earthquake deck under the overlap joint model")
     ap.add_argument("--points-follow", action="store_true",
                     help="also the earthquake deck with the joint points following the blocks")
+    ap.add_argument("--clip", action="store_true",
+                    help="also the earthquake deck with the joints clipped every step")
     ap.add_argument("--scene-trigger", action="store_true",
                     help="also the main job and the earthquake deck with the joints re-sampled scene-wide")
     args = ap.parse_args()
@@ -60,6 +64,10 @@ def main():
         for threads in (1, 2):
             cases.append((f"earthquake 0.3 s, points following the blocks, explicit, {on(threads)}",
                           EQ + ["--set", 'simulation.joint_sampling="step"'], threads))
+    if args.clip:
+        for threads in (1, 2):
+            cases.append((f"earthquake 0.3 s, joints clipped every step, explicit, {on(threads)}",
+                          EQ + ["--set", 'simulation.joint_sampling="clip"'], threads))
     if args.scene_trigger:
         scene = ["--set", 'simulation.detection_trigger="scene"']
         if not args.no_main_job:
