@@ -78,7 +78,7 @@ ClipLoad clip_normal_load(const PosedBlock& ref, int ref_face, const PosedBlock&
       const Vec3 e = s.inc_w[static_cast<std::size_t>(def.v1)] - s.inc_w[static_cast<std::size_t>(def.v0)];
       const Vec3 sn = side_normal(s.ref_w, rface, def.side, n);
       const double se = sn.dot(e);
-      if (se * se > 1e-6 * e.squaredNorm()) f = (-kn * A * u * n.dot(e) / se) * sn;
+      if (se != 0) f = (-kn * A * u * n.dot(e) / se) * sn;
     } else if (def.kind == PointKind::reference_corner) {
       // The incident face's plane moving under a fixed ray along n:
       // δu = −(m·δx)/(m·n).

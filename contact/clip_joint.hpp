@@ -39,10 +39,11 @@
 // The polygon's topology (which vertices it has) changes when a corner
 // crosses a side plane: the corner becomes two crossings a hair apart, with
 // the corner's angle, and so its area, shared between them (corner_areas),
-// so E is continuous there. A pair whose clip no longer has its subcontacts'
-// vertices is re-sampled at the next step's pair trigger (it is marked
-// `stale`); until then its points follow their definitions as under
-// "step" (contact/moving_points.hpp) with the areas they had.
+// so E is continuous there. A pair whose clip no longer has its
+// subcontacts' vertices is marked `stale`, and the step re-samples it at
+// once, at the same pose, and clips it again (Simulation::clip_all); should
+// it still be stale, its points follow their definitions for that step as
+// under "step" (contact/moving_points.hpp), with the areas they had.
 #pragma once
 
 #include "contact/contact_patch.hpp"

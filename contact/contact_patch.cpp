@@ -171,7 +171,9 @@ void clip_incident_face(const std::vector<Vec3>& ref_w, const std::vector<int>& 
         s.next.push_back(P);
         s.next_id.push_back(s.poly_id[j]);
         s.next_def.push_back(s.poly_def[j]);
-        s.next_edge.push_back(along);
+        // On the side plane with Q beyond it, the polygon goes on along
+        // the side plane.
+        s.next_edge.push_back(dp == 0 && dq > 0 ? PatchScratch::EdgeLine{-1, -1, side} : along);
       }
       if ((dp < 0 && dq > 0) || (dp > 0 && dq < 0)) {
         const double t = dp / (dp - dq);
@@ -302,7 +304,7 @@ bool find_patch(const PosedBlock& a, const PosedBlock& b, double margin, int pre
 
 bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const NarrowPhaseHit& hit,
                  int prev_ref_side, int prev_ref_face, Patch& out, PatchScratch& s, bool keep_without_points,
-                 PatchPoints points) {
+                 PatchPoints points, int prev_inc_face) {
   world_vertices(a, s.world_a);
   world_vertices(b, s.world_b);
   const double mpr_overlap = hit.overlap;  // of the real (uninflated) blocks
@@ -389,6 +391,10 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
       inc_face = static_cast<int>(f);
     }
   }
+  if (points == PatchPoints::clipped && prev_inc_face >= 0 && ref_side == prev_ref_side &&
+      ref_face == prev_ref_face && prev_inc_face < static_cast<int>(ip.faces.size()) &&
+      (inc.R * ip.normals[static_cast<std::size_t>(prev_inc_face)]).dot(n) <= most_opposed + 1e-3)
+    inc_face = prev_inc_face;
   clip_incident_face(ref_w, rp.faces[ref_face], n, inc_w, ip.faces[inc_face], s);
   if (points == PatchPoints::clipped) merge_coincident_vertices(s);
   const double face_area_min = std::min(face_area(rp, ref_face), face_area(ip, inc_face));

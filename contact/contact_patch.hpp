@@ -152,9 +152,15 @@ void clip_incident_face(const std::vector<Vec3>& ref_w, const std::vector<int>& 
 // within the margin is kept with its plane even when the incident face's
 // clip leaves no point within it (a corner of another face may be the
 // closest point: the overlap joint model integrates every face).
+// `prev_inc_face` (PatchPoints::clipped only): the previous incident face,
+// kept while the reference face is the previous one and it is within 1e-3
+// (in the cosine) of the most opposed face, so that a block edge-on or
+// corner-on, whose faces at the edge are equally opposed, is found again on
+// the face it was found on.
 bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const NarrowPhaseHit& hit,
                  int prev_ref_side, int prev_ref_face, Patch& out, PatchScratch& scratch,
-                 bool keep_without_points = false, PatchPoints points = PatchPoints::detection);
+                 bool keep_without_points = false, PatchPoints points = PatchPoints::detection,
+                 int prev_inc_face = -1);
 
 // The tributary areas of a convex polygon's vertices on the plane of unit
 // normal n: each takes half of the two fan triangles at it, the fan about

@@ -477,16 +477,18 @@ void ContactDetector::narrow_phase_and_patches(const Blocks& b, const ContactSet
     const int k = im.todo[static_cast<std::size_t>(t)];
     if (!im.found[k]) continue;
     const auto [i, j] = im.candidates[k];
-    int prev_side = -1, prev_face = -1;
+    int prev_side = -1, prev_face = -1, prev_inc = -1;
     if (const ContactPair* op = find_pair(current, i, j)) {
       prev_side = op->ref_block == i ? 0 : 1;
       prev_face = op->ref_face;
+      prev_inc = op->inc_face;
     }
     im.found[k] = build_patch(posed(b, i), posed(b, j), margin_, im.hits[k], prev_side, prev_face, im.patches[k],
                               im.scratch[omp_get_thread_num()], pair_joints_,
                               clipped_         ? PatchPoints::clipped
                               : points_follow_ ? PatchPoints::following
-                                               : PatchPoints::detection);
+                                               : PatchPoints::detection,
+                              prev_inc);
   }
   const Clock::time_point t3 = Clock::now();
   times.narrow_phase = seconds(t1, t2);

@@ -211,7 +211,19 @@ void Simulation::step() {
     patch = detect_contacts(&moved_pairs_).patch;  // pair by pair: the moved pairs alone
     detected = true;
   }
-  if (clip_ && detected) clip_all(threads);  // the pairs re-sampled (and the set's new order)
+  if (clip_ && detected) {
+    clip_all(threads);  // the pairs re-sampled (and the set's new order)
+    // Pairs still stale (a scene-wide detection takes over whole the pairs
+    // that have not moved) re-sampled now, at this pose.
+    for (int pass = 0; pass < 2; ++pass) {
+      moved_pairs_.clear();
+      for (std::size_t q = 0; q < clip_stale_.size(); ++q)
+        if (clip_stale_[q]) moved_pairs_.push_back(static_cast<int>(q));
+      if (moved_pairs_.empty()) break;
+      patch += detect_contacts(&moved_pairs_).patch;
+      clip_all(threads);
+    }
+  }
   const Clock::time_point t1 = Clock::now();
   const StepLoads loads = step_loads();  // the loads once, before the threads
   if (!loads_.loaded.empty() && !stage_.active) evaluate_point_loads(loads_, blocks_.state, clock_.time);

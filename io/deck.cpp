@@ -189,12 +189,15 @@ void refuse_total_friction_for_split(const Deck& deck, const SceneSpec& scene) {
 }
 
 // The overlap joint model's layer carries compression only
-// (contact/overlap_joint.hpp): a law with cohesion or tensile strength is
-// refused where it is given.
-void refuse_bonds_for_overlap(const Deck& deck, const SceneSpec& scene) {
+// (contact/overlap_joint.hpp), and so do the joints clipped at every step
+// (contact/clip_joint.hpp: the gradient is of the compressed springs'
+// energy): a law with cohesion or tensile strength is refused where it is
+// given.
+void refuse_bonds(const Deck& deck, const SceneSpec& scene, const std::string& setting,
+                  const std::string& instead) {
   auto bonds = [](const JointSpec& j) { return j.cohesion > 0 || j.tensile_strength > 0; };
-  const std::string why = "cohesion or tensile strength is not modelled by simulation.joint_model = \"overlap\" "
-                          "(compression and friction only); use \"subcontacts\"";
+  const std::string why =
+      "cohesion or tensile strength is not modelled by " + setting + " (compression and friction only); use " + instead;
   const toml::node* node = deck.root().get("joint");
   if (bonds(scene.joint)) deck.fail("joint", node, why);
   for (const JointPairSpec& p : scene.joint_pairs)
@@ -1010,7 +1013,10 @@ SceneSpec parse_deck(const std::string& text, const std::string& path_for_messag
   JointSection joints = read_joints(deck, generated.joint.value_or(JointDefaults{}), scene.blocks);
   scene.joint = joints.joint;
   scene.joint_pairs = std::move(joints.pairs);
-  if (scene.simulation.joint_model == JointModel::overlap) refuse_bonds_for_overlap(deck, scene);
+  if (scene.simulation.joint_model == JointModel::overlap)
+    refuse_bonds(deck, scene, "simulation.joint_model = \"overlap\"", "\"subcontacts\"");
+  if (scene.simulation.joint_sampling == JointSampling::clip)
+    refuse_bonds(deck, scene, "simulation.joint_sampling = \"clip\"", "\"detection\" or \"step\"");
   if (scene.simulation.damping_scheme == DampingScheme::split) refuse_total_friction_for_split(deck, scene);
   scene.groups = read_groups(deck, scene.blocks);
   scene.loads = read_loads(deck, scene.blocks);

@@ -152,5 +152,21 @@ TEST(ClipJoint, TheSpiresJointsDoNotJumpAtADetection) {
   }
 }
 
+// Stones colliding edge-on and corner-on (1 m cubes 2 mm into each other),
+// given velocities and a step of shear, moved by 0.02 of the 10 mm margin:
+// found again at the same pose, on the incident face they were found on
+// (the faces at the edge or corner are equally opposed to the plane), their
+// force and moment change by less than 1e-9.
+TEST(ClipJoint, StonesEdgeOnAndCornerOnDoNotJumpAtADetection) {
+  for (const bool corner : {false, true})
+    for (std::uint64_t seed : {21u, 22u, 23u}) {
+      Blocks blocks = test::cube_into_cube(corner, 0.002);
+      const JointLaws laws = uniform_joint_laws(test::round_law(0.5), 2);
+      const double worst =
+          test::redetection_jump(test::JointModelKind::subcontacts_clip, blocks, laws, 0.01, seed, 0.02).worst;
+      EXPECT_LT(worst, 1e-9) << (corner ? "corner-on" : "edge-on") << ", seed " << seed;
+    }
+}
+
 }  // namespace
 }  // namespace polydem

@@ -466,6 +466,9 @@ TEST(DeckErrors, TheOverlapModelRefusesBondsAndTheSplitScheme) {
   expect_error("[simulation]\ndetection_trigger = \"scene\"\njoint_sampling = \"clip\"\n[[block]]\n" + kBox, 3,
                "simulation.joint_sampling", "it needs detection_trigger = \"pair\"");
   EXPECT_NO_THROW(parse_deck("[simulation]\njoint_sampling = \"clip\"\n[[block]]\n" + kBox, kFile));
+  // Its gradient is the compressed springs' energy's: no bonds.
+  expect_error("[simulation]\njoint_sampling = \"clip\"\n[joint]\ncohesion = 1e5\n[[block]]\n" + kBox, 3, "joint",
+               "not modelled by simulation.joint_sampling = \"clip\"");
 }
 
 TEST(DeckErrors, BadEnumsListTheAllowedValues) {
