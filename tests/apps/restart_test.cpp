@@ -152,6 +152,9 @@ std::string summary_without_timing(const std::string& json) {
   return out;
 }
 
+// Every field of two runs equal, bit for bit (below).
+void expect_identical(const RunReport& a, const RunReport& b);
+
 class Restart : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -171,6 +174,23 @@ class Restart : public ::testing::Test {
     return run_binary(args, POLYDEM_KILLED_RUN);
   }
   std::uint64_t fingerprint() const { return deck_fingerprint(kDeck, overrides_, "", POLYDEM_VERSION); }
+  // A run with `sampling` killed half way between its first checkpoint and
+  // its end continues from the checkpoint bit for bit.
+  void expect_killed_run_continues(const std::string& sampling, const fs::path& out) {
+    overrides_.push_back("simulation.joint_sampling=\"" + sampling + "\"");
+    const SceneSpec spec = read_deck(deck_.string(), overrides_);
+    const RunReport ref = run_scene(spec);
+    ASSERT_GT(ref.detections, 2);
+    const long first_checkpoint_step = static_cast<long>(0.05 / ref.time_step) + 2;
+    const long kill_at = first_checkpoint_step + (ref.steps - first_checkpoint_step) / 2;
+    const int status = run_killed(kill_at, out);
+    ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << "status " << status;
+    const std::string state =
+        decode_checkpoint(read_text(out / kCheckpointFile), fingerprint(), (out / kCheckpointFile).string());
+    RunControl control;
+    control.restart = &state;
+    expect_identical(ref, run_scene(spec, control));
+  }
 
   // run_command in-process with stderr captured.
   int run_in_process(const RunOptions& o) {
@@ -266,39 +286,13 @@ TEST_F(Restart, KilledRunContinuesBitwiseIdentical) {
 // With the joints' points following the blocks (their definitions in the
 // checkpoint), a killed run continues bit for bit too.
 TEST_F(Restart, PointsFollowingTheBlocksContinueBitwiseIdentical) {
-  overrides_.push_back("simulation.joint_sampling=\"step\"");
-  const SceneSpec spec = read_deck(deck_.string(), overrides_);
-  const RunReport ref = run_scene(spec);
-  ASSERT_GT(ref.detections, 2);
-  const long first_checkpoint_step = static_cast<long>(0.05 / ref.time_step) + 2;
-  const long kill_at = first_checkpoint_step + (ref.steps - first_checkpoint_step) / 2;
-  const fs::path out = dir_ / "killed_step";
-  const int status = run_killed(kill_at, out);
-  ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << "status " << status;
-  const std::string state =
-      decode_checkpoint(read_text(out / kCheckpointFile), fingerprint(), (out / kCheckpointFile).string());
-  RunControl control;
-  control.restart = &state;
-  expect_identical(ref, run_scene(spec, control));
+  expect_killed_run_continues("step", dir_ / "killed_step");
 }
 
 // With the joints clipped at every step (their points and areas in the
 // checkpoint, the clip's rest made again from the pose), likewise.
 TEST_F(Restart, ClippedJointsContinueBitwiseIdentical) {
-  overrides_.push_back("simulation.joint_sampling=\"clip\"");
-  const SceneSpec spec = read_deck(deck_.string(), overrides_);
-  const RunReport ref = run_scene(spec);
-  ASSERT_GT(ref.detections, 2);
-  const long first_checkpoint_step = static_cast<long>(0.05 / ref.time_step) + 2;
-  const long kill_at = first_checkpoint_step + (ref.steps - first_checkpoint_step) / 2;
-  const fs::path out = dir_ / "killed_clip";
-  const int status = run_killed(kill_at, out);
-  ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << "status " << status;
-  const std::string state =
-      decode_checkpoint(read_text(out / kCheckpointFile), fingerprint(), (out / kCheckpointFile).string());
-  RunControl control;
-  control.restart = &state;
-  expect_identical(ref, run_scene(spec, control));
+  expect_killed_run_continues("clip", dir_ / "killed_clip");
 }
 
 TEST_F(Restart, BinaryRestartWritesTheSameResults) {
