@@ -52,29 +52,24 @@ def main():
     args = ap.parse_args()
     polydem = os.path.abspath(os.path.join(args.build, "polydem"))
     cases = [] if args.no_main_job else [("main job", ["--default"], None)]
+    def earthquake(label, overrides):
+        """The earthquake deck under `overrides`, on 1 and 2 threads."""
+        for threads in (1, 2):
+            cases.append((f"earthquake 0.3 s, {label}, {on(threads)}", EQ + overrides, threads))
+
     for scheme in ("explicit", "split"):
-        for threads in (1, 2):
-            cases.append((f"earthquake 0.3 s, {scheme}, {on(threads)}",
-                          EQ + ["--set", f'simulation.damping_scheme="{scheme}"'], threads))
+        earthquake(scheme, ["--set", f'simulation.damping_scheme="{scheme}"'])
     if args.overlap:
-        for threads in (1, 2):
-            cases.append((f"earthquake 0.3 s, overlap model, {on(threads)}",
-                          EQ + ["--set", 'simulation.joint_model="overlap"'], threads))
+        earthquake("overlap model", ["--set", 'simulation.joint_model="overlap"'])
     if args.points_follow:
-        for threads in (1, 2):
-            cases.append((f"earthquake 0.3 s, points following the blocks, explicit, {on(threads)}",
-                          EQ + ["--set", 'simulation.joint_sampling="step"'], threads))
+        earthquake("points following the blocks, explicit", ["--set", 'simulation.joint_sampling="step"'])
     if args.clip:
-        for threads in (1, 2):
-            cases.append((f"earthquake 0.3 s, joints clipped every step, explicit, {on(threads)}",
-                          EQ + ["--set", 'simulation.joint_sampling="clip"'], threads))
+        earthquake("joints clipped every step, explicit", ["--set", 'simulation.joint_sampling="clip"'])
     if args.scene_trigger:
         scene = ["--set", 'simulation.detection_trigger="scene"']
         if not args.no_main_job:
             cases.append(("main job, scene trigger", ["--default"] + scene, None))
-        for threads in (1, 2):
-            cases.append((f"earthquake 0.3 s, scene trigger, explicit, {on(threads)}",
-                          EQ + scene, threads))
+        earthquake("scene trigger, explicit", scene)
     samples = {name: [] for name, _, _ in cases}
     top_load = 0.0
     with tempfile.TemporaryDirectory() as tmp:

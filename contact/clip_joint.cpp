@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace polydem {
 
@@ -93,7 +94,7 @@ ClipLoad clip_normal_load(const PosedBlock& ref, int ref_face, const PosedBlock&
   // of angle and of u²).
   if (load.energy > 0) {
     const double C1 = load.energy / total;
-    const double C2 = 0.5 * kn * total / (2.0 * 3.14159265358979323846);
+    const double C2 = 0.5 * kn * total / (2.0 * std::numbers::pi);
     for (std::size_t j = 0; j < np; ++j) {
       const PatchScratch::EdgeLine& line = ps.poly_edge[j];
       if (line.side >= 0) continue;  // a side plane of the reference face: fixed in the reference block
@@ -122,7 +123,11 @@ ClipLoad clip_normal_load(const PosedBlock& ref, int ref_face, const PosedBlock&
 void clip_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, const JointLaws& laws,
                 const std::vector<ContactPair>& pairs, double margin, Subcontacts& sub,
                 std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale, std::size_t begin,
-                std::size_t end, ClipScratch& s) {
+                std::size_t end, ClipScratch& s, const std::vector<std::vector<double>>* face_areas) {
+  auto area_of = [&](int block, const Polyhedron& p, int face) {
+    return face_areas ? (*face_areas)[static_cast<std::size_t>(block)][static_cast<std::size_t>(face)]
+                      : face_area(p, face);
+  };
   for (std::size_t q = begin; q < end; ++q) {
     const ContactPair& cp = pairs[q];
     lanes::PairRest& w = rest[q];
@@ -139,9 +144,9 @@ void clip_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, con
     const Vec3 n = st.rotation[r] * sub.ref_normal_local[s0];
     const double c = sub.ref_offset_local[s0] + n.dot(st.position[r]);
     const double c_geometric = cp.offset_local + n.dot(st.position[r]);
-    const double face_area_min = std::min(face_area(rp, cp.ref_face), face_area(ip, cp.inc_face));
-    const ClipLoad load =
-        clip_normal_load(ref, cp.ref_face, inc, cp.inc_face, n, c, laws.between(r, i).kn, face_area_min, s);
+    const double face_area_min = std::min(area_of(r, rp, cp.ref_face), area_of(i, ip, cp.inc_face));
+    const double kn = laws.between(r, i).kn;
+    const ClipLoad load = clip_normal_load(ref, cp.ref_face, inc, cp.inc_face, n, c, kn, face_area_min, s);
     // Each subcontact takes the vertex nearest to where it was put at the
     // last step (it has moved since by a step's sliding), unambiguously:
     // nearer than a quarter of that vertex's distance to any other, and no
@@ -180,7 +185,7 @@ void clip_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, con
     }
     for (std::size_t j = 0; j < np && same; ++j)
       same = s.taken[j] || n.dot(ps.poly[j]) - c_geometric > margin ||
-             s.area[j] < kClipCornerAngle / (2.0 * 3.14159265358979323846) * load.area;
+             s.area[j] < kClipCornerAngle / (2.0 * std::numbers::pi) * load.area;
     if (!same) {
       stale[q] = 1;
       move_points(st, pairs, sub, q, q + 1);
@@ -192,7 +197,6 @@ void clip_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, con
       sub.area[s0 + t] = s.area[s.vertex_of[t]];
     }
     Vec3 force = load.rest_force, moment = load.rest_moment;
-    const double kn = laws.between(r, i).kn;
     for (std::size_t j = 0; j < np; ++j) {
       if (s.taken[j] || !(s.u[j] > 0)) continue;
       const Vec3 f = (kn * s.area[j] * s.u[j]) * n;
@@ -207,6 +211,14 @@ void clip_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, con
       w.moment_ref[d] = moment_ref[d];
     }
   }
+}
+
+std::vector<std::vector<double>> face_areas_of(const std::vector<Polyhedron>& shapes) {
+  std::vector<std::vector<double>> out(shapes.size());
+  for (std::size_t b = 0; b < shapes.size(); ++b)
+    for (std::size_t f = 0; f < shapes[b].faces.size(); ++f)
+      out[b].push_back(face_area(shapes[b], static_cast<int>(f)));
+  return out;
 }
 
 }  // namespace polydem

@@ -102,10 +102,14 @@ ClipLoad clip_normal_load(const PosedBlock& ref, int ref_face, const PosedBlock&
 // incident block, its moment, the reaction's moment about the reference
 // block's centroid). Otherwise the points are moved as under "step",
 // rest[q] is zero and stale[q] is set (the pair trigger re-samples it).
-// Edge-to-edge pairs are left alone.
+// Edge-to-edge pairs are left alone. `face_areas` (per block, per face;
+// face_areas_of) saves the step computing them again; null: computed.
 void clip_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, const JointLaws& laws,
                 const std::vector<ContactPair>& pairs, double margin, Subcontacts& sub,
                 std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale, std::size_t begin,
-                std::size_t end, ClipScratch& s);
+                std::size_t end, ClipScratch& s, const std::vector<std::vector<double>>* face_areas = nullptr);
+
+// Every face's area (face_area) of each of `shapes`, for clip_pairs.
+std::vector<std::vector<double>> face_areas_of(const std::vector<Polyhedron>& shapes);
 
 }  // namespace polydem

@@ -50,7 +50,10 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, JointLaws laws,
   detector_.set_pair_joints(overlap_joints_);
   detector_.set_pair_trigger(pair_by_pair(sim));
   clip_ = sim.joint_sampling == JointSampling::clip;
-  if (clip_) clip_scratch_.resize(static_cast<std::size_t>(std::max(1, omp_get_max_threads())));
+  if (clip_) {
+    clip_scratch_.resize(static_cast<std::size_t>(std::max(1, omp_get_max_threads())));
+    clip_face_areas_ = face_areas_of(blocks_.props.local_shape);
+  }
   detector_.set_points_follow(sim.joint_sampling == JointSampling::step || clip_);
   detector_.set_clipped(clip_);
   ledger_.start(blocks_.state);
@@ -110,9 +113,9 @@ void Simulation::joint_forces(double dt, std::size_t begin, std::size_t end, Cod
                          contacts_.joints, dt, begin, end, overlap_scratch_[static_cast<std::size_t>(thread)]);
     return;
   }
-  if (clip_) {
-    // The joints were clipped at this pose before the detection (clip_all).
-  } else if (contacts_.sub.moving.on)
+  // Under "clip" the joints were clipped at this pose before the detection
+  // (clip_all).
+  if (contacts_.sub.moving.on && !clip_)
     move_points(blocks_.state, contacts_.pairs, contacts_.sub, begin, end);
   compute_pair_forces(laws_, blocks_.state, contacts_.pairs, contacts_.sub, dt, begin, end, path, part);
 }
@@ -185,7 +188,7 @@ void Simulation::clip_all(int threads) {
     const int nt = omp_get_num_threads(), t = omp_get_thread_num();
     const auto [pb, pe] = thread_range(np, static_cast<std::size_t>(nt), static_cast<std::size_t>(t));
     clip_pairs(blocks_.props.local_shape, blocks_.state, laws_, contacts_.pairs, detector_.margin(), contacts_.sub,
-               clip_rest_, clip_stale_, pb, pe, clip_scratch_[static_cast<std::size_t>(t)]);
+               clip_rest_, clip_stale_, pb, pe, clip_scratch_[static_cast<std::size_t>(t)], &clip_face_areas_);
   }
 }
 

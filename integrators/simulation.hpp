@@ -167,6 +167,7 @@ class Simulation {
   // polygon's vertices have changed (re-sampled before the law).
   bool clip_ = false;
   std::vector<ClipScratch> clip_scratch_;
+  std::vector<std::vector<double>> clip_face_areas_;  // per block, per face
   std::vector<lanes::PairRest> clip_rest_;
   std::vector<std::uint8_t> clip_stale_;
   PairGather clip_gather_;

@@ -152,17 +152,9 @@ TEST(MovingPoints, ACornerSlidPastItsSupportsEdgeIsHeldOnIt) {
 // fixed in the incident block (7.6e-4 and 8.9e-4 for these seeds).
 TEST(MovingPoints, TheSpiresJointsHardlyJumpAtADetection) {
   for (std::uint64_t seed : {11u, 12u}) {
-    double worst[2] = {0, 0};
-    int m = 0;
-    for (const auto model : {test::JointModelKind::subcontacts_step, test::JointModelKind::subcontacts}) {
-      Blocks blocks = test::default_spire_blocks();
-      const JointLaws laws = uniform_joint_laws(test::round_law(0.5), blocks.count);
-      std::mt19937_64 rng(seed);
-      test::perturb(blocks, rng, 2e-4);
-      worst[m++] = test::redetection_jump(model, blocks, laws, 0.003, seed + 100, 0.002).worst;
-    }
-    EXPECT_LT(worst[0], 1e-4) << "seed " << seed;
-    EXPECT_GT(worst[1], 5e-4) << "seed " << seed;
+    EXPECT_LT(test::spire_redetection_jump(test::JointModelKind::subcontacts_step, seed, 0.002), 1e-4)
+        << "seed " << seed;
+    EXPECT_GT(test::spire_redetection_jump(test::JointModelKind::subcontacts, seed, 0.002), 5e-4) << "seed " << seed;
   }
 }
 

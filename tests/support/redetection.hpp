@@ -212,4 +212,15 @@ inline RedetectionJump redetection_jump(JointModelKind model, Blocks& blocks, co
   return {worst_jump(before, after), std::max(before.size(), after.size())};
 }
 
+// The default spire pressed (its free blocks moved by up to 0.2 mm from
+// `seed`), under one law, its jump at a re-detection after its blocks moved
+// by `move` of the 3 mm margin (the continuity tests' scene).
+inline double spire_redetection_jump(JointModelKind model, std::uint64_t seed, double move) {
+  Blocks blocks = default_spire_blocks();
+  const JointLaws laws = uniform_joint_laws(round_law(0.5), blocks.count);
+  std::mt19937_64 rng(seed);
+  perturb(blocks, rng, 2e-4);
+  return redetection_jump(model, blocks, laws, 0.003, seed + 100, move).worst;
+}
+
 }  // namespace polydem::test
