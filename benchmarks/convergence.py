@@ -28,9 +28,14 @@ travel, the joints re-sampled pair by pair, explicit damping):
             margin x1, x0.5 and x2; the joints' points following the blocks
             (`simulation.joint_sampling = "step"`, "points following the
             blocks") at the default settings, safety factor 0.4, margin x0.5
-            and x2, and travel x4 and x16; the joints clipped again at every
-            step (`simulation.joint_sampling = "clip"`, "joints clipped every
-            step") at the same settings; and, a geometry rather than a numerical
+            and x2, and travel x4 and x16; the joints clipped again
+            (`simulation.joint_sampling = "clip"`) when a pair has moved by
+            the detection travel ("joints clipped at the travel") at the
+            default settings, safety factor 0.4 and 0.2, margin x0.5 and x2,
+            split damping and travel x0.25, x4 and x16, and at every step
+            (the travel 1e-12 m, "joints clipped every step") at the default
+            settings, safety factor 0.4 and margin x0.5 and x2; and, a
+            geometry rather than a numerical
             setting, the spire's corner halves merged (`spire.corner_stones =
             "merged"`, issue 31's stagger artefacts), at its own automatic
             margin and at the halves' (3.05 mm)
@@ -83,8 +88,11 @@ HALF = ["simulation.detection_travel=1"]
 SCENE = ['simulation.detection_trigger="scene"']
 # the joints' points following the blocks between detections (simulation.joint_sampling)
 STEP = ['simulation.joint_sampling="step"']
-# the joints clipped again at every step (simulation.joint_sampling = "clip")
+# the joints clipped again when a pair has moved by the detection travel
+# (simulation.joint_sampling = "clip"); with a travel of 1e-12 m, every pair
+# at every step
 CLIP = ['simulation.joint_sampling="clip"']
+EVERY = CLIP + ["simulation.detection_travel=1e-12"]
 SETTINGS = {
     "default": ([], None),
     "safety factor 0.4": (["simulation.safety_factor=0.4"], None),
@@ -123,12 +131,19 @@ SETTINGS = {
     "points following the blocks, margin x2": (STEP, ("margin", 2.0)),
     "points following the blocks, travel x4": (STEP, ("travel", 4.0)),
     "points following the blocks, travel x16": (STEP, ("travel", 16.0)),
-    "joints clipped every step": (CLIP, None),
-    "joints clipped every step, safety factor 0.4": (CLIP + ["simulation.safety_factor=0.4"], None),
-    "joints clipped every step, margin x0.5": (CLIP, ("margin", 0.5)),
-    "joints clipped every step, margin x2": (CLIP, ("margin", 2.0)),
-    "joints clipped every step, travel x4": (CLIP, ("travel", 4.0)),
-    "joints clipped every step, travel x16": (CLIP, ("travel", 16.0)),
+    "joints clipped every step": (EVERY, None),
+    "joints clipped every step, safety factor 0.4": (EVERY + ["simulation.safety_factor=0.4"], None),
+    "joints clipped every step, margin x0.5": (EVERY, ("margin", 0.5)),
+    "joints clipped every step, margin x2": (EVERY, ("margin", 2.0)),
+    "joints clipped at the travel": (CLIP, None),
+    "joints clipped at the travel, safety factor 0.4": (CLIP + ["simulation.safety_factor=0.4"], None),
+    "joints clipped at the travel, safety factor 0.2": (CLIP + ["simulation.safety_factor=0.2"], None),
+    "joints clipped at the travel, margin x0.5": (CLIP, ("margin", 0.5)),
+    "joints clipped at the travel, margin x2": (CLIP, ("margin", 2.0)),
+    "joints clipped at the travel, split damping": (CLIP + ['simulation.damping_scheme="split"'], None),
+    "joints clipped at the travel, travel x0.25": (CLIP, ("travel", 0.25)),
+    "joints clipped at the travel, travel x4": (CLIP, ("travel", 4.0)),
+    "joints clipped at the travel, travel x16": (CLIP, ("travel", 16.0)),
     "overlap model": (['simulation.joint_model="overlap"'], None),
     "overlap model, margin x0.5": (['simulation.joint_model="overlap"'], ("margin", 0.5)),
     "overlap model, margin x2": (['simulation.joint_model="overlap"'], ("margin", 2.0)),

@@ -120,97 +120,116 @@ ClipLoad clip_normal_load(const PosedBlock& ref, int ref_face, const PosedBlock&
   return load;
 }
 
-void clip_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, const JointLaws& laws,
-                const std::vector<ContactPair>& pairs, double margin, Subcontacts& sub,
-                std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale, std::size_t begin,
-                std::size_t end, ClipScratch& s, const std::vector<std::vector<double>>* face_areas) {
+namespace {
+
+// clip_pairs' work for pair q.
+void clip_pair(const std::vector<Polyhedron>& shapes, const BlockState& st, const JointLaws& laws,
+               const std::vector<ContactPair>& pairs, double margin, Subcontacts& sub,
+               std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale, std::size_t q, ClipScratch& s,
+               const std::vector<std::vector<double>>* face_areas) {
   auto area_of = [&](int block, const Polyhedron& p, int face) {
     return face_areas ? (*face_areas)[static_cast<std::size_t>(block)][static_cast<std::size_t>(face)]
                       : face_area(p, face);
   };
-  for (std::size_t q = begin; q < end; ++q) {
-    const ContactPair& cp = pairs[q];
-    lanes::PairRest& w = rest[q];
-    w = lanes::PairRest{};
-    stale[q] = 0;
-    if (cp.count == 0 || cp.ref_face < 0) continue;
-    const int r = cp.ref_block;
-    const int i = cp.ref_block == cp.a ? cp.b : cp.a;
-    const auto s0 = static_cast<std::size_t>(cp.first);
-    const Polyhedron& rp = shapes[static_cast<std::size_t>(r)];
-    const Polyhedron& ip = shapes[static_cast<std::size_t>(i)];
-    const PosedBlock ref{&rp, st.rotation[r], st.position[r]};
-    const PosedBlock inc{&ip, st.rotation[i], st.position[i]};
-    const Vec3 n = st.rotation[r] * sub.ref_normal_local[s0];
-    const double c = sub.ref_offset_local[s0] + n.dot(st.position[r]);
-    const double c_geometric = cp.offset_local + n.dot(st.position[r]);
-    const double face_area_min = std::min(area_of(r, rp, cp.ref_face), area_of(i, ip, cp.inc_face));
-    const double kn = laws.between(r, i).kn;
-    const ClipLoad load = clip_normal_load(ref, cp.ref_face, inc, cp.inc_face, n, c, kn, face_area_min, s);
-    // Each subcontact takes the vertex nearest to where it was put at the
-    // last step (it has moved since by a step's sliding), unambiguously:
-    // nearer than a quarter of that vertex's distance to any other, and no
-    // vertex taken twice. Every vertex that turns the boundary by more than
-    // kClipCornerAngle must be taken; one turning less (a corner of two
-    // nearly aligned faces, whose vertices come and go as the stones
-    // vibrate) may be left without a subcontact, its spring's load then in
-    // the pair's wrench (no shear spring, no dashpot: it has at most
-    // kClipCornerAngle/2π of the area). Otherwise the pair is re-sampled.
-    const PatchScratch& ps = s.patch;
-    const std::size_t np = ps.poly.size();
-    const auto count = static_cast<std::size_t>(cp.count);
-    if (s.taken.size() < np) s.taken.resize(np);
-    if (s.vertex_of.size() < count) s.vertex_of.resize(count);
-    // A pair without area carries nothing (no springs to match) until it
-    // has some.
-    bool none = load.area == 0;
-    for (std::size_t t = 0; t < count && none; ++t) none = sub.area[s0 + t] == 0;
-    if (none) continue;
-    bool same = load.area > 0;
-    std::fill(s.taken.begin(), s.taken.begin() + static_cast<std::ptrdiff_t>(np), 0);
-    for (std::size_t t = 0; t < count && same; ++t) {
-      const Vec3 last = st.rotation[i] * sub.inc_point_local[s0 + t] + st.position[i];
-      std::size_t nearest = np;
-      double d2 = std::numeric_limits<double>::infinity();
-      for (std::size_t j = 0; j < np; ++j) {
-        const double e2 = (ps.poly[j] - last).squaredNorm();
-        if (e2 < d2) d2 = e2, nearest = j;
-      }
-      double apart2 = std::numeric_limits<double>::infinity();
-      for (std::size_t j = 0; j < np; ++j)
-        if (j != nearest) apart2 = std::min(apart2, (ps.poly[j] - ps.poly[nearest]).squaredNorm());
-      same = nearest < np && !s.taken[nearest] && d2 <= 0.0625 * apart2 &&
-             n.dot(ps.poly[nearest]) - c_geometric <= margin;
-      if (same) s.taken[nearest] = 1, s.vertex_of[t] = nearest;
-    }
-    for (std::size_t j = 0; j < np && same; ++j)
-      same = s.taken[j] || n.dot(ps.poly[j]) - c_geometric > margin ||
-             s.area[j] < kClipCornerAngle / (2.0 * std::numbers::pi) * load.area;
-    if (!same) {
-      stale[q] = 1;
-      move_points(st, pairs, sub, q, q + 1);
-      continue;
-    }
-    const Mat3 RiT = st.rotation[i].transpose();
-    for (std::size_t t = 0; t < count; ++t) {
-      sub.inc_point_local.set(s0 + t, RiT * (ps.poly[s.vertex_of[t]] - st.position[i]));
-      sub.area[s0 + t] = s.area[s.vertex_of[t]];
-    }
-    Vec3 force = load.rest_force, moment = load.rest_moment;
+  const ContactPair& cp = pairs[q];
+  lanes::PairRest& w = rest[q];
+  w = lanes::PairRest{};
+  stale[q] = 0;
+  if (cp.count == 0 || cp.ref_face < 0) return;
+  const int r = cp.ref_block;
+  const int i = cp.ref_block == cp.a ? cp.b : cp.a;
+  const auto s0 = static_cast<std::size_t>(cp.first);
+  const Polyhedron& rp = shapes[static_cast<std::size_t>(r)];
+  const Polyhedron& ip = shapes[static_cast<std::size_t>(i)];
+  const PosedBlock ref{&rp, st.rotation[r], st.position[r]};
+  const PosedBlock inc{&ip, st.rotation[i], st.position[i]};
+  const Vec3 n = st.rotation[r] * sub.ref_normal_local[s0];
+  const double c = sub.ref_offset_local[s0] + n.dot(st.position[r]);
+  const double c_geometric = cp.offset_local + n.dot(st.position[r]);
+  const double face_area_min = std::min(area_of(r, rp, cp.ref_face), area_of(i, ip, cp.inc_face));
+  const double kn = laws.between(r, i).kn;
+  const ClipLoad load = clip_normal_load(ref, cp.ref_face, inc, cp.inc_face, n, c, kn, face_area_min, s);
+  // Each subcontact takes the vertex nearest to where it was put at the
+  // last step (it has moved since by a step's sliding), unambiguously:
+  // nearer than a quarter of that vertex's distance to any other, and no
+  // vertex taken twice. Every vertex that turns the boundary by more than
+  // kClipCornerAngle must be taken; one turning less (a corner of two
+  // nearly aligned faces, whose vertices come and go as the stones
+  // vibrate) may be left without a subcontact, its spring's load then in
+  // the pair's wrench (no shear spring, no dashpot: it has at most
+  // kClipCornerAngle/2π of the area). Otherwise the pair is re-sampled.
+  const PatchScratch& ps = s.patch;
+  const std::size_t np = ps.poly.size();
+  const auto count = static_cast<std::size_t>(cp.count);
+  if (s.taken.size() < np) s.taken.resize(np);
+  if (s.vertex_of.size() < count) s.vertex_of.resize(count);
+  // A pair without area carries nothing (no springs to match) until it
+  // has some.
+  bool none = load.area == 0;
+  for (std::size_t t = 0; t < count && none; ++t) none = sub.area[s0 + t] == 0;
+  if (none) return;
+  bool same = load.area > 0;
+  std::fill(s.taken.begin(), s.taken.begin() + static_cast<std::ptrdiff_t>(np), 0);
+  for (std::size_t t = 0; t < count && same; ++t) {
+    const Vec3 last = st.rotation[i] * sub.inc_point_local[s0 + t] + st.position[i];
+    std::size_t nearest = np;
+    double d2 = std::numeric_limits<double>::infinity();
     for (std::size_t j = 0; j < np; ++j) {
-      if (s.taken[j] || !(s.u[j] > 0)) continue;
-      const Vec3 f = (kn * s.area[j] * s.u[j]) * n;
-      force += f;
-      moment += (ps.poly[j] - st.position[i]).cross(f);
+      const double e2 = (ps.poly[j] - last).squaredNorm();
+      if (e2 < d2) d2 = e2, nearest = j;
     }
-    const Vec3 xcr = st.position[i] - st.position[r];
-    const Vec3 moment_ref = -(moment + xcr.cross(force));
-    for (int d = 0; d < 3; ++d) {
-      w.force[d] = force[d];
-      w.moment[d] = moment[d];
-      w.moment_ref[d] = moment_ref[d];
-    }
+    double apart2 = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < np; ++j)
+      if (j != nearest) apart2 = std::min(apart2, (ps.poly[j] - ps.poly[nearest]).squaredNorm());
+    same = nearest < np && !s.taken[nearest] && d2 <= 0.0625 * apart2 &&
+           n.dot(ps.poly[nearest]) - c_geometric <= margin;
+    if (same) s.taken[nearest] = 1, s.vertex_of[t] = nearest;
   }
+  for (std::size_t j = 0; j < np && same; ++j)
+    same = s.taken[j] || n.dot(ps.poly[j]) - c_geometric > margin ||
+           s.area[j] < kClipCornerAngle / (2.0 * std::numbers::pi) * load.area;
+  if (!same) {
+    stale[q] = 1;
+    move_points(st, pairs, sub, q, q + 1);
+    return;
+  }
+  const Mat3 RiT = st.rotation[i].transpose();
+  for (std::size_t t = 0; t < count; ++t) {
+    sub.inc_point_local.set(s0 + t, RiT * (ps.poly[s.vertex_of[t]] - st.position[i]));
+    sub.area[s0 + t] = s.area[s.vertex_of[t]];
+  }
+  Vec3 force = load.rest_force, moment = load.rest_moment;
+  for (std::size_t j = 0; j < np; ++j) {
+    if (s.taken[j] || !(s.u[j] > 0)) continue;
+    const Vec3 f = (kn * s.area[j] * s.u[j]) * n;
+    force += f;
+    moment += (ps.poly[j] - st.position[i]).cross(f);
+  }
+  const Vec3 xcr = st.position[i] - st.position[r];
+  const Vec3 moment_ref = -(moment + xcr.cross(force));
+  for (int d = 0; d < 3; ++d) {
+    w.force[d] = force[d];
+    w.moment[d] = moment[d];
+    w.moment_ref[d] = moment_ref[d];
+  }
+}
+
+}  // namespace
+
+void clip_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, const JointLaws& laws,
+                const std::vector<ContactPair>& pairs, double margin, Subcontacts& sub,
+                std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale, std::size_t begin,
+                std::size_t end, ClipScratch& s, const std::vector<std::vector<double>>* face_areas) {
+  for (std::size_t q = begin; q < end; ++q)
+    clip_pair(shapes, st, laws, pairs, margin, sub, rest, stale, q, s, face_areas);
+}
+
+void clip_listed_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, const JointLaws& laws,
+                       const std::vector<ContactPair>& pairs, double margin, Subcontacts& sub,
+                       std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale, const int* list,
+                       std::size_t count, ClipScratch& s, const std::vector<std::vector<double>>* face_areas) {
+  for (std::size_t k = 0; k < count; ++k)
+    clip_pair(shapes, st, laws, pairs, margin, sub, rest, stale, static_cast<std::size_t>(list[k]), s, face_areas);
 }
 
 std::vector<std::vector<double>> face_areas_of(const std::vector<Polyhedron>& shapes) {

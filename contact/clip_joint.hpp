@@ -109,6 +109,12 @@ void clip_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, con
                 std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale, std::size_t begin,
                 std::size_t end, ClipScratch& s, const std::vector<std::vector<double>>* face_areas = nullptr);
 
+// The same for the pairs `list[0 .. count)` alone.
+void clip_listed_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, const JointLaws& laws,
+                       const std::vector<ContactPair>& pairs, double margin, Subcontacts& sub,
+                       std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale, const int* list,
+                       std::size_t count, ClipScratch& s, const std::vector<std::vector<double>>* face_areas = nullptr);
+
 // Every face's area (face_area) of each of `shapes`, for clip_pairs.
 std::vector<std::vector<double>> face_areas_of(const std::vector<Polyhedron>& shapes);
 

@@ -44,6 +44,9 @@ struct ContactDetector::Impl {
   // Per pair of the current set: its blocks' poses when it was sampled,
   // and the same being built for the next set.
   std::vector<PairPose> pose, next_pose;
+  // Per pair of the current set: the previous set's pair it was taken over
+  // whole from, or -1 (pair_origin()).
+  std::vector<int> origin;
   // moved_pairs() on several threads: each thread's moved pairs.
   std::vector<std::vector<int>> moved_parts;
 };
@@ -443,6 +446,9 @@ void ContactDetector::resample_in_place(const Blocks& b, ContactSet& contacts, c
     im.pose[q] = {st.position[a], st.position[c], st.orientation[a], st.orientation[c]};
   }
   pairs_resampled_ += static_cast<long long>(moved.size());
+  im.origin.resize(contacts.pairs.size());
+  for (std::size_t q = 0; q < im.origin.size(); ++q) im.origin[q] = static_cast<int>(q);
+  for (int q : moved) im.origin[static_cast<std::size_t>(q)] = -1;
   const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
   carry_and_hold(b, old, contacts, laws, threads);
   times.subcontacts = seconds(t3, Clock::now());
@@ -536,6 +542,7 @@ void ContactDetector::sample(const Blocks& b, ContactSet& contacts, bool bond_ne
     }
     carry_and_hold(b, old, contacts, laws, threads);
   }
+  if (!pair_trigger_ || pair_joints_) im.origin.assign(contacts.pairs.size(), -1);
   contacts.detections = old.detections + (scene ? 1 : 0);
   const Clock::time_point t4 = Clock::now();
 
@@ -594,10 +601,12 @@ void ContactDetector::take_pair_poses(const Blocks& b, const ContactSet& old) {
   im.carry.reach.clear();
   im.carry.old_kept.assign(old.pairs.size(), 0);
   im.next_pose.clear();
+  im.origin.clear();
   for (std::size_t k = 0; k < nc; ++k) {
     const int o = im.kept[k];
     if (o < 0 && !im.found[k]) continue;
     const auto [i, j] = im.candidates[k];
+    im.origin.push_back(o);
     if (o >= 0) {
       const auto u = static_cast<std::size_t>(o);
       im.carry.old_kept[u] = 1;
@@ -616,6 +625,20 @@ void ContactDetector::take_pair_poses(const Blocks& b, const ContactSet& old) {
     ++pairs_resampled_;
   }
   std::swap(im.pose, im.next_pose);
+}
+
+const std::vector<int>& ContactDetector::pair_origin() const { return impl_->origin; }
+
+void ContactDetector::restart_pair_travel(const Blocks& b, const ContactSet& contacts,
+                                          const std::vector<int>& pairs) {
+  auto& im = *impl_;
+  if (im.pose.size() != contacts.pairs.size()) return;  // not pair by pair
+  const auto& st = b.state;
+  for (int q : pairs) {
+    const ContactPair& p = contacts.pairs[static_cast<std::size_t>(q)];
+    im.pose[static_cast<std::size_t>(q)] = {st.position[p.a], st.position[p.b], st.orientation[p.a],
+                                            st.orientation[p.b]};
+  }
 }
 
 void ContactDetector::save(ByteWriter& w) const {

@@ -179,6 +179,14 @@ class ContactDetector {
   // Pair re-samplings so far (resample()'s pairs, and detect()'s pairs that
   // were not taken over whole).
   long long pairs_resampled() const { return pairs_resampled_; }
+  // Pair by pair, after a detect() or resample(): per pair of the set, the
+  // pair of the set before it was taken over whole from, or -1 for a pair
+  // sampled (or new). Without the pair trigger every pair is sampled.
+  const std::vector<int>& pair_origin() const;
+  // Pair by pair: the pairs `pairs` of `contacts` count as sampled at the
+  // blocks' poses now (their travel starts afresh): joint_sampling = "clip"
+  // has clipped them again at this pose.
+  void restart_pair_travel(const Blocks& blocks, const ContactSet& contacts, const std::vector<int>& pairs);
 
   // Checkpoints: the poses at the last detection (they decide when the next
   // one runs). Nothing else carries over: the contacts of the detection

@@ -65,7 +65,10 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, JointLaws laws,
   // The first detection samples the joints; it re-samples nothing (its
   // counters would hold the strain of blocks built overlapping).
   contacts_.dropped_shear_energy = contacts_.resampled_normal_energy = 0;
-  if (clip_) clip_all(threads_.governor.now);
+  if (clip_) {
+    double patch = 0;
+    clip_after_detection(threads_.governor.now, patch);
+  }
   clock_.dt_prev = clock_.dt;
   if (sim_.damping_scheme == DampingScheme::split)
     rest_.set_step(clock_.dt, step_law_.beta, sim_.safety_factor, blocks_.count);
@@ -113,8 +116,7 @@ void Simulation::joint_forces(double dt, std::size_t begin, std::size_t end, Cod
                          contacts_.joints, dt, begin, end, overlap_scratch_[static_cast<std::size_t>(thread)]);
     return;
   }
-  // Under "clip" the joints were clipped at this pose before the detection
-  // (clip_all).
+  // Under "clip" the joints were clipped before the detection (clip_due).
   if (contacts_.sub.moving.on && !clip_)
     move_points(blocks_.state, contacts_.pairs, contacts_.sub, begin, end);
   compute_pair_forces(laws_, blocks_.state, contacts_.pairs, contacts_.sub, dt, begin, end, path, part);
@@ -151,7 +153,7 @@ DetectionTimes Simulation::detect_contacts(const std::vector<int>* moved) {
   // alone (unless it became a scene-wide detection).
   const std::vector<int>* only = moved && contacts_.detections == detections ? &moved_blocks_ : nullptr;
   if (overlap_joints_) pair_gather_.build(contacts_.pairs, blocks_.count, &contacts_.joints.ref_block);
-  if (clip_) size_clip_lists();
+  if (clip_) carry_clip_rest();
   if (sim_.damping_scheme == DampingScheme::split) rest_.size_for(contacts_, blocks_.count);
   if (!control_.adaptive) return times;
   const CriticalStep c =
@@ -167,29 +169,86 @@ DetectionTimes Simulation::detect_contacts(const std::vector<int>* moved) {
   return times;
 }
 
-// The clip's per-pair lists for the pairs now (their contents are
-// clip_all's to write).
-void Simulation::size_clip_lists() {
+// Under "clip", after a detection: each pair taken over whole keeps the
+// rest of its last clip (in the set's new order), the pairs sampled are
+// listed in clip_fresh_ for clipping at this pose.
+void Simulation::carry_clip_rest() {
+  const std::size_t np = contacts_.pairs.size();
+  const std::vector<int>& origin = detector_.pair_origin();
+  const bool known = origin.size() == np;
+  clip_rest_next_.assign(np, lanes::PairRest{});
+  clip_fresh_.clear();
+  for (std::size_t q = 0; q < np; ++q) {
+    const int o = known ? origin[q] : -1;
+    const auto u = static_cast<std::size_t>(o);
+    if (o >= 0 && u < clip_rest_.size()) clip_rest_next_[q] = clip_rest_[u];
+    // Sampled, or taken over whole while stale: clipped at this pose.
+    if (o < 0 || u >= clip_rest_.size() || (u < clip_stale_.size() && clip_stale_[u]))
+      clip_fresh_.push_back(static_cast<int>(q));
+  }
+  std::swap(clip_rest_, clip_rest_next_);
+  clip_stale_.assign(np, 0);
   clip_gather_.build(contacts_.pairs, blocks_.count);
-  clip_rest_.assign(contacts_.pairs.size(), lanes::PairRest{});
-  clip_stale_.assign(contacts_.pairs.size(), 0);
 }
 
-// Under joint_sampling = "clip", every pair's face polygon clipped at the
-// blocks' poses now (contact/clip_joint.hpp), in parallel over pairs (each
-// writes its own), on `threads` threads.
-void Simulation::clip_all(int threads) {
-  const std::size_t np = contacts_.pairs.size();
+// The pairs `pairs` (ascending) clipped at the blocks' poses now
+// (contact/clip_joint.hpp), in parallel over them (each writes its own), on
+// `threads` threads. Those whose clip keeps their vertices count as sampled
+// now (their travel starts afresh); the others go to clip_stale_list_.
+void Simulation::clip_listed(const std::vector<int>& pairs, int threads) {
+  clip_stale_list_.clear();
+  if (pairs.empty()) return;
   if (clip_scratch_.size() < static_cast<std::size_t>(threads))
     clip_scratch_.resize(static_cast<std::size_t>(threads));
-  const bool parallel = threads > 1 && large_enough_for_threads();
+  const std::size_t n = pairs.size();
+  const bool parallel = threads > 1 && n >= 64 && large_enough_for_threads();
 #pragma omp parallel if (parallel) num_threads(threads)
   {
     const int nt = omp_get_num_threads(), t = omp_get_thread_num();
-    const auto [pb, pe] = thread_range(np, static_cast<std::size_t>(nt), static_cast<std::size_t>(t));
-    clip_pairs(blocks_.props.local_shape, blocks_.state, laws_, contacts_.pairs, detector_.margin(), contacts_.sub,
-               clip_rest_, clip_stale_, pb, pe, clip_scratch_[static_cast<std::size_t>(t)], &clip_face_areas_);
+    const auto [kb, ke] = thread_range(n, static_cast<std::size_t>(nt), static_cast<std::size_t>(t));
+    clip_listed_pairs(blocks_.props.local_shape, blocks_.state, laws_, contacts_.pairs, detector_.margin(),
+                      contacts_.sub, clip_rest_, clip_stale_, pairs.data() + kb, ke - kb,
+                      clip_scratch_[static_cast<std::size_t>(t)], &clip_face_areas_);
   }
+  moved_pairs_.clear();  // here: the pairs clipped with their vertices kept
+  for (int q : pairs) (clip_stale_[static_cast<std::size_t>(q)] ? clip_stale_list_ : moved_pairs_).push_back(q);
+  detector_.restart_pair_travel(blocks_, contacts_, moved_pairs_);
+}
+
+// Under "clip", before the detection: the pairs whose blocks may have moved
+// relative to each other by the detection travel since they were last
+// clipped (counting the coming step), and those left stale at the last
+// step, clipped again at this pose.
+void Simulation::clip_due(int threads) {
+  detector_.moved_pairs(blocks_, contacts_, clock_.dt, clip_list_, true);
+  if (!clip_retry_.empty()) {
+    clip_list_.insert(clip_list_.end(), clip_retry_.begin(), clip_retry_.end());
+    std::sort(clip_list_.begin(), clip_list_.end());
+    clip_list_.erase(std::unique(clip_list_.begin(), clip_list_.end()), clip_list_.end());
+    clip_retry_.clear();
+  }
+  clip_listed(clip_list_, threads);
+}
+
+// Under "clip", after a detection: the pairs it sampled clipped at this
+// pose, and those whose clip finds their vertices changed (a pair sampled
+// on a polygon round-off decides) re-sampled and clipped again, twice at
+// most; any still stale follow their points' definitions for this step
+// (clip_pair) and are clipped again at the next. `patch` adds the
+// re-samplings' patch time. Returns whether it re-sampled.
+bool Simulation::clip_after_detection(int threads, double& patch) {
+  bool resampled = false;
+  for (int pass = 0;; ++pass) {
+    clip_list_ = clip_fresh_;
+    clip_listed(clip_list_, threads);
+    if (clip_stale_list_.empty()) return resampled;
+    if (pass == 2) break;
+    moved_pairs_ = clip_stale_list_;
+    patch += detect_contacts(&moved_pairs_).patch;  // carry_clip_rest lists the pairs sampled
+    resampled = true;
+  }
+  clip_retry_ = clip_stale_list_;
+  return resampled;
 }
 
 bool Simulation::large_enough_for_threads() const {
@@ -202,31 +261,25 @@ void Simulation::step() {
   const int threads = threads_for_this_step(threads_, big);
   detector_.set_threads(threads);
   double patch = 0;  // 1. detection, where the half-margin test asks for it
-  // Under "clip" the joints clipped at this pose first: a pair whose
-  // polygon's vertices have changed is re-sampled now, at the same pose.
-  if (clip_) clip_all(threads);
+  // Under "clip" the pairs that have moved by the travel are clipped again
+  // first; a pair whose polygon's vertices have changed is re-sampled now,
+  // at the same pose.
+  if (clip_) clip_due(threads);
   bool detected = false;
   if (!detection_known_unneeded(threads_, clock_.dt) && detector_.needs_detection(blocks_, clock_.dt)) {
     patch = detect_contacts().patch;
     detected = true;
-  } else if (detector_.pair_trigger() && detector_.moved_pairs(blocks_, contacts_, clock_.dt, moved_pairs_, true,
-                                                                 clip_ ? &clip_stale_ : nullptr)) {
+  } else if (clip_) {
+    if (!clip_stale_list_.empty()) {
+      moved_pairs_ = clip_stale_list_;
+      patch = detect_contacts(&moved_pairs_).patch;
+      detected = true;
+    }
+  } else if (detector_.pair_trigger() && detector_.moved_pairs(blocks_, contacts_, clock_.dt, moved_pairs_, true)) {
     patch = detect_contacts(&moved_pairs_).patch;  // pair by pair: the moved pairs alone
     detected = true;
   }
-  if (clip_ && detected) {
-    clip_all(threads);  // the pairs re-sampled (and the set's new order)
-    // Pairs still stale (a scene-wide detection takes over whole the pairs
-    // that have not moved) re-sampled now, at this pose.
-    for (int pass = 0; pass < 2; ++pass) {
-      moved_pairs_.clear();
-      for (std::size_t q = 0; q < clip_stale_.size(); ++q)
-        if (clip_stale_[q]) moved_pairs_.push_back(static_cast<int>(q));
-      if (moved_pairs_.empty()) break;
-      patch += detect_contacts(&moved_pairs_).patch;
-      clip_all(threads);
-    }
-  }
+  if (clip_ && detected) clip_after_detection(threads, patch);
   const Clock::time_point t1 = Clock::now();
   const StepLoads loads = step_loads();  // the loads once, before the threads
   if (!loads_.loaded.empty() && !stage_.active) evaluate_point_loads(loads_, blocks_.state, clock_.time);
@@ -408,6 +461,18 @@ void Simulation::save_state(ByteWriter& w) const {
     w.put(rest_.work);
     w.put(rest_.pending);
   }
+  if (clip_) {  // each pair's rest from its last clip, and the pairs to clip again
+    std::vector<double> rest;
+    rest.reserve(9 * clip_rest_.size());
+    for (const lanes::PairRest& r : clip_rest_) {
+      rest.insert(rest.end(), r.force, r.force + 3);
+      rest.insert(rest.end(), r.moment, r.moment + 3);
+      rest.insert(rest.end(), r.moment_ref, r.moment_ref + 3);
+    }
+    w.put(rest);
+    w.put(static_cast<std::uint64_t>(clip_retry_.size()));
+    for (int q : clip_retry_) w.put(static_cast<std::int32_t>(q));
+  }
 }
 
 void Simulation::load_state(ByteReader& r) {
@@ -442,7 +507,29 @@ void Simulation::load_state(ByteReader& r) {
     r.get_sized(rest_.work, n, "rest_work");
     r.get_sized(rest_.pending, n, "rest_pending");
   }
-  if (clip_) size_clip_lists();  // clip_all fills them at the next step
+  if (clip_) {
+    const std::size_t np = contacts_.pairs.size();
+    std::vector<double> rest;
+    r.get_sized(rest, 9 * np, "clip_rest");
+    clip_rest_.assign(np, lanes::PairRest{});
+    for (std::size_t q = 0; q < np; ++q) {
+      std::copy_n(rest.data() + 9 * q, 3, clip_rest_[q].force);
+      std::copy_n(rest.data() + 9 * q + 3, 3, clip_rest_[q].moment);
+      std::copy_n(rest.data() + 9 * q + 6, 3, clip_rest_[q].moment_ref);
+    }
+    std::uint64_t retry = 0;
+    r.get(retry);
+    if (retry > np) throw StateFormatError("the checkpoint's clip_retry lists more pairs than it has");
+    clip_retry_.assign(static_cast<std::size_t>(retry), 0);
+    for (int& q : clip_retry_) {
+      std::int32_t v = 0;
+      r.get(v);
+      if (v < 0 || static_cast<std::size_t>(v) >= np) throw StateFormatError("clip_retry: a pair out of range");
+      q = v;
+    }
+    clip_stale_.assign(np, 0);
+    clip_gather_.build(contacts_.pairs, blocks_.count);
+  }
 }
 
 double Simulation::largest_opening(int i) const {

@@ -5,7 +5,10 @@
 //      (contact/detection.hpp; settled at the last step's end where the
 //      threads' bound is clear, step_threads.hpp); pair by pair (the
 //      default) the scene only at half the margin, and between, the pairs
-//      whose own blocks moved by the travel re-sampled alone
+//      whose own blocks moved by the travel re-sampled alone; under
+//      joint_sampling = "clip" those pairs clipped again instead
+//      (clip_joint.hpp), and re-sampled only where the clip finds their
+//      polygon's vertices changed
 //   2. joint law: one force slot per subcontact       (contact/joint_law.hpp)
 //      or, under the overlap model, one wrench per pair (overlap_joint.hpp)
 //   3. gather and central-difference update            (block_update.hpp)
@@ -119,8 +122,6 @@ class Simulation {
   void set_code_path(CodePath path) { code_path_ = path; }
   void set_thread_governor(ThreadGovernor settings);
   const ThreadGovernor& thread_governor() const { return threads_.governor; }
-  void size_clip_lists();
-  void clip_all(int threads);
   bool large_enough_for_threads() const;
 
  private:
@@ -133,6 +134,11 @@ class Simulation {
   int integrate(int threads, const StepLoads& loads, double& law_seconds);
   void finish_step();
   void record_profile(double detection, double patch, double law, double rest, bool big);
+  // joint_sampling = "clip" (contact/clip_joint.hpp).
+  void clip_listed(const std::vector<int>& pairs, int threads);
+  void clip_due(int threads);
+  bool clip_after_detection(int threads, double& patch);
+  void carry_clip_rest();
 
   struct StepControl {
     bool adaptive = true;
@@ -163,13 +169,17 @@ class Simulation {
   std::vector<OverlapScratch> overlap_scratch_;
   PairGather pair_gather_;
   // joint_sampling = "clip" (contact/clip_joint.hpp): per-thread scratch,
-  // each pair's gradient rest and each block's pairs, and the pairs whose
-  // polygon's vertices have changed (re-sampled before the law).
+  // each pair's gradient rest (from its last clip) and each block's pairs;
+  // per pair, whether its last clip found its polygon's vertices changed;
+  // the pairs to clip at this step, and those to re-sample now; the pairs
+  // still stale after the step's re-samplings (clipped again at the next
+  // step whatever their travel).
   bool clip_ = false;
   std::vector<ClipScratch> clip_scratch_;
   std::vector<std::vector<double>> clip_face_areas_;  // per block, per face
-  std::vector<lanes::PairRest> clip_rest_;
+  std::vector<lanes::PairRest> clip_rest_, clip_rest_next_;
   std::vector<std::uint8_t> clip_stale_;
+  std::vector<int> clip_list_, clip_stale_list_, clip_fresh_, clip_retry_;
   PairGather clip_gather_;
   std::vector<int> moved_pairs_;   // pair by pair: the pairs to re-sample (scratch)
   std::vector<int> moved_blocks_;  // and their blocks
