@@ -11,7 +11,9 @@
     2 threads, with each damping scheme and (--overlap) under the overlap
     joint model, (--points-follow) with the joint points following the
     blocks (`simulation.joint_sampling = "step"`), (--clip) with the
-    joints clipped every step (`simulation.joint_sampling = "clip"`) and
+    joints clipped again as their pairs move (`simulation.joint_sampling =
+    "clip"`, at the automatic travel, and at every step: the travel
+    1e-12 m) and
     (--scene-trigger)
     with the joints re-sampled scene-wide instead of pair by pair, the main
     job too: microseconds per step and subcontact updates per second.
@@ -46,7 +48,7 @@ def main():
     ap.add_argument("--points-follow", action="store_true",
                     help="also the earthquake deck with the joint points following the blocks")
     ap.add_argument("--clip", action="store_true",
-                    help="also the earthquake deck with the joints clipped every step")
+                    help="also the earthquake deck with the joints clipped as they move, and every step")
     ap.add_argument("--scene-trigger", action="store_true",
                     help="also the main job and the earthquake deck with the joints re-sampled scene-wide")
     args = ap.parse_args()
@@ -64,7 +66,9 @@ def main():
     if args.points_follow:
         earthquake("points following the blocks, explicit", ["--set", 'simulation.joint_sampling="step"'])
     if args.clip:
-        earthquake("joints clipped every step, explicit", ["--set", 'simulation.joint_sampling="clip"'])
+        clip = ["--set", 'simulation.joint_sampling="clip"']
+        earthquake("joints clipped at the travel, explicit", clip)
+        earthquake("joints clipped every step, explicit", clip + ["--set", "simulation.detection_travel=1e-12"])
     if args.scene_trigger:
         scene = ["--set", 'simulation.detection_trigger="scene"']
         if not args.no_main_job:

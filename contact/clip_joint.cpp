@@ -122,6 +122,23 @@ ClipLoad clip_normal_load(const PosedBlock& ref, int ref_face, const PosedBlock&
 
 namespace {
 
+// Whether a detection at the blocks' poses now would keep the pair's
+// common plane (ref_face of ref) and incident face (inc_face of inc):
+// build_patch's choices with the pair's as the previous ones.
+bool faces_still_chosen(const PosedBlock& ref, const PosedBlock& inc, bool ref_is_a, int ref_face, int inc_face,
+                        double margin, PatchScratch& s) {
+  const PosedBlock& a = ref_is_a ? ref : inc;
+  const PosedBlock& b = ref_is_a ? inc : ref;
+  world_vertices(a, s.world_a);
+  world_vertices(b, s.world_b);
+  double sep_a = 0, sep_b = 0;
+  const int side = ref_is_a ? 0 : 1;
+  const CommonPlane plane = choose_common_plane(a, b, s.world_a, s.world_b, margin, side, ref_face, sep_a, sep_b);
+  if (plane.ref_side != side || plane.ref_face != ref_face) return false;
+  const Vec3 n = ref.R * ref.shape->normals[static_cast<std::size_t>(ref_face)];
+  return choose_incident_face(inc, n, inc_face) == inc_face;
+}
+
 // clip_pairs' work for pair q.
 void clip_pair(const std::vector<Polyhedron>& shapes, const BlockState& st, const JointLaws& laws,
                const std::vector<ContactPair>& pairs, double margin, Subcontacts& sub,
@@ -148,6 +165,14 @@ void clip_pair(const std::vector<Polyhedron>& shapes, const BlockState& st, cons
   const double c_geometric = cp.offset_local + n.dot(st.position[r]);
   const double face_area_min = std::min(area_of(r, rp, cp.ref_face), area_of(i, ip, cp.inc_face));
   const double kn = laws.between(r, i).kn;
+  // The faces a detection would choose at this pose (the common plane, the
+  // incident face, each kept within its tolerance): another choice, and
+  // the pair is re-sampled.
+  if (!faces_still_chosen(ref, inc, r == cp.a, cp.ref_face, cp.inc_face, margin, s.patch)) {
+    stale[q] = 1;
+    move_points(st, pairs, sub, q, q + 1);
+    return;
+  }
   const ClipLoad load = clip_normal_load(ref, cp.ref_face, inc, cp.inc_face, n, c, kn, face_area_min, s);
   // Each subcontact takes the vertex nearest to where it was put at the
   // last step (it has moved since by a step's sliding), unambiguously:

@@ -292,6 +292,44 @@ void world_vertices(const PosedBlock& blk, std::vector<Vec3>& w) {
   for (std::size_t k = 0; k < v.size(); ++k) w[k] = blk.R * v[k] + blk.x;
 }
 
+CommonPlane choose_common_plane(const PosedBlock& a, const PosedBlock& b, const std::vector<Vec3>& world_a,
+                                const std::vector<Vec3>& world_b, double margin, int prev_ref_side,
+                                int prev_ref_face, double& sep_a, double& sep_b) {
+  const int face_a = best_face(a, world_b, sep_a);
+  const int face_b = best_face(b, world_a, sep_b);
+  CommonPlane out;
+  out.ref_side = sep_a >= sep_b ? 0 : 1;
+  out.ref_face = out.ref_side == 0 ? face_a : face_b;
+  out.separation = std::max(sep_a, sep_b);
+  if (prev_ref_face >= 0) {
+    const PosedBlock& pr = prev_ref_side == 0 ? a : b;
+    const double sp = face_separation(pr, prev_ref_face, prev_ref_side == 0 ? world_b : world_a);
+    if (sp >= out.separation - 0.05 * margin) {
+      out.ref_side = prev_ref_side;
+      out.ref_face = prev_ref_face;
+      out.separation = sp;
+    }
+  }
+  return out;
+}
+
+int choose_incident_face(const PosedBlock& inc, const Vec3& n, int prev_inc_face) {
+  const Polyhedron& ip = *inc.shape;
+  int inc_face = 0;
+  double most_opposed = std::numeric_limits<double>::infinity();
+  for (std::size_t f = 0; f < ip.faces.size(); ++f) {
+    const double c = (inc.R * ip.normals[f]).dot(n);
+    if (c < most_opposed - 1e-12) {
+      most_opposed = c;
+      inc_face = static_cast<int>(f);
+    }
+  }
+  if (prev_inc_face >= 0 && prev_inc_face < static_cast<int>(ip.faces.size()) &&
+      (inc.R * ip.normals[static_cast<std::size_t>(prev_inc_face)]).dot(n) <= most_opposed + 1e-3)
+    inc_face = prev_inc_face;
+  return inc_face;
+}
+
 bool find_patch(const PosedBlock& a, const PosedBlock& b, double margin, int prev_ref_side, int prev_ref_face,
                 Patch& out, PatchScratch& s) {
   // 1. Narrow phase: are the blocks within the margin of each other?
@@ -314,20 +352,10 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
   // 2. Common plane: best face of either block, keeping the previous choice
   // while it is within a small tolerance of the best.
   double sep_a = 0, sep_b = 0;
-  const int face_a = best_face(a, s.world_b, sep_a);
-  const int face_b = best_face(b, s.world_a, sep_b);
-  int ref_side = sep_a >= sep_b ? 0 : 1;
-  int ref_face = ref_side == 0 ? face_a : face_b;
-  double best = std::max(sep_a, sep_b);
-  if (prev_ref_face >= 0) {
-    const PosedBlock& pr = prev_ref_side == 0 ? a : b;
-    const double sp = face_separation(pr, prev_ref_face, prev_ref_side == 0 ? s.world_b : s.world_a);
-    if (sp >= best - 0.05 * margin) {
-      ref_side = prev_ref_side;
-      ref_face = prev_ref_face;
-      best = sp;
-    }
-  }
+  const CommonPlane plane = choose_common_plane(a, b, s.world_a, s.world_b, margin, prev_ref_side, prev_ref_face,
+                                                sep_a, sep_b);
+  const int ref_side = plane.ref_side, ref_face = plane.ref_face;
+  const double best = plane.separation;
   if (best > margin) return false;
 
   const PosedBlock& ref = ref_side == 0 ? a : b;
@@ -382,19 +410,9 @@ bool build_patch(const PosedBlock& a, const PosedBlock& b, double margin, const 
   const Polyhedron& ip = *inc.shape;
   const Vec3 n = ref.R * rp.normals[ref_face];
   const double offset = rp.offsets[ref_face] + n.dot(ref.x);
-  int inc_face = 0;
-  double most_opposed = std::numeric_limits<double>::infinity();
-  for (std::size_t f = 0; f < ip.faces.size(); ++f) {
-    const double c = (inc.R * ip.normals[f]).dot(n);
-    if (c < most_opposed - 1e-12) {
-      most_opposed = c;
-      inc_face = static_cast<int>(f);
-    }
-  }
-  if (points == PatchPoints::clipped && prev_inc_face >= 0 && ref_side == prev_ref_side &&
-      ref_face == prev_ref_face && prev_inc_face < static_cast<int>(ip.faces.size()) &&
-      (inc.R * ip.normals[static_cast<std::size_t>(prev_inc_face)]).dot(n) <= most_opposed + 1e-3)
-    inc_face = prev_inc_face;
+  const int inc_face = choose_incident_face(
+      inc, n, points == PatchPoints::clipped && ref_side == prev_ref_side && ref_face == prev_ref_face ? prev_inc_face
+                                                                                                     : -1);
   clip_incident_face(ref_w, rp.faces[ref_face], n, inc_w, ip.faces[inc_face], s);
   if (points == PatchPoints::clipped) merge_coincident_vertices(s);
   const double face_area_min = std::min(face_area(rp, ref_face), face_area(ip, inc_face));

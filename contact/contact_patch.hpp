@@ -183,6 +183,24 @@ double fan_areas(const Vec3* on_plane, std::size_t count, const Vec3& n, double 
 // area, and the areas written are zero.
 double corner_areas(const Vec3* on_plane, std::size_t count, const Vec3& n, double floor, double* area);
 
+// Step 2's choice of the common plane for blocks a and b (world vertices
+// world_a, world_b): the face, of either block, with the largest
+// separation of the other's vertices along its own normal (sep_a, sep_b:
+// each block's best), the previous choice (prev_ref_side, prev_ref_face;
+// -1: none) kept while it is within 0.05 x margin of the best.
+struct CommonPlane {
+  int ref_side = 0;  // 0: a face of a, 1: of b
+  int ref_face = -1;
+  double separation = 0;  // its separation (> 0 apart), m
+};
+CommonPlane choose_common_plane(const PosedBlock& a, const PosedBlock& b, const std::vector<Vec3>& world_a,
+                                const std::vector<Vec3>& world_b, double margin, int prev_ref_side,
+                                int prev_ref_face, double& sep_a, double& sep_b);
+// Step 3's incident face: the face of `inc` most opposed to the world
+// normal n, or `prev_inc_face` (-1: none) while it is within 1e-3 (in the
+// cosine) of the most opposed.
+int choose_incident_face(const PosedBlock& inc, const Vec3& n, int prev_inc_face);
+
 // Narrow phase and patch in one call (steps 1-4).
 bool find_patch(const PosedBlock& a, const PosedBlock& b, double margin, int prev_ref_side, int prev_ref_face,
                 Patch& out, PatchScratch& scratch);

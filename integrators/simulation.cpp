@@ -198,6 +198,7 @@ void Simulation::carry_clip_rest() {
 void Simulation::clip_listed(const std::vector<int>& pairs, int threads) {
   clip_stale_list_.clear();
   if (pairs.empty()) return;
+  clip_count_ += static_cast<long long>(pairs.size());
   if (clip_scratch_.size() < static_cast<std::size_t>(threads))
     clip_scratch_.resize(static_cast<std::size_t>(threads));
   const std::size_t n = pairs.size();
@@ -470,6 +471,7 @@ void Simulation::save_state(ByteWriter& w) const {
       rest.insert(rest.end(), r.moment_ref, r.moment_ref + 3);
     }
     w.put(rest);
+    w.put(static_cast<std::int64_t>(clip_count_));
     w.put(static_cast<std::uint64_t>(clip_retry_.size()));
     for (int q : clip_retry_) w.put(static_cast<std::int32_t>(q));
   }
@@ -517,6 +519,9 @@ void Simulation::load_state(ByteReader& r) {
       std::copy_n(rest.data() + 9 * q + 3, 3, clip_rest_[q].moment);
       std::copy_n(rest.data() + 9 * q + 6, 3, clip_rest_[q].moment_ref);
     }
+    std::int64_t clipped = 0;
+    r.get(clipped);
+    clip_count_ = clipped;
     std::uint64_t retry = 0;
     r.get(retry);
     if (retry > np) throw StateFormatError("the checkpoint's clip_retry lists more pairs than it has");

@@ -80,6 +80,8 @@ class Simulation {
   const ContactSet& contacts() const { return contacts_; }
   double detection_travel() const { return detector_.travel(); }
   long long pairs_resampled() const { return detector_.pairs_resampled(); }
+  // joint_sampling = "clip": the pair clips so far (contact/clip_joint.hpp).
+  long long pairs_clipped() const { return clip_count_; }
   const GroundMotion& ground_motion() const { return motion_; }
   const JointLaws& joint_laws() const { return laws_; }
   // The stiffest law that can act: its β sets the time step's damping.
@@ -181,6 +183,7 @@ class Simulation {
   std::vector<std::uint8_t> clip_stale_;
   std::vector<int> clip_list_, clip_stale_list_, clip_fresh_, clip_retry_;
   PairGather clip_gather_;
+  long long clip_count_ = 0;
   std::vector<int> moved_pairs_;   // pair by pair: the pairs to re-sample (scratch)
   std::vector<int> moved_blocks_;  // and their blocks
   StepProfile profile_;

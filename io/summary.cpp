@@ -239,6 +239,7 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   }
   s.set("contact_detections", r.detections);
   if (pair_by_pair(spec.simulation)) s.set("pairs_resampled", r.pairs_resampled);
+  if (spec.simulation.joint_sampling == JointSampling::clip) s.set("pairs_clipped", r.pairs_clipped);
   s.set("subcontact_updates", r.subcontact_updates);
   if (r.checkpoints > 0) {
     Json c = Json::object();

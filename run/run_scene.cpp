@@ -189,6 +189,7 @@ void finish_report(RunReport& rep, const Simulation& sim, Recorder& recorder, As
   rep.end_time = sim.time();
   rep.detections = sim.contacts().detections;
   rep.pairs_resampled = sim.pairs_resampled();
+  rep.pairs_clipped = sim.pairs_clipped();
   rep.energy = sim.energies();
   rep.energy_start = recorder.first_energy ? rep.energy : recorder.start;
   rep.energy_reference = recorder.reference;

@@ -86,6 +86,7 @@ struct RunReport {
   double margin = 0;
   double detection_travel = 0;  // m, the contacts' re-sampling travel (contact/detection.hpp)
   long long pairs_resampled = 0;  // pair by pair: the pairs re-sampled (scene-wide detections' too)
+  long long pairs_clipped = 0;    // joint_sampling = "clip": the pair clips
   double wall_seconds = 0;
   long subcontact_updates = 0;  // Σ over steps of the number of subcontacts
   // Checkpoints written (output.checkpoint_interval), over the whole run
