@@ -51,6 +51,8 @@ def main():
                     help="also the earthquake deck with the joints clipped as they move, and every step")
     ap.add_argument("--scene-trigger", action="store_true",
                     help="also the main job and the earthquake deck with the joints re-sampled scene-wide")
+    ap.add_argument("--only", action="append", default=[],
+                    help="only the cases whose name contains this (repeatable)")
     args = ap.parse_args()
     polydem = os.path.abspath(os.path.join(args.build, "polydem"))
     cases = [] if args.no_main_job else [("main job", ["--default"], None)]
@@ -74,6 +76,8 @@ def main():
         if not args.no_main_job:
             cases.append(("main job, scene trigger", ["--default"] + scene, None))
         earthquake("scene trigger, explicit", scene)
+    if args.only:
+        cases = [c for c in cases if any(o in c[0] for o in args.only)]
     samples = {name: [] for name, _, _ in cases}
     top_load = 0.0
     with tempfile.TemporaryDirectory() as tmp:

@@ -1,15 +1,16 @@
-// The joint clipped again at every step (`simulation.joint_sampling = "clip"`).
+// The joint clipped again as it moves (`simulation.joint_sampling = "clip"`).
 //
 // A detection samples a joint: it clips the incident face by the reference
 // face's side planes and puts a normal spring kn·A_i at each vertex of the
 // polygon P it finds, with A_i the vertex's share of P by its corner's
 // angle (corner_areas: A_i = |P|·θ_i/2π). Between samplings the polygon
 // changes shape as the blocks slide and turn (a joint that shrinks as a
-// stone slides off its bed), and springs sampled once lag it: how long they
-// lag is the detection travel's choice, not the structure's.
+// stone slides off its bed), and the springs lag it until the next.
 //
-// Here the pair's face polygon is clipped again at every step, at the
-// blocks' current poses, and its springs are the polygon's vertices now:
+// Here the pair's face polygon is clipped again whenever its two blocks
+// have moved relative to each other by the detection travel since its last
+// clip (Simulation::clip_due; with a travel of 1e-12 m, at every step), at
+// the blocks' current poses, and its springs are the polygon's vertices:
 // each subcontact's point is its vertex (a corner of the incident face, the
 // crossing of an incident edge with a side plane of the reference face, or
 // a reference corner seen on the incident face) and its area the vertex's
@@ -17,8 +18,8 @@
 //
 //     E(q) = Σ_i ½·kn·A_i(q)·⟨u_i(q)⟩₊²,    u_i the overlap at vertex i,
 //
-// is then a function of the blocks' poses q alone. The load that keeps the
-// joint conservative is its exact gradient, −∂E/∂q, which is more than the
+// is then a function of the blocks' poses q alone, and the load a clip
+// gives is its exact gradient there, −∂E/∂q, which is more than the
 // springs' kn·A_i·u_i along the plane's normal at each vertex:
 //   - a crossing slides along its incident edge e as the side plane s cuts
 //     it elsewhere, so its overlap changes along the slide: the spring
@@ -32,18 +33,20 @@
 //     angle, times |P|/2π).
 // The springs' part goes through the joint law with the subcontacts (so
 // friction's cap and the dashpots see each vertex's normal force); the rest
-// is one wrench per pair (`clip_pairs`), gathered by pair. The reference
-// block takes the reaction: the energy depends on the two blocks' relative
-// pose only.
+// is one wrench per pair (`clip_pairs`), gathered by pair and held with
+// the springs until the pair's next clip. The reference block takes the
+// reaction: the energy depends on the two blocks' relative pose only.
 //
 // The polygon's topology (which vertices it has) changes when a corner
 // crosses a side plane: the corner becomes two crossings a hair apart, with
 // the corner's angle, and so its area, shared between them (corner_areas),
 // so E is continuous there. A pair whose clip no longer has its
-// subcontacts' vertices is marked `stale`, and the step re-samples it at
-// once, at the same pose, and clips it again (Simulation::clip_all); should
+// subcontacts' vertices, or whose faces a detection would now choose
+// otherwise, is marked `stale`, and the step re-samples it at once, at the
+// same pose, and clips it again (Simulation::clip_after_detection); should
 // it still be stale, its points follow their definitions for that step as
-// under "step" (contact/moving_points.hpp), with the areas they had.
+// under "step" (contact/moving_points.hpp), with the areas they had, and it
+// is clipped again at the next step.
 #pragma once
 
 #include "contact/contact_patch.hpp"

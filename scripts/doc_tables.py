@@ -249,9 +249,8 @@ def table_convergence():
         main = got.get(("main", s), {})
         margin, travel = main.get("contact margin"), main.get("detection travel")
         if margin and "margin x" in s:
-            name = name.replace(", travel", f" ({1000 * float(margin):.2f} mm), travel")
-            if "travel" not in name:
-                name = f"{name} ({1000 * float(margin):.2f} mm)"
+            with_margin = name.replace(", travel", f" ({1000 * float(margin):.2f} mm), travel")
+            name = with_margin if with_margin != name else f"{name} ({1000 * float(margin):.2f} mm)"
         elif margin and "margin" not in s.replace("half the margin", "") and "corner" in s:
             # a geometry with its own automatic margin
             name = name.replace("merged corner stones", f"merged corner stones, margin {1000 * float(margin):.2f} mm")
