@@ -124,9 +124,10 @@ namespace {
 
 // Whether a detection at the blocks' poses now would keep the pair's
 // common plane (ref_face of ref) and incident face (inc_face of inc):
-// build_patch's choices with the pair's as the previous ones.
+// build_patch's choices with the pair's as the previous ones. `depth`
+// gets the face test's overlap along the plane (minus its separation).
 bool faces_still_chosen(const PosedBlock& ref, const PosedBlock& inc, bool ref_is_a, int ref_face, int inc_face,
-                        double margin, PatchScratch& s) {
+                        double margin, PatchScratch& s, double& depth) {
   const PosedBlock& a = ref_is_a ? ref : inc;
   const PosedBlock& b = ref_is_a ? inc : ref;
   world_vertices(a, s.world_a);
@@ -134,7 +135,8 @@ bool faces_still_chosen(const PosedBlock& ref, const PosedBlock& inc, bool ref_i
   double sep_a = 0, sep_b = 0;
   const int side = ref_is_a ? 0 : 1;
   const CommonPlane plane = choose_common_plane(a, b, s.world_a, s.world_b, margin, side, ref_face, sep_a, sep_b);
-  if (plane.ref_side != side || plane.ref_face != ref_face) return false;
+  depth = -plane.separation;
+  if (plane.ref_side != side || plane.ref_face != ref_face || plane.separation > margin) return false;
   const Vec3 n = ref.R * ref.shape->normals[static_cast<std::size_t>(ref_face)];
   return choose_incident_face(inc, n, inc_face) == inc_face;
 }
@@ -143,7 +145,7 @@ bool faces_still_chosen(const PosedBlock& ref, const PosedBlock& inc, bool ref_i
 void clip_pair(const std::vector<Polyhedron>& shapes, const BlockState& st, const JointLaws& laws,
                const std::vector<ContactPair>& pairs, double margin, Subcontacts& sub,
                std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale, std::size_t q, ClipScratch& s,
-               const std::vector<std::vector<double>>* face_areas) {
+               const std::vector<std::vector<double>>* face_areas, bool check_faces) {
   auto area_of = [&](int block, const Polyhedron& p, int face) {
     return face_areas ? (*face_areas)[static_cast<std::size_t>(block)][static_cast<std::size_t>(face)]
                       : face_area(p, face);
@@ -166,14 +168,28 @@ void clip_pair(const std::vector<Polyhedron>& shapes, const BlockState& st, cons
   const double face_area_min = std::min(area_of(r, rp, cp.ref_face), area_of(i, ip, cp.inc_face));
   const double kn = laws.between(r, i).kn;
   // The faces a detection would choose at this pose (the common plane, the
-  // incident face, each kept within its tolerance): another choice, and
-  // the pair is re-sampled.
-  if (!faces_still_chosen(ref, inc, r == cp.a, cp.ref_face, cp.inc_face, margin, s.patch)) {
+  // incident face, each kept within its tolerance, and the pair within the
+  // margin): another choice, and the pair is re-sampled.
+  double depth = 0;
+  if (check_faces && !faces_still_chosen(ref, inc, r == cp.a, cp.ref_face, cp.inc_face, margin, s.patch, depth)) {
     stale[q] = 1;
     move_points(st, pairs, sub, q, q + 1);
     return;
   }
   const ClipLoad load = clip_normal_load(ref, cp.ref_face, inc, cp.inc_face, n, c, kn, face_area_min, s);
+  // A face test that finds the blocks overlapping by more than the
+  // polygon's deepest vertex, by a quarter of the margin, is how a
+  // detection tells an edge-to-edge contact (build_patch, with MPR's depth
+  // for the polygon's): the pair is re-sampled for the detection to judge.
+  if (check_faces) {
+    double deepest = -std::numeric_limits<double>::infinity();
+    for (const Vec3& x : s.patch.poly) deepest = std::max(deepest, c_geometric - n.dot(x));
+    if (depth > deepest + 0.25 * margin + 1e-12) {
+      stale[q] = 1;
+      move_points(st, pairs, sub, q, q + 1);
+      return;
+    }
+  }
   // Each subcontact takes the vertex nearest to where it was put at the
   // last step (it has moved since by a step's sliding), unambiguously:
   // nearer than a quarter of that vertex's distance to any other, and no
@@ -246,15 +262,17 @@ void clip_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, con
                 std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale, std::size_t begin,
                 std::size_t end, ClipScratch& s, const std::vector<std::vector<double>>* face_areas) {
   for (std::size_t q = begin; q < end; ++q)
-    clip_pair(shapes, st, laws, pairs, margin, sub, rest, stale, q, s, face_areas);
+    clip_pair(shapes, st, laws, pairs, margin, sub, rest, stale, q, s, face_areas, true);
 }
 
 void clip_listed_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, const JointLaws& laws,
                        const std::vector<ContactPair>& pairs, double margin, Subcontacts& sub,
                        std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale, const int* list,
-                       std::size_t count, ClipScratch& s, const std::vector<std::vector<double>>* face_areas) {
+                       std::size_t count, ClipScratch& s, const std::vector<std::vector<double>>* face_areas,
+                       bool check_faces) {
   for (std::size_t k = 0; k < count; ++k)
-    clip_pair(shapes, st, laws, pairs, margin, sub, rest, stale, static_cast<std::size_t>(list[k]), s, face_areas);
+    clip_pair(shapes, st, laws, pairs, margin, sub, rest, stale, static_cast<std::size_t>(list[k]), s, face_areas,
+              check_faces);
 }
 
 std::vector<std::vector<double>> face_areas_of(const std::vector<Polyhedron>& shapes) {

@@ -104,19 +104,25 @@ ClipLoad clip_normal_load(const PosedBlock& ref, int ref_face, const PosedBlock&
 // its vertex's and `rest[q]` gets the gradient's rest (force on the
 // incident block, its moment, the reaction's moment about the reference
 // block's centroid). Otherwise the points are moved as under "step",
-// rest[q] is zero and stale[q] is set (the pair trigger re-samples it).
-// Edge-to-edge pairs are left alone. `face_areas` (per block, per face;
+// rest[q] is zero and stale[q] is set (the pair trigger re-samples it);
+// likewise where a detection at this pose would choose other faces for
+// the pair, find it beyond the margin, or judge it edge to edge (the face
+// test deeper than the polygon's deepest vertex by a quarter of the
+// margin). Edge-to-edge pairs are left alone. `face_areas` (per block, per face;
 // face_areas_of) saves the step computing them again; null: computed.
 void clip_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, const JointLaws& laws,
                 const std::vector<ContactPair>& pairs, double margin, Subcontacts& sub,
                 std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale, std::size_t begin,
                 std::size_t end, ClipScratch& s, const std::vector<std::vector<double>>* face_areas = nullptr);
 
-// The same for the pairs `list[0 .. count)` alone.
+// The same for the pairs `list[0 .. count)` alone; `check_faces` false
+// leaves out the faces' questions (pairs a detection has just sampled at
+// this pose).
 void clip_listed_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, const JointLaws& laws,
                        const std::vector<ContactPair>& pairs, double margin, Subcontacts& sub,
                        std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale, const int* list,
-                       std::size_t count, ClipScratch& s, const std::vector<std::vector<double>>* face_areas = nullptr);
+                       std::size_t count, ClipScratch& s, const std::vector<std::vector<double>>* face_areas,
+                       bool check_faces);
 
 // Every face's area (face_area) of each of `shapes`, for clip_pairs.
 std::vector<std::vector<double>> face_areas_of(const std::vector<Polyhedron>& shapes);

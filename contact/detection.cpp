@@ -49,6 +49,10 @@ struct ContactDetector::Impl {
   std::vector<int> origin;
   // moved_pairs() on several threads: each thread's moved pairs.
   std::vector<std::vector<int>> moved_parts;
+  // Per pair of the current set, under "clip": a pair resample() was asked
+  // to sample (its clip found it stale), which a scene-wide detect()
+  // standing in for it must not take over whole (empty: none).
+  std::vector<char> must_sample;
 };
 
 namespace {
@@ -306,7 +310,8 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
       const auto [i, j] = im.candidates[k];
       if (const ContactPair* op = find_pair(contacts, i, j)) {
         const std::size_t o = static_cast<std::size_t>(op - contacts.pairs.data());
-        if (pair_travel(b, i, j, im.pose[o], 0.0) <= travel_) {
+        if (pair_travel(b, i, j, im.pose[o], 0.0) <= travel_ &&
+            !(static_cast<std::size_t>(o) < im.must_sample.size() && im.must_sample[static_cast<std::size_t>(o)])) {
           im.kept[static_cast<std::size_t>(k)] = static_cast<int>(o);
           continue;
         }
@@ -329,7 +334,7 @@ DetectionTimes ContactDetector::detect(const Blocks& b, ContactSet& contacts, bo
 }
 
 bool ContactDetector::moved_pairs(const Blocks& b, const ContactSet& contacts, double dt, std::vector<int>& moved,
-                                  bool bound_first, const std::vector<std::uint8_t>* stale) const {
+                                  bool bound_first) const {
   auto& im = *impl_;
   moved.clear();
   const std::size_t np = contacts.pairs.size();
@@ -344,10 +349,6 @@ bool ContactDetector::moved_pairs(const Blocks& b, const ContactSet& contacts, d
   auto test = [&](std::size_t begin, std::size_t end, std::vector<int>& out) {
     for (std::size_t q = begin; q < end; ++q) {
       const ContactPair& p = contacts.pairs[q];
-      if (stale && q < stale->size() && (*stale)[q]) {
-        out.push_back(static_cast<int>(q));
-        continue;
-      }
       if (bound_first && pair_travel_bound(b, p.a, p.b, im.pose[q], dt) < clear) continue;
       if (!(pair_travel(b, p.a, p.b, im.pose[q], dt) <= travel_))
         out.push_back(static_cast<int>(q));  // NaN too: sampled again, the guard judges the state
@@ -397,7 +398,14 @@ DetectionTimes ContactDetector::resample(const Blocks& b, ContactSet& contacts, 
   bool in_place = true;
   for (int k : im.todo) {
     const auto q = static_cast<std::size_t>(k);
-    if (!im.found[q]) return detect(b, contacts, false, laws);  // a pair has left
+    if (!im.found[q]) {  // a pair has left: the scene searched (under "clip", the pairs asked for sampled)
+      im.must_sample.assign(clipped_ ? np : 0, 0);
+      if (clipped_)
+        for (int m : moved) im.must_sample[static_cast<std::size_t>(m)] = 1;
+      const DetectionTimes t = detect(b, contacts, false, laws);
+      im.must_sample.clear();
+      return t;
+    }
     const ContactPair& cp = contacts.pairs[q];
     const Patch& patch = im.patches[q];
     in_place = in_place && static_cast<int>(patch.points.size()) == cp.count &&

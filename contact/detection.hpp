@@ -165,10 +165,8 @@ class ContactDetector {
   // `moved` (ascending). Returns whether there are any. `bound_first`: a
   // cheap bound settles the clear cases (the same answer; false only for
   // tests comparing the two).
-  // `stale` (per pair, or null): pairs to re-sample whatever their motion
-  // (joint_sampling = "clip": their polygon's vertices have changed).
   bool moved_pairs(const Blocks& blocks, const ContactSet& contacts, double dt, std::vector<int>& moved,
-                   bool bound_first = true, const std::vector<std::uint8_t>* stale = nullptr) const;
+                   bool bound_first = true) const;
   // Re-samples the pairs `moved` of `contacts` (ascending), each as detect()
   // would, carrying its history by position, and takes the others over
   // whole. A moved pair no longer within the margin would leave the scene's

@@ -193,12 +193,15 @@ void Simulation::carry_clip_rest() {
 
 // The pairs `pairs` (ascending) clipped at the blocks' poses now
 // (contact/clip_joint.hpp), in parallel over them (each writes its own), on
-// `threads` threads. Those whose clip keeps their vertices count as sampled
-// now (their travel starts afresh); the others go to clip_stale_list_.
-void Simulation::clip_listed(const std::vector<int>& pairs, int threads) {
+// `threads` threads; `check_faces`: with the faces' questions. Those whose
+// clip keeps their vertices count as sampled now (their travel starts
+// afresh); the others go to clip_stale_list_, and the edge-to-edge pairs,
+// which have no faces to clip, to clip_edges_ (re-sampled as the default's
+// are, on their travel).
+void Simulation::clip_listed(const std::vector<int>& pairs, int threads, bool check_faces) {
   clip_stale_list_.clear();
+  clip_edges_.clear();
   if (pairs.empty()) return;
-  clip_count_ += static_cast<long long>(pairs.size());
   if (clip_scratch_.size() < static_cast<std::size_t>(threads))
     clip_scratch_.resize(static_cast<std::size_t>(threads));
   const std::size_t n = pairs.size();
@@ -209,10 +212,17 @@ void Simulation::clip_listed(const std::vector<int>& pairs, int threads) {
     const auto [kb, ke] = thread_range(n, static_cast<std::size_t>(nt), static_cast<std::size_t>(t));
     clip_listed_pairs(blocks_.props.local_shape, blocks_.state, laws_, contacts_.pairs, detector_.margin(),
                       contacts_.sub, clip_rest_, clip_stale_, pairs.data() + kb, ke - kb,
-                      clip_scratch_[static_cast<std::size_t>(t)], &clip_face_areas_);
+                      clip_scratch_[static_cast<std::size_t>(t)], &clip_face_areas_, check_faces);
   }
   moved_pairs_.clear();  // here: the pairs clipped with their vertices kept
-  for (int q : pairs) (clip_stale_[static_cast<std::size_t>(q)] ? clip_stale_list_ : moved_pairs_).push_back(q);
+  for (int q : pairs) {
+    const auto u = static_cast<std::size_t>(q);
+    if (contacts_.pairs[u].ref_face < 0 || contacts_.pairs[u].count == 0)
+      clip_edges_.push_back(q);
+    else
+      (clip_stale_[u] ? clip_stale_list_ : moved_pairs_).push_back(q);
+  }
+  clip_count_ += static_cast<long long>(moved_pairs_.size() + clip_stale_list_.size());
   detector_.restart_pair_travel(blocks_, contacts_, moved_pairs_);
 }
 
@@ -228,7 +238,13 @@ void Simulation::clip_due(int threads) {
     clip_list_.erase(std::unique(clip_list_.begin(), clip_list_.end()), clip_list_.end());
     clip_retry_.clear();
   }
-  clip_listed(clip_list_, threads);
+  clip_listed(clip_list_, threads, true);
+  // The edge-to-edge pairs that have moved by the travel re-sampled with
+  // the stale ones.
+  if (!clip_edges_.empty()) {
+    clip_stale_list_.insert(clip_stale_list_.end(), clip_edges_.begin(), clip_edges_.end());
+    std::sort(clip_stale_list_.begin(), clip_stale_list_.end());
+  }
 }
 
 // Under "clip", after a detection: the pairs it sampled clipped at this
@@ -236,20 +252,18 @@ void Simulation::clip_due(int threads) {
 // on a polygon round-off decides) re-sampled and clipped again, twice at
 // most; any still stale follow their points' definitions for this step
 // (clip_pair) and are clipped again at the next. `patch` adds the
-// re-samplings' patch time. Returns whether it re-sampled.
-bool Simulation::clip_after_detection(int threads, double& patch) {
-  bool resampled = false;
+// re-samplings' patch time. The faces' questions are not asked again of
+// pairs the detection has just sampled at this pose.
+void Simulation::clip_after_detection(int threads, double& patch) {
   for (int pass = 0;; ++pass) {
     clip_list_ = clip_fresh_;
-    clip_listed(clip_list_, threads);
-    if (clip_stale_list_.empty()) return resampled;
+    clip_listed(clip_list_, threads, false);
+    if (clip_stale_list_.empty()) return;
     if (pass == 2) break;
     moved_pairs_ = clip_stale_list_;
     patch += detect_contacts(&moved_pairs_).patch;  // carry_clip_rest lists the pairs sampled
-    resampled = true;
   }
   clip_retry_ = clip_stale_list_;
-  return resampled;
 }
 
 bool Simulation::large_enough_for_threads() const {

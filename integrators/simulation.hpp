@@ -137,9 +137,9 @@ class Simulation {
   void finish_step();
   void record_profile(double detection, double patch, double law, double rest, bool big);
   // joint_sampling = "clip" (contact/clip_joint.hpp).
-  void clip_listed(const std::vector<int>& pairs, int threads);
+  void clip_listed(const std::vector<int>& pairs, int threads, bool check_faces);
   void clip_due(int threads);
-  bool clip_after_detection(int threads, double& patch);
+  void clip_after_detection(int threads, double& patch);
   void carry_clip_rest();
 
   struct StepControl {
@@ -181,7 +181,7 @@ class Simulation {
   std::vector<std::vector<double>> clip_face_areas_;  // per block, per face
   std::vector<lanes::PairRest> clip_rest_, clip_rest_next_;
   std::vector<std::uint8_t> clip_stale_;
-  std::vector<int> clip_list_, clip_stale_list_, clip_fresh_, clip_retry_;
+  std::vector<int> clip_list_, clip_stale_list_, clip_fresh_, clip_retry_, clip_edges_;
   PairGather clip_gather_;
   long long clip_count_ = 0;
   std::vector<int> moved_pairs_;   // pair by pair: the pairs to re-sample (scratch)

@@ -33,7 +33,9 @@ namespace polydem {
 // 5: the subcontacts' crush (the re-sampling's shift of a spring's zero).
 // 6: the assessment judges the final state: its excursions past the
 //    collapse fraction, the certain collapse.
-inline constexpr std::uint32_t kCheckpointVersion = 8;
+// 9: under joint_sampling = "clip", each pair's rest from its last clip,
+//    the clips so far and the pairs to clip again at the next step.
+inline constexpr std::uint32_t kCheckpointVersion = 9;
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
 
 // A checkpoint file that cannot be used; the message says why.

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <cstdio>
 
 namespace polydem {
@@ -158,6 +159,52 @@ TEST(DetectionTravel, ClippedAtTheTravelTheStoneTipsAsWhenClippedEveryStep) {
   EXPECT_GT(coarse.pairs_clipped, 0.5 * base_travel / coarse.travel);
   EXPECT_LT(coarse.pairs_clipped, 4.0 * base_travel / coarse.travel);
   EXPECT_GT(every.pairs_clipped, 5 * automatic.pairs_clipped);
+}
+
+// An edge-to-edge pair has no faces to clip: under "clip" it is re-sampled
+// on its travel as under the default sampling. Two 1 m cubes turned 45° so
+// that the lower one's ridge runs along x and the upper one's along y,
+// just touching, without gravity; the upper one, free, moves along x at
+// 0.1 m/s for 0.5 s, its ridge sliding along the lower one's: the pair's one
+// subcontact must follow the crossing (within the travel and the margin),
+// the pair re-sampled about once per travel of the 50 mm.
+TEST(DetectionTravel, ClippedAnEdgeToEdgePairIsReSampledOnItsTravel) {
+  SimulationSpec sim;
+  sim.detection_trigger = DetectionTrigger::pair;
+  sim.joint_sampling = JointSampling::clip;
+  sim.gravity = Vec3::Zero();
+  JointSpec joint;
+  joint.normal_stiffness = 1e8;
+  joint.shear_stiffness = 4e7;
+  joint.friction_angle = 0;
+  const double h = std::sqrt(0.5), v = 0.1, margin = 0.02;
+  BlockSpec lower = test::block_spec("lower", make_box(Vec3(1, 1, 1)), BlockMotion::fixed);
+  BlockSpec upper = test::block_spec("upper", make_box(Vec3(1, 1, 1)), BlockMotion::free);
+  upper.velocity = Vec3(v, 0, 0);
+  Blocks blocks = build_blocks({lower, upper});
+  auto turn = [&](int i, const Vec3& axis, const Vec3& at) {
+    blocks.state.orientation[i] = Quat(Eigen::AngleAxisd(std::numbers::pi / 4, axis));
+    blocks.state.rotation[i] = blocks.state.orientation[i].toRotationMatrix();
+    blocks.state.position[i] = at;
+  };
+  turn(0, Vec3::UnitX(), Vec3(0, 0, -h));
+  turn(1, Vec3::UnitY(), Vec3(0, 0, h));
+  const double dt = 1e-4;
+  JointLaws laws = make_joint_laws(blocks, joint, {});
+  Simulation s(std::move(blocks), sim, std::move(laws), GroundMotion{}, margin, dt, false);
+  ASSERT_EQ(s.contacts().pairs.size(), 1u);
+  ASSERT_EQ(s.contacts().pairs[0].ref_face, -1) << "the test's premise: an edge-to-edge pair";
+  while (s.time() < 0.5) s.step();
+  ASSERT_EQ(s.contacts().pairs.size(), 1u);
+  const double x = s.blocks().state.position[1].x();
+  const double travel = s.detection_travel();
+  const Vec3 at = s.contacts().sub.point[0];
+  std::printf("edge to edge under clip: the upper cube at x = %.4f m, the subcontact at x = %.4f m; %lld pairs "
+              "re-sampled (travel %.3g m)\n",
+              x, at.x(), s.pairs_resampled(), travel);
+  EXPECT_NEAR(x, 0.05, 1e-3);
+  EXPECT_NEAR(at.x(), x, travel + margin);
+  EXPECT_GT(s.pairs_resampled(), static_cast<long long>(0.5 * 0.05 / travel));
 }
 
 }  // namespace
