@@ -144,8 +144,8 @@ bool faces_still_chosen(const PosedBlock& ref, const PosedBlock& inc, bool ref_i
 // clip_pairs' work for pair q.
 void clip_pair(const std::vector<Polyhedron>& shapes, const BlockState& st, const JointLaws& laws,
                const std::vector<ContactPair>& pairs, double margin, Subcontacts& sub,
-               std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale, std::size_t q, ClipScratch& s,
-               const std::vector<std::vector<double>>* face_areas, bool check_faces) {
+               std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale, std::vector<double>& shear_dropped,
+               std::size_t q, ClipScratch& s, const std::vector<std::vector<double>>* face_areas, bool check_faces) {
   auto area_of = [&](int block, const Polyhedron& p, int face) {
     return face_areas ? (*face_areas)[static_cast<std::size_t>(block)][static_cast<std::size_t>(face)]
                       : face_area(p, face);
@@ -154,6 +154,7 @@ void clip_pair(const std::vector<Polyhedron>& shapes, const BlockState& st, cons
   lanes::PairRest& w = rest[q];
   w = lanes::PairRest{};
   stale[q] = 0;
+  shear_dropped[q] = 0;
   if (cp.count == 0 || cp.ref_face < 0) return;
   const int r = cp.ref_block;
   const int i = cp.ref_block == cp.a ? cp.b : cp.a;
@@ -234,11 +235,26 @@ void clip_pair(const std::vector<Polyhedron>& shapes, const BlockState& st, cons
     move_points(st, pairs, sub, q, q + 1);
     return;
   }
+  // Each spring keeps its elastic shear displacement F/(ks·A) as its area
+  // changes: its shear force goes with its area, and the shear energy
+  // F²/(2·ks·A) with it (the part of the joint that left the contact takes
+  // its strain with it; a part that came in brings the same). That change
+  // is no force's work: it is booked with the detections' (dropped shear).
   const Mat3 RiT = st.rotation[i].transpose();
+  const double ks = laws.between(r, i).ks;
+  double dropped = 0;
   for (std::size_t t = 0; t < count; ++t) {
-    sub.inc_point_local.set(s0 + t, RiT * (ps.poly[s.vertex_of[t]] - st.position[i]));
-    sub.area[s0 + t] = s.area[s.vertex_of[t]];
+    const std::size_t k = s0 + t;
+    sub.inc_point_local.set(k, RiT * (ps.poly[s.vertex_of[t]] - st.position[i]));
+    const double a_old = sub.area[k], a_new = s.area[s.vertex_of[t]];
+    sub.area[k] = a_new;
+    if (a_new == a_old || !(a_old > 0) || !(ks > 0)) continue;
+    const Vec3 f = sub.shear_force[k];
+    const double ratio = a_new / a_old;
+    dropped += f.squaredNorm() / (2.0 * ks * a_old) * (1.0 - ratio);
+    sub.shear_force.set(k, ratio * f);
   }
+  shear_dropped[q] = dropped;
   Vec3 force = load.rest_force, moment = load.rest_moment;
   for (std::size_t j = 0; j < np; ++j) {
     if (s.taken[j] || !(s.u[j] > 0)) continue;
@@ -259,20 +275,21 @@ void clip_pair(const std::vector<Polyhedron>& shapes, const BlockState& st, cons
 
 void clip_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, const JointLaws& laws,
                 const std::vector<ContactPair>& pairs, double margin, Subcontacts& sub,
-                std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale, std::size_t begin,
-                std::size_t end, ClipScratch& s, const std::vector<std::vector<double>>* face_areas) {
+                std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale,
+                std::vector<double>& shear_dropped, std::size_t begin, std::size_t end, ClipScratch& s,
+                const std::vector<std::vector<double>>* face_areas) {
   for (std::size_t q = begin; q < end; ++q)
-    clip_pair(shapes, st, laws, pairs, margin, sub, rest, stale, q, s, face_areas, true);
+    clip_pair(shapes, st, laws, pairs, margin, sub, rest, stale, shear_dropped, q, s, face_areas, true);
 }
 
 void clip_listed_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, const JointLaws& laws,
                        const std::vector<ContactPair>& pairs, double margin, Subcontacts& sub,
-                       std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale, const int* list,
-                       std::size_t count, ClipScratch& s, const std::vector<std::vector<double>>* face_areas,
-                       bool check_faces) {
+                       std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale,
+                       std::vector<double>& shear_dropped, const int* list, std::size_t count, ClipScratch& s,
+                       const std::vector<std::vector<double>>* face_areas, bool check_faces) {
   for (std::size_t k = 0; k < count; ++k)
-    clip_pair(shapes, st, laws, pairs, margin, sub, rest, stale, static_cast<std::size_t>(list[k]), s, face_areas,
-              check_faces);
+    clip_pair(shapes, st, laws, pairs, margin, sub, rest, stale, shear_dropped, static_cast<std::size_t>(list[k]), s,
+              face_areas, check_faces);
 }
 
 std::vector<std::vector<double>> face_areas_of(const std::vector<Polyhedron>& shapes) {

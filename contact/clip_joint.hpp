@@ -37,6 +37,18 @@
 // the springs until the pair's next clip. The reference block takes the
 // reaction: the energy depends on the two blocks' relative pose only.
 //
+// The shear springs carry their history: each keeps its elastic shear
+// displacement F/(ks·A) as its area changes, so its force goes with its
+// area. The shear energy F²/(2·ks·A) then goes with the area too: the part
+// of the joint that slides off takes its strain with it. No force does that
+// work; the ledger books it with the re-samplings' (dropped shear).
+//
+// A bonded joint (cohesion, tensile strength) is clipped the same way: its
+// springs in tension take their force through the joint law at their
+// vertices; the gradient's rest is of the compressed springs' energy, so a
+// spring in tension (at most σt/kn, micrometres) leaves out the areas' part
+// of its energy, ½·σt²/kn a unit of area at most.
+//
 // The polygon's topology (which vertices it has) changes when a corner
 // crosses a side plane: the corner becomes two crossings a hair apart, with
 // the corner's angle, and so its area, shared between them (corner_areas),
@@ -108,21 +120,25 @@ ClipLoad clip_normal_load(const PosedBlock& ref, int ref_face, const PosedBlock&
 // likewise where a detection at this pose would choose other faces for
 // the pair, find it beyond the margin, or judge it edge to edge (the face
 // test deeper than the polygon's deepest vertex by a quarter of the
-// margin). Edge-to-edge pairs are left alone. `face_areas` (per block, per face;
+// margin). Edge-to-edge pairs are left alone. A subcontact whose area
+// changes keeps its elastic shear displacement (its shear force scaled by
+// the areas' ratio); `shear_dropped[q]` gets the shear energy that took
+// away (J, < 0 where it added). `face_areas` (per block, per face;
 // face_areas_of) saves the step computing them again; null: computed.
 void clip_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, const JointLaws& laws,
                 const std::vector<ContactPair>& pairs, double margin, Subcontacts& sub,
-                std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale, std::size_t begin,
-                std::size_t end, ClipScratch& s, const std::vector<std::vector<double>>* face_areas = nullptr);
+                std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale,
+                std::vector<double>& shear_dropped, std::size_t begin, std::size_t end, ClipScratch& s,
+                const std::vector<std::vector<double>>* face_areas = nullptr);
 
 // The same for the pairs `list[0 .. count)` alone; `check_faces` false
 // leaves out the faces' questions (pairs a detection has just sampled at
 // this pose).
 void clip_listed_pairs(const std::vector<Polyhedron>& shapes, const BlockState& st, const JointLaws& laws,
                        const std::vector<ContactPair>& pairs, double margin, Subcontacts& sub,
-                       std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale, const int* list,
-                       std::size_t count, ClipScratch& s, const std::vector<std::vector<double>>* face_areas,
-                       bool check_faces);
+                       std::vector<lanes::PairRest>& rest, std::vector<std::uint8_t>& stale,
+                       std::vector<double>& shear_dropped, const int* list, std::size_t count, ClipScratch& s,
+                       const std::vector<std::vector<double>>* face_areas, bool check_faces);
 
 // Every face's area (face_area) of each of `shapes`, for clip_pairs.
 std::vector<std::vector<double>> face_areas_of(const std::vector<Polyhedron>& shapes);

@@ -64,7 +64,9 @@ enum class DetectionTrigger { automatic, scene, pair };
 // the detection; `clip`, the pair's face polygon clipped again at every step,
 // each point its vertex now with its corner's share of the polygon now, and
 // the load the exact gradient of the springs' energy (contact/clip_joint.hpp).
-enum class JointSampling { detection, step, clip };
+// `automatic`: `clip` where the joints are re-sampled pair by pair (the
+// default), `detection` where scene-wide or under the overlap model.
+enum class JointSampling { automatic, detection, step, clip };
 
 // [simulation]
 struct SimulationSpec {
@@ -82,7 +84,7 @@ struct SimulationSpec {
   // model: half the margin)
   double detection_travel = 0.0;
   DetectionTrigger detection_trigger = DetectionTrigger::automatic;
-  JointSampling joint_sampling = JointSampling::detection;
+  JointSampling joint_sampling = JointSampling::automatic;
   int threads = 0;                // 0 = OpenMP default
   // Let the run drop to one thread while more are slower (a competing
   // process on a core; integrators/thread_governor.hpp). Same bits either way.
@@ -101,6 +103,12 @@ struct SimulationSpec {
 inline bool pair_by_pair(const SimulationSpec& s) {
   return s.detection_trigger == DetectionTrigger::pair ||
          (s.detection_trigger == DetectionTrigger::automatic && s.joint_model == JointModel::subcontacts);
+}
+
+// The run's joint sampling, `automatic` resolved (JointSampling).
+inline JointSampling joint_sampling_of(const SimulationSpec& s) {
+  if (s.joint_sampling != JointSampling::automatic) return s.joint_sampling;
+  return pair_by_pair(s) ? JointSampling::clip : JointSampling::detection;
 }
 
 // [equilibrium] : a static stage before the dynamic one, as 3DEC's

@@ -49,12 +49,12 @@ Simulation::Simulation(Blocks blocks, const SimulationSpec& sim, JointLaws laws,
   if (overlap_joints_) overlap_scratch_.resize(static_cast<std::size_t>(std::max(1, omp_get_max_threads())));
   detector_.set_pair_joints(overlap_joints_);
   detector_.set_pair_trigger(pair_by_pair(sim));
-  clip_ = sim.joint_sampling == JointSampling::clip;
+  clip_ = joint_sampling_of(sim) == JointSampling::clip;
   if (clip_) {
     clip_scratch_.resize(static_cast<std::size_t>(std::max(1, omp_get_max_threads())));
     clip_face_areas_ = face_areas_of(blocks_.props.local_shape);
   }
-  detector_.set_points_follow(sim.joint_sampling == JointSampling::step || clip_);
+  detector_.set_points_follow(joint_sampling_of(sim) == JointSampling::step || clip_);
   detector_.set_clipped(clip_);
   ledger_.start(blocks_.state);
   // The first detection on the governor's threads: one, when it governs
@@ -188,6 +188,7 @@ void Simulation::carry_clip_rest() {
   }
   std::swap(clip_rest_, clip_rest_next_);
   clip_stale_.assign(np, 0);
+  clip_shear_dropped_.assign(np, 0.0);
   clip_gather_.build(contacts_.pairs, blocks_.count);
 }
 
@@ -211,12 +212,13 @@ void Simulation::clip_listed(const std::vector<int>& pairs, int threads, bool ch
     const int nt = omp_get_num_threads(), t = omp_get_thread_num();
     const auto [kb, ke] = thread_range(n, static_cast<std::size_t>(nt), static_cast<std::size_t>(t));
     clip_listed_pairs(blocks_.props.local_shape, blocks_.state, laws_, contacts_.pairs, detector_.margin(),
-                      contacts_.sub, clip_rest_, clip_stale_, pairs.data() + kb, ke - kb,
+                      contacts_.sub, clip_rest_, clip_stale_, clip_shear_dropped_, pairs.data() + kb, ke - kb,
                       clip_scratch_[static_cast<std::size_t>(t)], &clip_face_areas_, check_faces);
   }
   moved_pairs_.clear();  // here: the pairs clipped with their vertices kept
   for (int q : pairs) {
     const auto u = static_cast<std::size_t>(q);
+    contacts_.dropped_shear_energy += clip_shear_dropped_[u];
     if (contacts_.pairs[u].ref_face < 0 || contacts_.pairs[u].count == 0)
       clip_edges_.push_back(q);
     else
@@ -547,6 +549,7 @@ void Simulation::load_state(ByteReader& r) {
       q = v;
     }
     clip_stale_.assign(np, 0);
+    clip_shear_dropped_.assign(np, 0.0);
     clip_gather_.build(contacts_.pairs, blocks_.count);
   }
 }

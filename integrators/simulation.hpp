@@ -181,6 +181,7 @@ class Simulation {
   std::vector<std::vector<double>> clip_face_areas_;  // per block, per face
   std::vector<lanes::PairRest> clip_rest_, clip_rest_next_;
   std::vector<std::uint8_t> clip_stale_;
+  std::vector<double> clip_shear_dropped_;  // per pair: the shear energy its last clip took (clip_pairs)
   std::vector<int> clip_list_, clip_stale_list_, clip_fresh_, clip_retry_, clip_edges_;
   PairGather clip_gather_;
   long long clip_count_ = 0;

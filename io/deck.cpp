@@ -132,9 +132,13 @@ SimulationSpec read_simulation(const Deck& deck) {
     r.fail("detection_trigger", "\"pair\" re-samples subcontacts: it needs joint_model = \"subcontacts\"");
   s.joint_sampling = r.choice<JointSampling>(
       "joint_sampling",
-      {{"detection", JointSampling::detection}, {"step", JointSampling::step}, {"clip", JointSampling::clip}},
+      {{"automatic", JointSampling::automatic},
+       {"detection", JointSampling::detection},
+       {"step", JointSampling::step},
+       {"clip", JointSampling::clip}},
       s.joint_sampling);
-  if (s.joint_model == JointModel::overlap && s.joint_sampling != JointSampling::detection)
+  if (s.joint_model == JointModel::overlap && s.joint_sampling != JointSampling::detection &&
+      s.joint_sampling != JointSampling::automatic)
     r.fail("joint_sampling", std::string(s.joint_sampling == JointSampling::step ? "\"step\"" : "\"clip\"") +
                                  " moves subcontacts: it needs joint_model = \"subcontacts\"");
   if (s.joint_sampling == JointSampling::clip && s.detection_trigger == DetectionTrigger::scene)
@@ -189,10 +193,8 @@ void refuse_total_friction_for_split(const Deck& deck, const SceneSpec& scene) {
 }
 
 // The overlap joint model's layer carries compression only
-// (contact/overlap_joint.hpp), and so do the joints clipped at every step
-// (contact/clip_joint.hpp: the gradient is of the compressed springs'
-// energy): a law with cohesion or tensile strength is refused where it is
-// given.
+// (contact/overlap_joint.hpp): a law with cohesion or tensile strength is
+// refused where it is given.
 void refuse_bonds(const Deck& deck, const SceneSpec& scene, const std::string& setting,
                   const std::string& instead) {
   auto bonds = [](const JointSpec& j) { return j.cohesion > 0 || j.tensile_strength > 0; };
@@ -1015,8 +1017,6 @@ SceneSpec parse_deck(const std::string& text, const std::string& path_for_messag
   scene.joint_pairs = std::move(joints.pairs);
   if (scene.simulation.joint_model == JointModel::overlap)
     refuse_bonds(deck, scene, "simulation.joint_model = \"overlap\"", "\"subcontacts\"");
-  if (scene.simulation.joint_sampling == JointSampling::clip)
-    refuse_bonds(deck, scene, "simulation.joint_sampling = \"clip\"", "\"detection\" or \"step\"");
   if (scene.simulation.damping_scheme == DampingScheme::split) refuse_total_friction_for_split(deck, scene);
   scene.groups = read_groups(deck, scene.blocks);
   scene.loads = read_loads(deck, scene.blocks);

@@ -215,9 +215,10 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   s.set("contact_margin_m", r.margin);
   s.set("detection_travel_m", r.detection_travel);
   s.set("detection_trigger", pair_by_pair(spec.simulation) ? "pair" : "scene");
-  s.set("joint_sampling", spec.simulation.joint_sampling == JointSampling::step   ? "step"
-                                     : spec.simulation.joint_sampling == JointSampling::clip ? "clip"
-                                                                                             : "detection");
+  const JointSampling sampling = joint_sampling_of(spec.simulation);
+  s.set("joint_sampling", sampling == JointSampling::step   ? "step"
+                          : sampling == JointSampling::clip ? "clip"
+                                                            : "detection");
   s.set("blocks", r.blocks);
   s.set("free_blocks", r.free_blocks);
   const std::vector<GroupTotals> groups = group_totals(spec.blocks, r.assessment.dislodged_blocks);
@@ -239,7 +240,7 @@ Json summary_json(const SceneSpec& spec, const RunReport& r, int threads) {
   }
   s.set("contact_detections", r.detections);
   if (pair_by_pair(spec.simulation)) s.set("pairs_resampled", r.pairs_resampled);
-  if (spec.simulation.joint_sampling == JointSampling::clip) s.set("pairs_clipped", r.pairs_clipped);
+  if (sampling == JointSampling::clip) s.set("pairs_clipped", r.pairs_clipped);
   s.set("subcontact_updates", r.subcontact_updates);
   if (r.checkpoints > 0) {
     Json c = Json::object();

@@ -460,15 +460,22 @@ TEST(DeckErrors, TheOverlapModelRefusesBondsAndTheSplitScheme) {
   expect_error("[simulation]\njoint_model = \"overlap\"\njoint_sampling = \"clip\"\n[[block]]\n" + kBox, 3,
                "simulation.joint_sampling", "\"clip\" moves subcontacts: it needs joint_model = \"subcontacts\"");
   expect_error("[simulation]\njoint_sampling = \"always\"\n[[block]]\n" + kBox, 2, "simulation.joint_sampling",
-               "must be one of \"detection\", \"step\", \"clip\" (got \"always\")");
+               "must be one of \"automatic\", \"detection\", \"step\", \"clip\" (got \"always\")");
   EXPECT_NO_THROW(parse_deck("[simulation]\njoint_sampling = \"step\"\n[[block]]\n" + kBox, kFile));
   // The clipped joints are re-sampled pair by pair when their vertices change.
   expect_error("[simulation]\ndetection_trigger = \"scene\"\njoint_sampling = \"clip\"\n[[block]]\n" + kBox, 3,
                "simulation.joint_sampling", "it needs detection_trigger = \"pair\"");
   EXPECT_NO_THROW(parse_deck("[simulation]\njoint_sampling = \"clip\"\n[[block]]\n" + kBox, kFile));
-  // Its gradient is the compressed springs' energy's: no bonds.
-  expect_error("[simulation]\njoint_sampling = \"clip\"\n[joint]\ncohesion = 1e5\n[[block]]\n" + kBox, 3, "joint",
-               "not modelled by simulation.joint_sampling = \"clip\"");
+  // Bonded joints are clipped too.
+  EXPECT_NO_THROW(parse_deck("[simulation]\njoint_sampling = \"clip\"\n[joint]\ncohesion = 1e5\n[[block]]\n" + kBox, kFile));
+  // "automatic": clipped pair by pair, re-sampled at detection scene-wide.
+  const auto sampling = [&](const std::string& sim) {
+    return joint_sampling_of(parse_deck("[simulation]\n" + sim + "[[block]]\n" + kBox, kFile).simulation);
+  };
+  EXPECT_EQ(sampling(""), JointSampling::clip);
+  EXPECT_EQ(sampling("detection_trigger = \"scene\"\n"), JointSampling::detection);
+  EXPECT_EQ(sampling("joint_model = \"overlap\"\n"), JointSampling::detection);
+  EXPECT_EQ(sampling("joint_sampling = \"detection\"\n"), JointSampling::detection);
 }
 
 TEST(DeckErrors, BadEnumsListTheAllowedValues) {

@@ -166,9 +166,9 @@ def test_split_damping_contacts_hold_the_whole_joint_force():
 
 
 def test_numerical_at_detections_is_the_shear_a_detection_drops():
-    """A stone sliding past its base's edge on soft shear springs: each
-    detection clips its patch smaller and cannot hand on the shear of the
-    area lost. That is nearly the whole numerical line, and energies() and
+    """A stone sliding past its base's edge on soft shear springs: as its
+    joint is clipped smaller, the area lost takes its shear strain with it.
+    That is nearly the whole numerical line, and energies() and
     summary.json say so alike."""
     scene = (polydem.Scene(end_time=1.0)
              .joint(normal_stiffness=1e9, shear_stiffness=2.5e5, friction_angle=30.0)

@@ -103,10 +103,13 @@ inline void clip_joints(const JointLaws& laws, const Blocks& b, ContactSet& c, C
                         std::vector<lanes::PairRest>& rest) {
   ClipScratch s;
   std::vector<std::uint8_t> stale;
+  std::vector<double> dropped;
   for (int pass = 0; pass < 2; ++pass) {
     rest.assign(c.pairs.size(), lanes::PairRest{});
     stale.assign(c.pairs.size(), 0);
-    clip_pairs(b.props.local_shape, b.state, laws, c.pairs, det.margin(), c.sub, rest, stale, 0, c.pairs.size(), s);
+    dropped.assign(c.pairs.size(), 0.0);
+    clip_pairs(b.props.local_shape, b.state, laws, c.pairs, det.margin(), c.sub, rest, stale, dropped, 0, c.pairs.size(),
+               s);
     std::vector<int> moved;
     for (std::size_t q = 0; q < stale.size(); ++q)
       if (stale[q]) moved.push_back(static_cast<int>(q));
