@@ -5,8 +5,11 @@ benchmarks/results/distributions.csv (table `distributions`, docs/ensembles.md):
     /usr/bin/python3 benchmarks/distributions.py build/polydem [--case C]...
         [--setting S]... [--jobs 2] [--force] [--out DIR]
 
-Every ensemble re-samples the joints pair by pair (the default) or, in
-the settings named "scene trigger, ...", scene-wide
+Every ensemble runs the joints as the default does (clipped as they move,
+re-sampled pair by pair), or, in the settings named "re-sampled at
+detection, ...", re-sampled pair by pair with their points and areas fixed
+between (`simulation.joint_sampling = "detection"`), or, in those named
+"scene trigger, ...", re-sampled scene-wide
 (`simulation.detection_trigger = "scene"`, as the first ensembles were
 measured). The same ensembles at the deck's safety
 factor (0.8) and at half of it
@@ -66,11 +69,13 @@ import timings_csv  # noqa: E402
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 CSV = os.path.join(ROOT, "benchmarks", "results", "distributions.csv")
 FIELDS = ["machine", "cpu", "commit", "date", "case", "setting", "quantity", "value", "unit"]
-# Every setting is run pair by pair (the default trigger, docs/contact.md)
-# and, as measured before that became the default, scene-wide ("scene
-# trigger, ..."); scene-wide also with the detection travel at half the
-# margin (the deck's 1 m is taken as that), where the margin also sets how
-# often the joints are re-sampled (docs/contact.md, "The detection travel").
+# Every setting is run at the default (the joints clipped as they move,
+# re-sampled pair by pair, docs/contact.md), re-sampled pair by pair at
+# detection ("re-sampled at detection, ...") and, as measured before
+# either became the default, scene-wide ("scene trigger, ..."); scene-wide
+# also with the detection travel at half the margin (the deck's 1 m is
+# taken as that), where the margin also sets how often the joints are
+# re-sampled (docs/contact.md, "The detection travel").
 BASE = {"safety factor 0.8": [], "safety factor 0.4": ["--set", "simulation.safety_factor=0.4"],
         "friction on total": ["--set", "joint.friction_normal_force=total"],
         "margin x0.5": None, "margin x2": None,  # the automatic margin scaled (margin_args)
@@ -80,21 +85,30 @@ BASE = {"safety factor 0.8": [], "safety factor 0.4": ["--set", "simulation.safe
                                                  "--set", "simulation.contact_margin=0.003046"]}
 SCENE_SETTING = "scene trigger, "
 SCENE = ["--set", "simulation.detection_trigger=scene"]
+DETECTION_SETTING = "re-sampled at detection, "
+DETECTION = ["--set", "simulation.joint_sampling=detection"]
+PREFIXES = {SCENE_SETTING: SCENE, DETECTION_SETTING: DETECTION}
 HALF = ", travel half the margin"
 SETTINGS = dict(BASE)
+SETTINGS.update({DETECTION_SETTING + s: v for s, v in BASE.items()})
 SETTINGS.update({SCENE_SETTING + s: v for s, v in BASE.items()})
 SETTINGS.update({SCENE_SETTING + s + HALF: (None if v is None else v + ["--set", "simulation.detection_travel=1"])
                  for s, v in BASE.items()})
 
 
+def prefix_of(setting):
+    """The setting's sampling prefix ("" for the default's)."""
+    return next((p for p in PREFIXES if setting.startswith(p)), "")
+
+
 def base_setting(setting):
-    """The setting's name without its trigger and travel."""
-    s = setting[len(SCENE_SETTING):] if setting.startswith(SCENE_SETTING) else setting
+    """The setting's name without its sampling and travel."""
+    s = setting[len(prefix_of(setting)):]
     return s[:-len(HALF)] if s.endswith(HALF) else s
 
 
 def setting_args(setting):
-    return (SCENE if setting.startswith(SCENE_SETTING) else []) + SETTINGS[setting]
+    return PREFIXES.get(prefix_of(setting), []) + SETTINGS[setting]
 
 
 WALKING_ONLY = tuple(s for s in SETTINGS if base_setting(s) not in ("safety factor 0.8", "safety factor 0.4"))
@@ -176,8 +190,7 @@ def margin_args(setting, default_out):
     with open(summary) as f:
         margin = json.load(f)["contact_margin_m"]
     factor = 0.5 if base_setting(setting) == "margin x0.5" else 2.0
-    scene = SCENE if setting.startswith(SCENE_SETTING) else []
-    return scene + ["--set", f"simulation.contact_margin={margin * factor!r}"] + half
+    return PREFIXES.get(prefix_of(setting), []) + ["--set", f"simulation.contact_margin={margin * factor!r}"] + half
 
 
 def median_interval(values, draws=4000, seed=1):
@@ -246,7 +259,7 @@ def main():
                 continue
             out = os.path.join(args.out, f"{case}_{setting.replace(' ', '_')}")
             t0 = time.monotonic()
-            trigger = SCENE_SETTING if setting.startswith(SCENE_SETTING) else ""
+            trigger = prefix_of(setting)
             half = HALF if setting.endswith(HALF) else ""
             default = "walking4_" + (trigger + "safety factor 0.8" + half).replace(" ", "_")
             got = (walking_case(polydem, setting, out, args.jobs, os.path.join(args.out, default), args.walking_scales,

@@ -43,7 +43,7 @@ using test::JointModelKind;
 
 const char* name(JointModelKind m) {
   switch (m) {
-    case JointModelKind::subcontacts: return "subcontacts";
+    case JointModelKind::subcontacts: return "subcontacts, re-sampled at detection";
     case JointModelKind::subcontacts_step: return "subcontacts, points following the blocks";
     case JointModelKind::subcontacts_clip: return "subcontacts, joints clipped every step";
     case JointModelKind::overlap: return "overlap";

@@ -254,7 +254,7 @@ def table_convergence():
         elif margin and "margin" not in s.replace("half the margin", "") and "corner" in s:
             # a geometry with its own automatic margin
             name = name.replace("merged corner stones", f"merged corner stones, margin {1000 * float(margin):.2f} mm")
-        if travel and ("travel x" in s or s in ("default", "scene trigger")):
+        if travel and ("travel x" in s or s in ("default", "re-sampled at detection", "scene trigger")):
             name = f"{name} ({1000 * float(travel):.2g} mm)"
         return name
 
@@ -293,8 +293,11 @@ def table_convergence():
     return (markdown(header, table) +
             f"\nFrom `benchmarks/convergence.py build/polydem` at {', '.join(commits)}, one run per cell on "
             "1 thread (the run column's wall times from runs two at a time on 2 cores beside other work: what a "
-            "run costs, not a benchmark, which docs/benchmarks.md keeps); the default re-samples the joints pair by pair "
-            "at its automatic travel; \"scene trigger\": the joints re-sampled scene-wide "
+            "run costs, not a benchmark, which docs/benchmarks.md keeps); the default clips each joint again as its "
+            "blocks move and re-samples it pair by pair, at its automatic travel; \"re-sampled at detection\": "
+            "the joints' points and areas fixed from one pair-by-pair re-sampling to the next "
+            "(`simulation.joint_sampling = \"detection\"`); \"joints clipped every step\": at a travel of "
+            "1e-12 m; \"scene trigger\": the joints re-sampled scene-wide at detection "
             "(`simulation.detection_trigger = \"scene\"`), its travel factors of the scene-wide automatic "
             "travel (sixteen times the pair-by-pair one); \"travel half the margin\": the detection travel at its "
             "largest, half the contact margin (`simulation.detection_travel = 1`), where the margin also sets how "
@@ -364,8 +367,9 @@ def table_distributions():
     commits = sorted({r["commit"] for r in rows})
     return (markdown(["setting"] + [label for label, _, _ in lines], table) +
             f"\nFrom `benchmarks/distributions.py build/polydem` at {', '.join(commits)}: the tip 20 replicas a "
-            f"point (at the two safety factors only), the spire's replicas as the column says; the joints re-sampled "
-            "pair by pair (the default) or, \"scene trigger\", scene-wide (`simulation.detection_trigger = "
+            f"point (at the two safety factors only), the spire's replicas as the column says; the joints clipped as "
+            "they move (the default), \"re-sampled at detection\" pair by pair (`simulation.joint_sampling = "
+            "\"detection\"`) or, \"scene trigger\", scene-wide (`simulation.detection_trigger = "
             "\"scene\"`, its automatic travel 0.38 mm on the spire); \"travel half "
             "the margin\": the detection travel at half the contact margin (`simulation.detection_travel = 1`); "
             "\"a step\": every replica "
