@@ -44,10 +44,13 @@
 // work; the ledger books it with the re-samplings' (dropped shear).
 //
 // A bonded joint (cohesion, tensile strength) is clipped the same way: its
-// springs in tension take their force through the joint law at their
-// vertices; the gradient's rest is of the compressed springs' energy, so a
-// spring in tension (at most σt/kn, micrometres) leaves out the areas' part
-// of its energy, ½·σt²/kn a unit of area at most.
+// springs in tension take their force kn·A_i·u_i along n through the joint
+// law at their vertices. The rest is taken over the compressed springs
+// only, so a spring in tension (|u| at most σt/kn, micrometres) goes
+// without its rest's terms (its point's slide, the areas' part), of the
+// order of its own force times σt/kn over the polygon's size; its energy,
+// ½·σt²/kn a unit of area at most. A vertex left without a spring (below)
+// pushes and never pulls.
 //
 // The polygon's topology (which vertices it has) changes when a corner
 // crosses a side plane: the corner becomes two crossings a hair apart, with

@@ -28,6 +28,7 @@ std::uint64_t deck_fingerprint(const std::string& deck_text, const std::vector<s
   w.put(overrides);
   w.put(record_bytes);
   w.put(version);
+  w.put(kCheckpointVersion);
   return checksum64(all);
 }
 

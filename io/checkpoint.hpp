@@ -35,7 +35,9 @@ namespace polydem {
 //    collapse fraction, the certain collapse.
 // 9: under joint_sampling = "clip", each pair's rest from its last clip,
 //    the clips so far and the pairs to clip again at the next step.
-inline constexpr std::uint32_t kCheckpointVersion = 9;
+// 10: the same layout; a deck that does not set joint_sampling is now
+//    clipped ("automatic"), so a run or sweep point of 9 is another model's.
+inline constexpr std::uint32_t kCheckpointVersion = 10;
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
 
 // A checkpoint file that cannot be used; the message says why.
@@ -43,7 +45,9 @@ struct CheckpointError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The fingerprint of what decides a run besides its state.
+// The fingerprint of what decides a run besides its state (with the
+// checkpoint format, so that a sweep does not take a point of another
+// model revision as its own).
 std::uint64_t deck_fingerprint(const std::string& deck_text, const std::vector<std::string>& overrides,
                                const std::string& record_bytes, const std::string& version);
 // The same for a parsed deck and this polydem: reads the ground-motion
