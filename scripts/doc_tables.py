@@ -130,19 +130,6 @@ def table_checks():
     return body + f"\nFrom `scripts/doc_tables.py --run-decks build/polydem` at {', '.join(commits)}.\n"
 
 
-def table_checks_short():
-    """One line per verification deck: its first check that is not the
-    energy bound every deck carries."""
-    seen, rows = set(), []
-    for r in read_csv("checks.csv"):
-        if r["deck"] in seen or r["check"] == "energy_no_growth":
-            continue
-        seen.add(r["deck"])
-        rows.append((r["deck"][:-5], r["check"].split(":")[0], f'{r["measured"]} {r["unit"]}'.rstrip(" -"),
-                     r["expected"], r["tolerance"]))
-    return markdown(["deck", "check", "measured", "expected", "tolerance"], rows)
-
-
 def outcome(quantity):
     for r in read_csv("outcomes.csv"):
         if r["quantity"] == quantity:
@@ -579,7 +566,6 @@ def table_spire_bands():
 TABLES = {
     "two_commands": table_two_commands,
     "checks": table_checks,
-    "checks_short": table_checks_short,
     "main_job": table_main_job,
     "main_job_verdict": table_main_job_verdict,
     "error_vs_time": table_error_vs_time,
