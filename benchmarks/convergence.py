@@ -98,28 +98,20 @@ DETECTION = ['simulation.joint_sampling="detection"']
 # default's); with a travel of 1e-12 m, every pair at every step
 CLIP = ['simulation.joint_sampling="clip"']
 EVERY = CLIP + ["simulation.detection_travel=1e-12"]
-SETTINGS = {
-    "default": ([], None),
+# One numerical setting changed from the deck's: name -> (overrides, scaled).
+ONE_CHANGED = {
     "safety factor 0.4": (["simulation.safety_factor=0.4"], None),
     "safety factor 0.2": (["simulation.safety_factor=0.2"], None),
     "margin x0.5": ([], ("margin", 0.5)),
     "margin x2": ([], ("margin", 2.0)),
     "split damping": (['simulation.damping_scheme="split"'], None),
-    "travel x16": ([], ("travel", 16.0)),
-    "travel x4": ([], ("travel", 4.0)),
-    "travel x0.25": ([], ("travel", 0.25)),
+    **{f"travel x{f:g}": ([], ("travel", f)) for f in (16.0, 8.0, 4.0, 2.0, 0.5, 0.25)},
+}
+SETTINGS = {
+    "default": ([], None),
+    **ONE_CHANGED,
     "re-sampled at detection": (DETECTION, None),
-    "re-sampled at detection, safety factor 0.4": (DETECTION + ["simulation.safety_factor=0.4"], None),
-    "re-sampled at detection, safety factor 0.2": (DETECTION + ["simulation.safety_factor=0.2"], None),
-    "re-sampled at detection, margin x0.5": (DETECTION, ("margin", 0.5)),
-    "re-sampled at detection, margin x2": (DETECTION, ("margin", 2.0)),
-    "re-sampled at detection, split damping": (DETECTION + ['simulation.damping_scheme="split"'], None),
-    "re-sampled at detection, travel x16": (DETECTION, ("travel", 16.0)),
-    "re-sampled at detection, travel x8": (DETECTION, ("travel", 8.0)),
-    "re-sampled at detection, travel x4": (DETECTION, ("travel", 4.0)),
-    "re-sampled at detection, travel x2": (DETECTION, ("travel", 2.0)),
-    "re-sampled at detection, travel x0.5": (DETECTION, ("travel", 0.5)),
-    "re-sampled at detection, travel x0.25": (DETECTION, ("travel", 0.25)),
+    **{f"re-sampled at detection, {name}": (DETECTION + o, scaled) for name, (o, scaled) in ONE_CHANGED.items()},
     "scene trigger": (SCENE, None),
     "scene trigger, safety factor 0.4": (SCENE + ["simulation.safety_factor=0.4"], None),
     "scene trigger, safety factor 0.2": (SCENE + ["simulation.safety_factor=0.2"], None),
